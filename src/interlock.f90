@@ -1,0 +1,21 @@
+!> interlock: a cohesive-zone law for rough interfaces (Serpieri, Alfano, Sacco) with damage,
+!> friction, interlocking, finite asperity depth and asperity wear. `use interlock` is all a
+!> user needs: the material and solver types, the state, the update, the material table and
+!> the PROPS/STATEV packing of the UMAT.
+module interlock
+  use interlock_kinds, only: dp, pi, deg_to_rad, rad_to_deg, infinite_threshold, &
+      is_infinite_value, is_nan_value, same_value
+  use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure, &
+      message_len
+  use interlock_material_table
+  use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, &
+      interlock_material_prepare, interlock_paper_ria, scheme_explicit, scheme_implicit, &
+      scheme_name, effect_damage, effect_friction, effect_interlocking, effect_finite_depth, &
+      effect_wear, effect_names, n_effects
+  use interlock_state, only: interlock_state_t, interlock_state_init
+  use interlock_integrate, only: interlock_update
+  use interlock_props, only: props_to_material, statev_to_state, state_to_statev, umat_controls_t
+  use interlock_version, only: interlock_version_string
+  implicit none
+  public
+end module interlock

@@ -1,0 +1,62 @@
+!> Coulomb friction on the damaged part of a microplane (eq. 7 with erratum E1): an elastic
+!> predictor on the friction traction and a return to |tau_f| = mu p, p the contact pressure.
+module interlock_friction
+  use interlock_kinds, only: dp
+  implicit none
+  private
+  public :: friction_return, friction_free, friction_stick, friction_slide
+
+  integer, parameter :: friction_free = 0   !< mu p = 0: the damaged part carries no shear
+  integer, parameter :: friction_stick = 1
+  integer, parameter :: friction_slide = 2
+
+contains
+
+  !> Return mapping. Derivatives are with respect to (s_kn, s_kt, sf_old).
+  !> `slip` = |sf - sf_old| and its gradient are returned as the wear and dissipation drivers.
+  pure subroutine friction_return(kn, kt, mu, sl, sf_old, sf, tauf, dsf, dtauf, slip, dslip, &
+                                  branch)
+    real(dp), intent(in) :: kn, kt, mu, sl(2), sf_old
+    real(dp), intent(out) :: sf, tauf, dsf(3), dtauf(3), slip, dslip(3)
+    integer, intent(out) :: branch
+    real(dp) :: mu_p, tau_trial, sg
+
+    mu_p = -mu * kn * min(0.0_dp, sl(1))
+    if (.not. (mu_p > 0.0_dp)) then
+      ! Open plane or no friction: the damaged part follows freely (SPEC section 6: not a kink).
+      branch = friction_free
+      sf = sl(2)
+      tauf = 0.0_dp
+      dsf = [0.0_dp, 1.0_dp, 0.0_dp]
+      dtauf = 0.0_dp
+      slip = abs(sf - sf_old)
+      sg = sign(1.0_dp, sf - sf_old)
+      if (slip > 0.0_dp) then
+        dslip = sg * [0.0_dp, 1.0_dp, -1.0_dp]
+      else
+        dslip = 0.0_dp
+      end if
+      return
+    end if
+    tau_trial = kt * (sl(2) - sf_old)
+    if (abs(tau_trial) <= mu_p) then
+      branch = friction_stick
+      sf = sf_old
+      tauf = tau_trial
+      dsf = [0.0_dp, 0.0_dp, 1.0_dp]
+      dtauf = [0.0_dp, kt, -kt]
+      slip = 0.0_dp
+      dslip = 0.0_dp
+    else
+      branch = friction_slide
+      sg = sign(1.0_dp, tau_trial)
+      tauf = sg * mu_p
+      dtauf = [-sg * mu * kn, 0.0_dp, 0.0_dp]
+      sf = sl(2) - tauf / kt
+      dsf = [sg * mu * kn / kt, 1.0_dp, 0.0_dp]
+      slip = (abs(tau_trial) - mu_p) / kt
+      dslip = sg * (dsf - [0.0_dp, 0.0_dp, 1.0_dp])
+    end if
+  end subroutine friction_return
+
+end module interlock_friction

@@ -1,0 +1,44 @@
+!> Working precision, constants and the convention for "infinite" parameters.
+module interlock_kinds
+  use, intrinsic :: iso_fortran_env, only: real64
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
+  implicit none
+  private
+  public :: dp, pi, deg_to_rad, rad_to_deg, infinite_threshold
+  public :: is_infinite_value, is_nan_value, same_value
+
+  integer, parameter :: dp = real64
+  real(dp), parameter :: pi = 3.14159265358979323846264338327950288_dp
+  real(dp), parameter :: deg_to_rad = pi / 180.0_dp
+  real(dp), parameter :: rad_to_deg = 180.0_dp / pi
+  !> A parameter at or above this value (or +Inf) means "+infinity", i.e. the effect it
+  !> controls is off (H_N, zeta_0). FE input files cannot always hold an IEEE infinity.
+  real(dp), parameter :: infinite_threshold = 1.0e30_dp
+
+contains
+
+  !> True for +Inf or a value >= infinite_threshold; never raises an FP exception on NaN.
+  elemental logical function is_infinite_value(x)
+    real(dp), intent(in) :: x
+    if (ieee_is_nan(x)) then
+      is_infinite_value = .false.
+    else if (.not. ieee_is_finite(x)) then
+      is_infinite_value = x > 0.0_dp
+    else
+      is_infinite_value = x >= infinite_threshold
+    end if
+  end function is_infinite_value
+
+  elemental logical function is_nan_value(x)
+    real(dp), intent(in) :: x
+    is_nan_value = ieee_is_nan(x)
+  end function is_nan_value
+
+  !> a == b without the compiler's warning on real equality: used where exact equality is meant
+  !> (flags stored as reals, a parameter that switches an effect off exactly).
+  elemental logical function same_value(a, b)
+    real(dp), intent(in) :: a, b
+    same_value = .not. (a < b .or. a > b)
+  end function same_value
+
+end module interlock_kinds

@@ -1,0 +1,205 @@
+!> The material: interface parameters, the RIA (microplanes), the effect switches, and what is
+!> derived from them once, when the material is prepared (stiffnesses, the resolved effect set,
+!> constant sines and cosines), so that an update pays only for the effects a scene uses.
+module interlock_material
+  use interlock_kinds, only: dp, deg_to_rad, pi, is_infinite_value, is_nan_value, same_value
+  use interlock_material_table, only: check_property, format_real, &
+      prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_zeta0
+  use interlock_status, only: status_ok, status_bad_input
+  implicit none
+  private
+  public :: interlock_material_t, interlock_solver_t, max_planes
+  public :: interlock_material_prepare, interlock_paper_ria
+  public :: scheme_explicit, scheme_implicit, scheme_name
+  public :: effect_damage, effect_friction, effect_interlocking, effect_finite_depth, effect_wear
+  public :: effect_names, n_effects
+
+  integer, parameter :: max_planes = 8
+  integer, parameter :: scheme_explicit = 1, scheme_implicit = 2
+  integer, parameter :: n_effects = 5
+  integer, parameter :: effect_damage = 1, effect_friction = 2, effect_interlocking = 3, &
+                        effect_finite_depth = 4, effect_wear = 5
+  character(len=12), parameter :: effect_names(n_effects) = &
+    [character(len=12) :: 'damage', 'friction', 'interlocking', 'finite_depth', 'wear']
+
+  !> Parameters as the user gives them (angles in radians), then what `prepare` derives.
+  type :: interlock_material_t
+    ! --- given
+    real(dp) :: sigma0_n = 0.0_dp   !< peak normal traction [MPa]
+    real(dp) :: sigma0_t = 0.0_dp   !< peak tangential traction [MPa]
+    real(dp) :: gc = 0.0_dp         !< macroscopic fracture energy Gc_bar [N/mm]
+    real(dp) :: eta = 0.0_dp        !< ductility parameter [-]
+    real(dp) :: mu = 0.0_dp         !< friction coefficient [-]
+    real(dp) :: h_n = huge(1.0_dp)  !< asperity depth [mm]; infinite by default
+    logical  :: prefractured = .false.
+    integer  :: n_planes = 0
+    real(dp) :: gamma_hat(max_planes) = 0.0_dp  !< area fractions, sum 1
+    real(dp) :: theta0(max_planes) = 0.0_dp     !< initial inclinations [rad]
+    real(dp) :: thetaf(max_planes) = 0.0_dp     !< final inclinations [rad]
+    real(dp) :: zeta0(max_planes) = huge(1.0_dp) !< wear energy scales [N/mm]
+    logical  :: effect(n_effects) = .true.       !< user switches, see effect_*
+    ! --- derived by interlock_material_prepare
+    logical  :: prepared = .false.
+    real(dp) :: s0n = 0.0_dp, s0t = 0.0_dp, scn = 0.0_dp, sct = 0.0_dp
+    real(dp) :: kn = 0.0_dp, kt = 0.0_dp
+    real(dp) :: beta_break = 0.0_dp   !< 1/(1 - eta): equivalent displacement at D = 1
+    real(dp) :: mu_eff = 0.0_dp       !< mu, or 0 with friction off
+    real(dp) :: inv_h_n = 0.0_dp      !< 1/H_N, or 0 with infinite depth
+    real(dp) :: d_frozen = 0.0_dp     !< the constant damage when damage does not evolve
+    logical  :: use_damage = .true.   !< damage evolves (damage on, not pre-fractured)
+    logical  :: use_friction = .true. !< mu_eff > 0
+    logical  :: use_depth = .true.    !< finite H_N
+    logical  :: use_wear = .true.     !< some plane's angle can change
+    logical  :: flat = .false.        !< every plane flat: one plane is computed for all
+    logical  :: plane_wears(max_planes) = .false.
+    real(dp) :: theta_init(max_planes) = 0.0_dp !< effective initial angle (0 when interlocking off)
+    real(dp) :: thetaf_eff(max_planes) = 0.0_dp
+    real(dp) :: inv_zeta0(max_planes) = 0.0_dp
+    real(dp) :: cos0(max_planes) = 1.0_dp, sin0(max_planes) = 0.0_dp
+  end type interlock_material_t
+
+  !> How an update integrates.
+  type :: interlock_solver_t
+    integer  :: scheme = scheme_explicit
+    real(dp) :: substep_tol = 0.0_dp      !< local error tolerance; 0: no substepping
+    real(dp) :: newton_tol = 1.0e-13_dp   !< relative residual of the per-plane wear equation
+    integer  :: newton_max_iterations = 60
+    integer  :: max_substeps = 100000     !< bound on sub-increments tried in one update
+  end type interlock_solver_t
+
+contains
+
+  pure function scheme_name(scheme) result(name)
+    integer, intent(in) :: scheme
+    character(len=:), allocatable :: name
+    select case (scheme)
+    case (scheme_explicit)
+      name = 'explicit'
+    case (scheme_implicit)
+      name = 'implicit'
+    case default
+      name = 'unknown'
+    end select
+  end function scheme_name
+
+  !> The paper's symmetric three-plane RIA (gamma_hat = 1/3; -theta_0, 0, +theta_0; the middle
+  !> plane never wears). Angles in radians.
+  pure subroutine interlock_paper_ria(mat, theta0, thetaf, zeta0)
+    type(interlock_material_t), intent(inout) :: mat
+    real(dp), intent(in) :: theta0, thetaf, zeta0
+    mat%n_planes = 3
+    mat%gamma_hat = 0.0_dp
+    mat%gamma_hat(1:3) = 1.0_dp / 3.0_dp
+    mat%theta0 = 0.0_dp
+    mat%thetaf = 0.0_dp
+    mat%zeta0 = huge(1.0_dp)
+    mat%theta0(1:3) = [-theta0, 0.0_dp, theta0]
+    mat%thetaf(1:3) = [-thetaf, 0.0_dp, thetaf]
+    mat%zeta0(1:3) = [zeta0, huge(1.0_dp), zeta0]
+  end subroutine interlock_paper_ria
+
+  !> Validate the given parameters and derive everything the update needs. On bad input
+  !> `stat` = status_bad_input and `message` names the value and the admissible range.
+  pure subroutine interlock_material_prepare(mat, stat, message)
+    type(interlock_material_t), intent(inout) :: mat
+    integer, intent(out) :: stat
+    character(len=*), intent(out) :: message
+    logical :: ok
+    integer :: k
+    character(len=8) :: kbuf
+    real(dp) :: gsum
+
+    stat = status_bad_input
+    mat%prepared = .false.
+    call check_property(prop_sigma0_n, mat%sigma0_n, ok, message); if (.not. ok) return
+    call check_property(prop_sigma0_t, mat%sigma0_t, ok, message); if (.not. ok) return
+    call check_property(prop_gc, mat%gc, ok, message); if (.not. ok) return
+    call check_property(prop_eta, mat%eta, ok, message); if (.not. ok) return
+    call check_property(prop_mu, mat%mu, ok, message); if (.not. ok) return
+    call check_property(prop_h_n, mat%h_n, ok, message); if (.not. ok) return
+    if (mat%n_planes < 1 .or. mat%n_planes > max_planes) then
+      write (kbuf, '(i0)') mat%n_planes
+      message = "n_planes = " // trim(kbuf) // " is inadmissible: admissible 1 <= n_planes <= 8"
+      return
+    end if
+    gsum = 0.0_dp
+    do k = 1, mat%n_planes
+      write (kbuf, '(i0)') k
+      if (is_nan_value(mat%gamma_hat(k)) .or. .not. (mat%gamma_hat(k) > 0.0_dp .and. &
+          mat%gamma_hat(k) <= 1.0_dp)) then
+        message = 'gamma_hat(' // trim(kbuf) // ') = ' // format_real(mat%gamma_hat(k)) // &
+                  ' is inadmissible: admissible 0 < gamma_hat <= 1'
+        return
+      end if
+      gsum = gsum + mat%gamma_hat(k)
+      if (is_nan_value(mat%theta0(k)) .or. .not. (abs(mat%theta0(k)) < 0.5_dp * pi)) then
+        message = 'theta0(' // trim(kbuf) // ') = ' // format_real(mat%theta0(k) / deg_to_rad) // &
+                  ' deg is inadmissible: admissible -90 < theta0 < 90 deg'
+        return
+      end if
+      if (is_nan_value(mat%thetaf(k)) .or. .not. (abs(mat%thetaf(k)) <= abs(mat%theta0(k)) .and. &
+          mat%thetaf(k) * mat%theta0(k) >= 0.0_dp)) then
+        message = 'thetaf(' // trim(kbuf) // ') = ' // format_real(mat%thetaf(k) / deg_to_rad) // &
+                  ' deg is inadmissible: admissible 0 <= |thetaf| <= |theta0| = ' // &
+                  format_real(abs(mat%theta0(k)) / deg_to_rad) // ' deg, same sign as theta0'
+        return
+      end if
+      call check_property(prop_zeta0, mat%zeta0(k), ok, message)
+      if (.not. ok) then
+        message = 'plane ' // trim(kbuf) // ': ' // message
+        return
+      end if
+    end do
+    if (abs(gsum - 1.0_dp) > 1.0e-9_dp) then
+      message = 'gamma_hat sums to ' // format_real(gsum) // &
+                ': the area fractions must sum to 1 (within 1e-9)'
+      return
+    end if
+
+    ! Derived (SPEC section 2).
+    mat%scn = 2.0_dp * mat%gc / mat%sigma0_n
+    mat%sct = 2.0_dp * mat%gc / mat%sigma0_t
+    mat%s0n = (1.0_dp - mat%eta) * mat%scn
+    mat%s0t = (1.0_dp - mat%eta) * mat%sct
+    mat%kn = mat%sigma0_n / mat%s0n
+    mat%kt = mat%sigma0_t / mat%s0t
+    mat%beta_break = 1.0_dp / (1.0_dp - mat%eta)
+    if (.not. (mat%kn < huge(1.0_dp) .and. mat%kt < huge(1.0_dp) .and. mat%s0n > 0.0_dp .and. &
+               mat%s0t > 0.0_dp)) then
+      message = 'the parameters give a stiffness K_n = sigma0_n^2/(2 Gc_bar (1-eta)) or K_t ' // &
+                'that is not a finite positive number: check sigma0_n, sigma0_t, gc and eta'
+      return
+    end if
+
+    ! The effect set, resolved once (SPEC section 7).
+    mat%use_damage = mat%effect(effect_damage) .and. .not. mat%prefractured
+    mat%d_frozen = merge(1.0_dp, 0.0_dp, mat%prefractured)
+    mat%mu_eff = merge(mat%mu, 0.0_dp, mat%effect(effect_friction))
+    mat%use_friction = mat%mu_eff > 0.0_dp
+    mat%use_depth = mat%effect(effect_finite_depth) .and. .not. is_infinite_value(mat%h_n)
+    mat%inv_h_n = 0.0_dp
+    if (mat%use_depth) mat%inv_h_n = 1.0_dp / mat%h_n
+    do k = 1, mat%n_planes
+      if (mat%effect(effect_interlocking)) then
+        mat%theta_init(k) = mat%theta0(k)
+        mat%thetaf_eff(k) = mat%thetaf(k)
+      else
+        mat%theta_init(k) = 0.0_dp
+        mat%thetaf_eff(k) = 0.0_dp
+      end if
+      mat%plane_wears(k) = mat%effect(effect_wear) .and. .not. is_infinite_value(mat%zeta0(k)) &
+                           .and. .not. same_value(mat%theta_init(k), mat%thetaf_eff(k))
+      mat%inv_zeta0(k) = 0.0_dp
+      if (mat%plane_wears(k)) mat%inv_zeta0(k) = 1.0_dp / mat%zeta0(k)
+      mat%cos0(k) = cos(mat%theta_init(k))
+      mat%sin0(k) = sin(mat%theta_init(k))
+    end do
+    mat%plane_wears(mat%n_planes + 1:) = .false.
+    mat%use_wear = any(mat%plane_wears(1:mat%n_planes))
+    mat%flat = all(same_value(mat%theta_init(1:mat%n_planes), 0.0_dp)) .and. .not. mat%use_wear
+    mat%prepared = .true.
+    stat = status_ok
+    message = ''
+  end subroutine interlock_material_prepare
+
+end module interlock_material

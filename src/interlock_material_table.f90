@@ -1,0 +1,248 @@
+!> The single source of truth for the material description (in the spirit of an MFront
+!> `.mfront` file): every property (name, symbol, unit, default, admissible range, deck group,
+!> one-line description) and every state variable. The UMAT's PROPS and STATEV layouts, the
+!> validation messages, the names used by decks and HDF5 files, `interlock-query` and
+!> `docs/material.md` are all generated from these two tables.
+module interlock_material_table
+  use interlock_kinds, only: dp, is_infinite_value, is_nan_value, same_value
+  implicit none
+  private
+  public :: property_t, statevar_t, properties, statevars
+  public :: n_properties, n_required_properties, n_statevars_per_plane, n_statevars_global
+  public :: umat_planes, umat_nstatv, property_index, statevar_index
+  public :: check_property, format_range, format_real
+  public :: kind_real, kind_flag, kind_choice
+  public :: prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
+            prop_thetaf, prop_zeta0, prop_prefractured, prop_scheme, prop_substep_tol, &
+            prop_max_dd, prop_max_dtheta, prop_effect_damage, prop_effect_friction, &
+            prop_effect_interlocking, prop_effect_finite_depth, prop_effect_wear
+  public :: sv_damage, sv_beta, sv_frictional_slip, sv_zeta, sv_theta, sv_friction_traction, &
+            sv_work, sv_damage_dissipation, sv_friction_dissipation, sv_initialized
+
+  integer, parameter :: kind_real = 1   !< a real number in a range
+  integer, parameter :: kind_flag = 2   !< 0 (off / false) or 1 (on / true)
+  integer, parameter :: kind_choice = 3 !< an integer code in a range
+
+  real(dp), parameter :: big = huge(1.0_dp)
+
+  !> One material property. Bounds are inclusive unless the matching `*_open` is set;
+  !> `infinite_ok` admits +infinity (a value >= infinite_threshold or +Inf): the effect is off.
+  type :: property_t
+    character(len=24) :: name
+    character(len=12) :: symbol
+    character(len=6)  :: unit
+    character(len=12) :: group
+    integer  :: kind
+    logical  :: required
+    real(dp) :: default
+    real(dp) :: lower
+    logical  :: lower_open
+    real(dp) :: upper
+    logical  :: upper_open
+    logical  :: infinite_ok
+    character(len=96) :: description
+  end type property_t
+
+  !> One state variable; per-plane variables occupy one STATEV slot per microplane.
+  type :: statevar_t
+    character(len=24) :: name
+    character(len=6)  :: unit
+    logical :: per_plane
+    character(len=96) :: description
+  end type statevar_t
+
+  integer, parameter :: n_properties = 19
+  !> PROPS(1:n_required_properties) must be given; the rest take their defaults.
+  integer, parameter :: n_required_properties = 9
+
+  integer, parameter :: prop_sigma0_n = 1, prop_sigma0_t = 2, prop_gc = 3, prop_eta = 4, &
+                        prop_mu = 5, prop_h_n = 6, prop_theta0 = 7, prop_thetaf = 8, &
+                        prop_zeta0 = 9, prop_prefractured = 10, prop_scheme = 11, &
+                        prop_substep_tol = 12, prop_max_dd = 13, prop_max_dtheta = 14, &
+                        prop_effect_damage = 15, prop_effect_friction = 16, &
+                        prop_effect_interlocking = 17, prop_effect_finite_depth = 18, &
+                        prop_effect_wear = 19
+
+  type(property_t), parameter :: properties(n_properties) = [ &
+    property_t('sigma0_n', 'sigma0_n', 'MPa', 'interface', kind_real, .true., 0.0_dp, &
+               0.0_dp, .true., big, .false., .false., 'peak normal (mode I) traction'), &
+    property_t('sigma0_t', 'sigma0_t', 'MPa', 'interface', kind_real, .true., 0.0_dp, &
+               0.0_dp, .true., big, .false., .false., 'peak tangential (mode II) traction'), &
+    property_t('gc', 'Gc_bar', 'N/mm', 'interface', kind_real, .true., 0.0_dp, &
+               0.0_dp, .true., big, .false., .false., 'macroscopic fracture energy of the RIA'), &
+    property_t('eta', 'eta', '-', 'interface', kind_real, .true., 0.0_dp, &
+               0.0_dp, .true., 1.0_dp, .true., .false., &
+               'ductility parameter: s_0 = (1 - eta) s_c; stiffness K = sigma0 / s_0'), &
+    property_t('mu', 'mu', '-', 'interface', kind_real, .true., 0.0_dp, &
+               0.0_dp, .false., 100.0_dp, .false., .false., &
+               'Coulomb friction coefficient on the damaged part of each microplane'), &
+    property_t('h_n', 'H_N', 'mm', 'interface', kind_real, .true., 0.0_dp, &
+               0.0_dp, .true., big, .false., .true., &
+               'asperity depth; >= 1e30 or Inf: infinite depth (finite-depth effect off)'), &
+    property_t('theta0_deg', 'theta_0', 'deg', 'microplanes', kind_real, .true., 0.0_dp, &
+               0.0_dp, .false., 90.0_dp, .true., .false., &
+               'initial inclination of the inclined microplanes (RIA: -theta_0, 0, +theta_0)'), &
+    property_t('thetaf_deg', 'theta_f', 'deg', 'microplanes', kind_real, .true., 0.0_dp, &
+               0.0_dp, .false., 90.0_dp, .true., .false., &
+               'final (fully worn) inclination, 0 <= theta_f <= theta_0'), &
+    property_t('zeta0', 'zeta_0', 'N/mm', 'microplanes', kind_real, .true., 0.0_dp, &
+               0.0_dp, .true., big, .false., .true., &
+               'wear energy scale; >= 1e30 or Inf: no wear'), &
+    property_t('prefractured', 'D_0', '-', 'interface', kind_flag, .false., 0.0_dp, &
+               0.0_dp, .false., 1.0_dp, .false., .false., &
+               '1: interface fully debonded from the start (D = 1), 0: intact'), &
+    property_t('scheme', 'scheme', '-', 'solver', kind_choice, .false., 1.0_dp, &
+               1.0_dp, .false., 2.0_dp, .false., .false., &
+               'integration scheme: 1 explicit (the paper''s), 2 implicit (backward Euler)'), &
+    property_t('substep_tol', 'tol', '-', 'solver', kind_real, .false., 0.0_dp, &
+               0.0_dp, .false., 1.0_dp, .true., .false., &
+               'local error tolerance of substepping; 0: no substepping'), &
+    property_t('max_damage_increment', 'dD_max', '-', 'umat', kind_real, .false., 0.25_dp, &
+               0.0_dp, .true., 1.0_dp, .false., .false., &
+               'UMAT: largest damage increment per increment before PNEWDT < 1 is proposed'), &
+    property_t('max_angle_increment_deg', 'dtheta_max', 'deg', 'umat', kind_real, .false., 1.0_dp, &
+               0.0_dp, .true., 90.0_dp, .false., .false., &
+               'UMAT: largest microplane rotation per increment before PNEWDT < 1 is proposed'), &
+    property_t('damage', 'damage', '-', 'effects', kind_flag, .false., 1.0_dp, &
+               0.0_dp, .false., 1.0_dp, .false., .false., &
+               'effect switch: damage (decohesion); 0: D stays at its initial value'), &
+    property_t('friction', 'friction', '-', 'effects', kind_flag, .false., 1.0_dp, &
+               0.0_dp, .false., 1.0_dp, .false., .false., &
+               'effect switch: Coulomb friction; 0: as mu = 0'), &
+    property_t('interlocking', 'interlock', '-', 'effects', kind_flag, .false., 1.0_dp, &
+               0.0_dp, .false., 1.0_dp, .false., .false., &
+               'effect switch: inclined microplanes; 0: one flat plane (Alfano-Sacco)'), &
+    property_t('finite_depth', 'finite_H', '-', 'effects', kind_flag, .false., 1.0_dp, &
+               0.0_dp, .false., 1.0_dp, .false., .false., &
+               'effect switch: finite asperity depth; 0: as H_N = infinity'), &
+    property_t('wear', 'wear', '-', 'effects', kind_flag, .false., 1.0_dp, &
+               0.0_dp, .false., 1.0_dp, .false., .false., &
+               'effect switch: asperity wear; 0: as zeta_0 = infinity (theta constant)') ]
+
+  integer, parameter :: n_statevars_per_plane = 6
+  integer, parameter :: n_statevars_global = 4
+  integer, parameter :: sv_damage = 1, sv_beta = 2, sv_frictional_slip = 3, sv_zeta = 4, &
+                        sv_theta = 5, sv_friction_traction = 6, &
+                        sv_work = 7, sv_damage_dissipation = 8, sv_friction_dissipation = 9, &
+                        sv_initialized = 10
+
+  type(statevar_t), parameter :: statevars(n_statevars_per_plane + n_statevars_global) = [ &
+    statevar_t('damage', '-', .true., 'damage D_k in [0, 1], non-decreasing'), &
+    statevar_t('beta', '-', .true., 'history maximum of the equivalent relative displacement'), &
+    statevar_t('frictional_slip', 'mm', .true., 'frictional slip sf_k along the microplane'), &
+    statevar_t('zeta', 'N/mm', .true., 'accumulated frictional work zeta_k (drives wear)'), &
+    statevar_t('theta', 'rad', .true., 'current inclination theta_k of the microplane'), &
+    statevar_t('friction_traction', 'MPa', .true., &
+               'friction traction K_t (s_kt - sf_k) at the end of the increment'), &
+    statevar_t('work', 'N/mm', .false., 'work done on the interface, sum of sigma . ds'), &
+    statevar_t('damage_dissipation', 'N/mm', .false., 'energy dissipated by damage'), &
+    statevar_t('friction_dissipation', 'N/mm', .false., 'energy dissipated by friction'), &
+    statevar_t('initialized', '-', .false., '0 before the first increment, 1 after') ]
+
+  !> The UMAT uses the paper's symmetric three-plane RIA.
+  integer, parameter :: umat_planes = 3
+  integer, parameter :: umat_nstatv = n_statevars_per_plane * umat_planes + n_statevars_global
+
+contains
+
+  !> Index of a property by name (case-sensitive, trimmed); 0 when unknown.
+  pure integer function property_index(name)
+    character(len=*), intent(in) :: name
+    integer :: i
+    property_index = 0
+    do i = 1, n_properties
+      if (trim(properties(i)%name) == trim(name)) then
+        property_index = i
+        return
+      end if
+    end do
+  end function property_index
+
+  !> STATEV slot of state variable `ivar` (plane `k` for per-plane variables) in the UMAT layout:
+  !> per-plane variables by variable, then plane; then the global ones.
+  pure integer function statevar_index(ivar, k)
+    integer, intent(in) :: ivar, k
+    if (ivar <= n_statevars_per_plane) then
+      statevar_index = (ivar - 1) * umat_planes + k
+    else
+      statevar_index = n_statevars_per_plane * umat_planes + (ivar - n_statevars_per_plane)
+    end if
+  end function statevar_index
+
+  !> Check one value against its table row. On failure `ok` is false and `message` names the
+  !> property, the value and the admissible range.
+  pure subroutine check_property(i, value, ok, message)
+    integer, intent(in) :: i
+    real(dp), intent(in) :: value
+    logical, intent(out) :: ok
+    character(len=*), intent(out) :: message
+    type(property_t) :: p
+    p = properties(i)
+    ok = .true.
+    message = ''
+    if (is_nan_value(value)) then
+      ok = .false.
+    else if (is_infinite_value(value)) then
+      ok = p%infinite_ok
+    else if (abs(value) > huge(1.0_dp)) then
+      ok = .false.
+    else
+      if (p%lower_open) then
+        ok = value > p%lower
+      else
+        ok = value >= p%lower
+      end if
+      if (p%upper_open) then
+        ok = ok .and. value < p%upper
+      else
+        ok = ok .and. value <= p%upper
+      end if
+      if (ok .and. p%kind /= kind_real) ok = same_value(value, anint(value))
+    end if
+    if (.not. ok) then
+      message = "property '" // trim(p%name) // "' = " // trim(format_real(value)) // &
+                ' is inadmissible: admissible ' // trim(format_range(i))
+    end if
+  end subroutine check_property
+
+  !> The admissible range of property i as text, e.g. "0 < eta < 1".
+  pure function format_range(i) result(text)
+    integer, intent(in) :: i
+    character(len=:), allocatable :: text
+    type(property_t) :: p
+    p = properties(i)
+    select case (p%kind)
+    case (kind_flag)
+      text = trim(p%name) // ' = 0 or 1'
+    case (kind_choice)
+      text = trim(p%name) // ' an integer from ' // trim(format_real(p%lower)) // ' to ' // &
+             trim(format_real(p%upper))
+    case default
+      text = trim(format_real(p%lower)) // merge(' < ', ' <=', p%lower_open) // ' ' // trim(p%name)
+      if (p%upper < huge(1.0_dp)) then
+        text = text // merge(' < ', ' <=', p%upper_open) // ' ' // trim(format_real(p%upper))
+      end if
+      if (p%infinite_ok) text = text // ' (or >= 1e30 / Inf for infinity)'
+      text = text // ' [' // trim(p%unit) // ']'
+    end select
+  end function format_range
+
+  !> A compact, exact-enough rendering of a real for messages and tables.
+  pure function format_real(x) result(text)
+    real(dp), intent(in) :: x
+    character(len=:), allocatable :: text
+    character(len=32) :: buf
+    if (is_nan_value(x)) then
+      text = 'NaN'
+    else if (abs(x) > huge(1.0_dp)) then
+      text = merge('+Inf', '-Inf', x > 0.0_dp)
+    else if (same_value(x, anint(x)) .and. abs(x) < 1.0e9_dp) then
+      write (buf, '(i0)') nint(x, kind=8)
+      text = trim(buf)
+    else
+      write (buf, '(g0.6)') x
+      text = trim(adjustl(buf))
+    end if
+  end function format_real
+
+end module interlock_material_table

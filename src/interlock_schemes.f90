@@ -1,0 +1,241 @@
+!> Integration of one microplane over one step, for each scheme (SPEC section 5): how the
+!> inclination is treated within the step and how the frictional work zeta is updated.
+!> Results come with exact derivatives with respect to w = (s_N, s_T, beta_old, sf_old,
+!> zeta_old, tauf_old); only the first `ncol` columns are computed (2: the tangent alone,
+!> 6: also what substepping needs to chain sub-increments).
+module interlock_schemes
+  use interlock_kinds, only: dp
+  use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_implicit
+  use interlock_kinematics, only: to_local, to_global, dlocal_dtheta
+  use interlock_damage, only: damage_of_beta
+  use interlock_microplane, only: local_t, microplane_update
+  use interlock_wear, only: worn_angle, worn_angle_slope
+  implicit none
+  private
+  public :: plane_t, plane_step
+
+  !> One plane at the end of the step; q = (beta, sf, zeta, tauf).
+  type :: plane_t
+    real(dp) :: beta, dmg, sf, zeta, theta, tauf
+    real(dp) :: sig(2)             !< the plane's traction in the macro frame [MPa]
+    real(dp) :: gsig(2, 6)         !< d sig / d w
+    real(dp) :: gq(4, 6)           !< d q / d w
+    real(dp) :: psi                !< stored energy density of the plane [N/mm]
+    real(dp) :: ydmg               !< energy release rate conjugate to D [N/mm]
+    real(dp) :: wfric              !< frictional work in the step, D |tau_f| |d sf| [N/mm]
+    integer  :: iterations         !< Newton iterations of the wear equation
+    logical  :: ok
+  end type plane_t
+
+contains
+
+  pure subroutine plane_step(mat, solver, k, s, beta_o, sf_o, zeta_o, tauf_o, dmg_o, theta_o, &
+                             ncol, p)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    integer, intent(in) :: k, ncol
+    real(dp), intent(in) :: s(2), beta_o, sf_o, zeta_o, tauf_o, dmg_o, theta_o
+    type(plane_t), intent(out) :: p
+    type(local_t) :: r
+    real(dp) :: c, sn, sl(2), dthw(6), gz(6), dvdw(4, 6), dsl_dth(2), dz, ddo_db, dtmp, &
+                sig_th(2), thp, fp
+    integer :: j
+
+    p%ok = .true.
+    p%iterations = 0
+    dthw = 0.0_dp
+    gz = 0.0_dp
+    if (solver%scheme == scheme_implicit .and. mat%plane_wears(k)) then
+      call solve_wear(mat, solver, k, s, beta_o, sf_o, zeta_o, theta_o, r, p%zeta, p%theta, c, &
+                      sn, sl, thp, fp, p%iterations, p%ok)
+      if (.not. p%ok) return
+      ! zeta = zeta_o + g(v(w, theta(zeta))): implicit differentiation.
+      gz(1:2) = matmul(r%gwdrv(1:2), rotation(c, sn)) / fp
+      if (ncol > 2) then
+        gz(3:4) = r%gwdrv(3:4) / fp
+        gz(5) = 1.0_dp / fp
+      end if
+      dthw(1:ncol) = thp * gz(1:ncol)
+    else
+      if (mat%plane_wears(k)) then
+        p%theta = theta_o
+        c = cos(theta_o)
+        sn = sin(theta_o)
+      else
+        p%theta = mat%theta_init(k)
+        c = mat%cos0(k)
+        sn = mat%sin0(k)
+      end if
+      call to_local(c, sn, s, sl)
+      call microplane_update(mat, sl, beta_o, sf_o, mat%d_frozen, r)
+      if (solver%scheme == scheme_implicit) then
+        p%zeta = zeta_o + r%wdrv
+        gz(1:2) = matmul(r%gwdrv(1:2), rotation(c, sn))
+        if (ncol > 2) then
+          gz(3:4) = r%gwdrv(3:4)
+          gz(5) = 1.0_dp
+        end if
+      else
+        ! Explicit (eq. 25): theta frozen at its start value, zeta driven by the start traction.
+        dz = dmg_o * abs(tauf_o) * r%slip
+        p%zeta = zeta_o + dz
+        if (mat%plane_wears(k) .and. dz > 0.0_dp) then
+          call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), p%zeta, &
+                          p%theta, dtmp)
+        end if
+        if (ncol > 2 .and. mat%plane_wears(k)) then
+          dthw(5) = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), theta_o)
+        end if
+      end if
+    end if
+
+    ! dv/dw = P + dv/dtheta (x) dtheta/dw, v = (s_kn, s_kt, beta_o, sf_o).
+    dvdw = 0.0_dp
+    dvdw(1:2, 1:2) = rotation(c, sn)
+    if (ncol > 2) then
+      dvdw(3, 3) = 1.0_dp
+      dvdw(4, 4) = 1.0_dp
+    end if
+    dsl_dth = dlocal_dtheta(sl)
+    do j = 1, ncol
+      dvdw(1:2, j) = dvdw(1:2, j) + dsl_dth * dthw(j)
+    end do
+
+    if (solver%scheme /= scheme_implicit) then
+      ! d zeta / d w for the explicit update zeta = zeta_o + D_o |tauf_o| |sf - sf_o|.
+      gz(1:ncol) = dmg_o * abs(tauf_o) * matmul(r%gslip, dvdw(:, 1:ncol))
+      if (ncol > 2) then
+        ddo_db = 0.0_dp
+        if (mat%use_damage) call damage_of_beta(mat%eta, beta_o, dtmp, ddo_db)
+        gz(3) = gz(3) + abs(tauf_o) * r%slip * ddo_db
+        gz(5) = gz(5) + 1.0_dp
+        gz(6) = gz(6) + dmg_o * r%slip * sign(1.0_dp, tauf_o)
+      end if
+    end if
+
+    p%beta = r%beta
+    p%dmg = r%dmg
+    p%sf = r%sf
+    p%tauf = r%tauf
+    p%gq = 0.0_dp
+    p%gq(1, 1:ncol) = matmul(r%gbeta, dvdw(:, 1:ncol))
+    p%gq(2, 1:ncol) = matmul(r%gsf, dvdw(:, 1:ncol))
+    p%gq(3, 1:ncol) = gz(1:ncol)
+    p%gq(4, 1:ncol) = matmul(r%gtauf, dvdw(:, 1:ncol))
+
+    call to_global(c, sn, r%sig, p%sig)
+    ! d(R^T)/dtheta sigma_loc
+    sig_th = [-sn * r%sig(1) - c * r%sig(2), c * r%sig(1) - sn * r%sig(2)]
+    p%gsig = 0.0_dp
+    p%gsig(:, 1:ncol) = matmul(transpose(rotation(c, sn)), matmul(r%gsig, dvdw(:, 1:ncol)))
+    do j = 1, ncol
+      p%gsig(:, j) = p%gsig(:, j) + sig_th * dthw(j)
+    end do
+
+    ! Energies (stored energy of eq. 21 per unit plane area; Y = -d psi / d D).
+    p%psi = 0.5_dp * ((1.0_dp - r%dmg) * (mat%kn * sl(1)**2 + mat%kt * sl(2)**2) + &
+                      r%dmg * (mat%kn * min(0.0_dp, sl(1))**2 + r%tauf**2 / mat%kt))
+    p%ydmg = 0.5_dp * (mat%kn * max(0.0_dp, sl(1))**2 + mat%kt * sl(2)**2 - r%tauf**2 / mat%kt)
+    p%wfric = r%wdrv
+  end subroutine plane_step
+
+  !> R(theta) = [[c, s], [-s, c]]: d(s_kn, s_kt)/d(s_N, s_T).
+  pure function rotation(c, sn) result(rot)
+    real(dp), intent(in) :: c, sn
+    real(dp) :: rot(2, 2)
+    rot(1, :) = [c, sn]
+    rot(2, :) = [-sn, c]
+  end function rotation
+
+  !> Backward-Euler wear of one plane: F(zeta) = zeta - zeta_o - g(theta(zeta)) = 0, with
+  !> g = D |tau_f| |sf - sf_o| evaluated at the end of the step. F(zeta_o) = -g <= 0; the root
+  !> is bracketed from zeta_o upwards and found by Newton's method safeguarded by bisection.
+  pure subroutine solve_wear(mat, solver, k, s, beta_o, sf_o, zeta_o, theta_o, r, zeta, theta, &
+                             c, sn, sl, thp, fp, iterations, ok)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    integer, intent(in) :: k
+    real(dp), intent(in) :: s(2), beta_o, sf_o, zeta_o, theta_o
+    type(local_t), intent(out) :: r
+    real(dp), intent(out) :: zeta, theta, c, sn, sl(2), thp, fp
+    integer, intent(out) :: iterations
+    logical, intent(out) :: ok
+    real(dp) :: lo, hi, x, f, g0, width, xn, scale
+    integer :: n
+
+    ok = .true.
+    iterations = 0
+    ! At zeta_o: theta = theta_o (stored), no exponential needed.
+    x = zeta_o
+    theta = theta_o
+    thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), theta_o)
+    call wear_residual(mat, k, s, beta_o, sf_o, zeta_o, x, .false., theta, thp, r, c, sn, sl, f, fp)
+    g0 = -f
+    zeta = x
+    if (.not. (g0 > 0.0_dp)) return      ! no frictional work: zeta stays, F = 0 exactly
+    lo = zeta_o
+    width = g0
+    n = 0
+    do
+      hi = zeta_o + width
+      call wear_residual(mat, k, s, beta_o, sf_o, zeta_o, hi, .true., theta, thp, r, c, sn, sl, f, fp)
+      if (f >= 0.0_dp) exit
+      lo = hi
+      width = 2.0_dp * width
+      n = n + 1
+      if (n > 200) then
+        ok = .false.
+        return
+      end if
+    end do
+    x = hi
+    scale = max(abs(x), g0)
+    do
+      if (abs(f) <= solver%newton_tol * scale) exit
+      iterations = iterations + 1
+      if (iterations > solver%newton_max_iterations) then
+        ok = .false.
+        return
+      end if
+      if (fp > 0.0_dp) then
+        xn = x - f / fp
+      else
+        xn = lo - 1.0_dp
+      end if
+      if (.not. (xn > lo .and. xn < hi)) xn = 0.5_dp * (lo + hi)
+      if (.not. (abs(xn - x) > 0.0_dp)) exit   ! cannot move: at round-off
+      x = xn
+      call wear_residual(mat, k, s, beta_o, sf_o, zeta_o, x, .true., theta, thp, r, c, sn, sl, f, fp)
+      if (f < 0.0_dp) then
+        lo = x
+      else
+        hi = x
+      end if
+      if (hi - lo <= 4.0_dp * epsilon(1.0_dp) * abs(x)) exit
+    end do
+    zeta = x
+    ok = fp > 0.0_dp
+  end subroutine solve_wear
+
+  !> F(z) = z - zeta_o - g(theta(z)) and F'(z) for plane k (theta and its slope kept as given
+  !> when `update_angle` is false: they are the start-of-step values).
+  pure subroutine wear_residual(mat, k, s, beta_o, sf_o, zeta_o, z, update_angle, theta, thp, r, &
+                                c, sn, sl, f, fp)
+    type(interlock_material_t), intent(in) :: mat
+    integer, intent(in) :: k
+    real(dp), intent(in) :: s(2), beta_o, sf_o, zeta_o, z
+    logical, intent(in) :: update_angle
+    real(dp), intent(inout) :: theta, thp
+    type(local_t), intent(out) :: r
+    real(dp), intent(out) :: c, sn, sl(2), f, fp
+    if (update_angle) call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), z, &
+                                      theta, thp)
+    c = cos(theta)
+    sn = sin(theta)
+    call to_local(c, sn, s, sl)
+    call microplane_update(mat, sl, beta_o, sf_o, mat%d_frozen, r)
+    f = z - zeta_o - r%wdrv
+    fp = 1.0_dp - thp * dot_product(r%gwdrv(1:2), dlocal_dtheta(sl))
+  end subroutine wear_residual
+
+end module interlock_schemes

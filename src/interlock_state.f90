@@ -1,0 +1,39 @@
+!> The state of one material point: per microplane (damage, history variable, frictional slip,
+!> frictional work, inclination, friction traction) and the point's relative displacement,
+!> traction and energies at the end of the last update.
+module interlock_state
+  use interlock_kinds, only: dp
+  use interlock_material, only: interlock_material_t, max_planes
+  implicit none
+  private
+  public :: interlock_state_t, interlock_state_init
+
+  type :: interlock_state_t
+    real(dp), dimension(max_planes) :: damage = 0.0_dp  !< D_k [-]
+    real(dp), dimension(max_planes) :: beta = 0.0_dp    !< history max of equivalent displacement [-]
+    real(dp), dimension(max_planes) :: sf = 0.0_dp      !< frictional slip [mm]
+    real(dp), dimension(max_planes) :: zeta = 0.0_dp    !< frictional work [N/mm]
+    real(dp), dimension(max_planes) :: theta = 0.0_dp   !< inclination [rad]
+    real(dp), dimension(max_planes) :: tauf = 0.0_dp    !< friction traction K_t (s_kt - sf_k) [MPa]
+    real(dp) :: s(2) = 0.0_dp       !< relative displacement (normal, tangential) [mm]
+    real(dp) :: sigma(2) = 0.0_dp   !< traction (normal, tangential) [MPa]
+    real(dp) :: work = 0.0_dp            !< work done on the interface [N/mm]
+    real(dp) :: stored = 0.0_dp          !< stored (free) energy [N/mm]
+    real(dp) :: diss_damage = 0.0_dp     !< damage dissipation [N/mm]
+    real(dp) :: diss_friction = 0.0_dp   !< friction dissipation [N/mm]
+  end type interlock_state_t
+
+contains
+
+  !> The virgin state (SPEC section 3); pre-fractured: D = 1, beta = 1/(1 - eta).
+  pure subroutine interlock_state_init(mat, state)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_state_t), intent(out) :: state
+    state%theta = mat%theta_init
+    if (mat%prefractured) then
+      state%damage(1:mat%n_planes) = 1.0_dp
+      state%beta(1:mat%n_planes) = mat%beta_break
+    end if
+  end subroutine interlock_state_init
+
+end module interlock_state
