@@ -155,6 +155,9 @@ contains
       else
         h = h * max(0.1_dp, 0.9_dp * sqrt(tol / err))
       end if
+      ! Sizes are powers of 2 so that the partition of the increment does not vary with s
+      ! (except where a decision switches): the chained tangent is then the exact derivative.
+      if (control) h = scale(1.0_dp, exponent(h) - 1)
     end do
     new = cur
     info%substeps = n_accepted
