@@ -4,10 +4,11 @@
 module interlock_integrate
   use interlock_kinds, only: dp, is_nan_value
   use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, &
-      scheme_explicit, scheme_implicit
+      scheme_explicit, scheme_implicit, kernel_general
   use interlock_state, only: interlock_state_t
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
   use interlock_ria, only: ria_step
+  use interlock_kernels, only: kernel_step
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   implicit none
   private
@@ -29,7 +30,7 @@ contains
     type(interlock_state_t), intent(out) :: new
     real(dp), intent(out) :: sigma(2), tangent(2, 2)
     type(interlock_info_t), intent(out) :: info
-    logical :: ok
+    logical :: ok, done
     integer :: n
 
     new = old
@@ -54,8 +55,13 @@ contains
     if (solver%substep_tol > 0.0_dp) then
       call substep(mat, solver, s, old, new, tangent, info, solver%substep_tol)
     else
-      call ria_step(mat, solver, s, old, new, tangent, info%newton_iterations, ok)
+      done = .false.
       info%attempts = 1
+      ! The specialised kernel of the material's effect set, when it applies.
+      if (mat%kernel /= kernel_general) call kernel_step(mat, solver%scheme, s, old, new, &
+                                                         tangent, done)
+      ok = .true.
+      if (.not. done) call ria_step(mat, solver, s, old, new, tangent, info%newton_iterations, ok)
       if (.not. ok) then
         ! The one-step solve failed: retry on sub-increments, split only as failures require.
         call substep(mat, solver, s, old, new, tangent, info, huge(1.0_dp))

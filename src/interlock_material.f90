@@ -13,12 +13,17 @@ module interlock_material
   public :: scheme_explicit, scheme_implicit, scheme_name
   public :: effect_damage, effect_friction, effect_interlocking, effect_finite_depth, effect_wear
   public :: effect_names, n_effects
+  public :: kernel_general, kernel_flat, kernel_fixed_angles
 
   integer, parameter :: max_planes = 8
   integer, parameter :: scheme_explicit = 1, scheme_implicit = 2
   integer, parameter :: n_effects = 5
   integer, parameter :: effect_damage = 1, effect_friction = 2, effect_interlocking = 3, &
                         effect_finite_depth = 4, effect_wear = 5
+  !> Update kernels, chosen once by interlock_material_prepare from the effect set.
+  integer, parameter :: kernel_general = 0      !< any effect set (wear, substepping)
+  integer, parameter :: kernel_flat = 1         !< every plane flat: one plane, no rotation
+  integer, parameter :: kernel_fixed_angles = 2 !< inclined planes without wear
   character(len=12), parameter :: effect_names(n_effects) = &
     [character(len=12) :: 'damage', 'friction', 'interlocking', 'finite_depth', 'wear']
 
@@ -56,6 +61,8 @@ module interlock_material
     real(dp) :: thetaf_eff(max_planes) = 0.0_dp
     real(dp) :: inv_zeta0(max_planes) = 0.0_dp
     real(dp) :: cos0(max_planes) = 1.0_dp, sin0(max_planes) = 0.0_dp
+    !> The kernel for updates without substepping (kernel_general forces the general path).
+    integer  :: kernel = kernel_general
   end type interlock_material_t
 
   !> How an update integrates.
@@ -197,6 +204,13 @@ contains
     mat%plane_wears(mat%n_planes + 1:) = .false.
     mat%use_wear = any(mat%plane_wears(1:mat%n_planes))
     mat%flat = all(same_value(mat%theta_init(1:mat%n_planes), 0.0_dp)) .and. .not. mat%use_wear
+    if (mat%use_wear) then
+      mat%kernel = kernel_general
+    else if (mat%flat) then
+      mat%kernel = kernel_flat
+    else
+      mat%kernel = kernel_fixed_angles
+    end if
     mat%prepared = .true.
     stat = status_ok
     message = ''

@@ -19,3 +19,4 @@ interlock_add_core_suite(core_limits test_limits.f90 test_limits_main.f90)
 interlock_add_core_suite(core_invariants test_invariants.f90 test_invariants_main.f90)
 interlock_add_core_suite(core_mechanisms test_kinematics.f90 test_damage.f90 test_friction.f90
   test_wear.f90 test_geometry.f90 test_mechanisms_main.f90)
+interlock_add_core_suite(core_kernels test_kernels.f90)
