@@ -2,7 +2,7 @@
 !> optionally with error-controlled substepping, and the exact algorithmic tangent of what was
 !> computed. A failed local solve is retried on sub-increments before it is reported.
 module interlock_integrate
-  use interlock_kinds, only: dp, is_nan_value
+  use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, &
       scheme_explicit, scheme_implicit, kernel_general
   use interlock_state, only: interlock_state_t
@@ -15,71 +15,74 @@ module interlock_integrate
   public :: interlock_update
 
   real(dp), parameter :: smallest_fraction = 1.0e-12_dp
+  !> Error control accepts a sub-increment of this fraction of the increment whatever its
+  !> estimate (2^-12: at most ~4096 sub-increments to pass a kink).
+  real(dp), parameter :: smallest_controlled_fraction = 2.0_dp**(-12)
 
 contains
 
   !> Integrate from `old` (state at the start of the increment) to the relative displacement
-  !> `s` (end of the increment). `new` is the state at the end, `sigma` the traction and
-  !> `tangent` = d sigma / d s, the exact derivative of the computed traction.
-  !> On failure `info%status` /= status_ok, `info%message` says why, and `new` = `old`.
+  !> `s` (end of the increment). `new` receives the state at the end (its contents on entry do
+  !> not matter; it must not be `old` itself), `sigma` the traction and `tangent` =
+  !> d sigma / d s, the exact derivative of the computed traction. Every field of `info` is
+  !> set by the call (it is intent(inout) only so that a successful update does not pay for
+  !> clearing the message). On failure `info%status` /= status_ok, `info%message` says why,
+  !> `new` = `old` and `sigma` = `old%sigma`.
   pure subroutine interlock_update(mat, solver, s, old, new, sigma, tangent, info)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     real(dp), intent(in) :: s(2)
     type(interlock_state_t), intent(in) :: old
-    type(interlock_state_t), intent(out) :: new
+    type(interlock_state_t), intent(inout) :: new
     real(dp), intent(out) :: sigma(2), tangent(2, 2)
-    type(interlock_info_t), intent(out) :: info
+    type(interlock_info_t), intent(inout) :: info
     logical :: ok, done
     integer :: n
 
-    new = old
-    sigma = old%sigma
+    if (info%status /= status_ok) info%message = ''
+    info%status = status_ok
+    info%newton_iterations = 0
+    info%substeps = 1
+    info%attempts = 1
     tangent = 0.0_dp
     if (.not. mat%prepared) then
-      info%status = status_bad_input
-      info%message = 'the material has not been prepared (call interlock_material_prepare)'
+      call fail(old, new, sigma, tangent, info, status_bad_input, 'the material has not been prepared ' // &
+                '(call interlock_material_prepare)')
       return
     end if
     if (solver%scheme /= scheme_explicit .and. solver%scheme /= scheme_implicit) then
-      info%status = status_bad_input
-      info%message = 'unknown integration scheme: admissible 1 (explicit) or 2 (implicit)'
+      call fail(old, new, sigma, tangent, info, status_bad_input, 'unknown integration scheme: admissible 1 (explicit) or ' // &
+                '2 (implicit)')
       return
     end if
-    if (any(is_nan_value(s)) .or. .not. all(ieee_is_finite(s))) then
-      info%status = status_bad_input
-      info%message = 'the relative displacement is not a finite number'
+    if (.not. all(ieee_is_finite(s))) then
+      call fail(old, new, sigma, tangent, info, status_bad_input, 'the relative displacement is not a finite number')
       return
     end if
 
+    done = .false.
     if (solver%substep_tol > 0.0_dp) then
       call substep(mat, solver, s, old, new, tangent, info, solver%substep_tol)
     else
-      done = .false.
-      info%attempts = 1
       ! The specialised kernel of the material's effect set, when it applies.
       if (mat%kernel /= kernel_general) call kernel_step(mat, solver%scheme, s, old, new, &
                                                          tangent, done)
-      ok = .true.
-      if (.not. done) call ria_step(mat, solver, s, old, new, tangent, info%newton_iterations, ok)
-      if (.not. ok) then
-        ! The one-step solve failed: retry on sub-increments, split only as failures require.
-        call substep(mat, solver, s, old, new, tangent, info, huge(1.0_dp))
+      if (.not. done) then
+        call ria_step(mat, solver, s, old, new, tangent, info%newton_iterations, ok)
+        if (.not. ok) then
+          ! The one-step solve failed: retry on sub-increments, split only as failures require.
+          call substep(mat, solver, s, old, new, tangent, info, huge(1.0_dp))
+        end if
       end if
     end if
     if (info%status /= status_ok) then
-      new = old
-      sigma = old%sigma
-      tangent = 0.0_dp
+      call fail(old, new, sigma, tangent, info, info%status, info%message)
       return
     end if
     sigma = new%sigma
     if (.not. (all(ieee_is_finite(sigma)) .and. all(ieee_is_finite(tangent)))) then
-      info%status = status_local_failure
-      info%message = 'the traction or tangent is not finite: retry with a smaller increment'
-      new = old
-      sigma = old%sigma
-      tangent = 0.0_dp
+      call fail(old, new, sigma, tangent, info, status_local_failure, 'the traction or tangent is not finite: retry with a ' // &
+                'smaller increment')
       return
     end if
     n = mat%n_planes
@@ -87,20 +90,43 @@ contains
     info%max_angle_increment = maxval(abs(new%theta(1:n) - old%theta(1:n)))
   end subroutine interlock_update
 
-  !> Sub-increments linear in s. Each trial sub-increment is taken once whole and once as two
-  !> halves; their difference estimates the local error, the halves are kept when it is within
-  !> `tol`, and the next size follows from first-order error scaling.
+  !> Report a failure: `new` = `old`, the traction at the start, no tangent.
+  pure subroutine fail(old, new, sigma, tangent, info, code, message)
+    type(interlock_state_t), intent(in) :: old
+    type(interlock_state_t), intent(inout) :: new
+    real(dp), intent(out) :: sigma(2), tangent(2, 2)
+    type(interlock_info_t), intent(inout) :: info
+    integer, intent(in) :: code
+    character(len=*), intent(in) :: message
+    info%status = code
+    info%message = message
+    info%max_damage_increment = 0.0_dp
+    info%max_angle_increment = 0.0_dp
+    new = old
+    sigma = old%sigma
+    tangent = 0.0_dp
+  end subroutine fail
+
+  !> Sub-increments linear in s. With error control (tol finite) each trial sub-increment is
+  !> taken once whole and once as two halves; their difference estimates the local error, the
+  !> halves are kept when it is within `tol` (or when the sub-increment is already the smallest
+  !> allowed: at a kink the estimate does not shrink with the size), and the next size follows
+  !> from first-order error scaling. Without error control (a failed one-step solve) the size is
+  !> quartered on failure and doubled on success. Sizes are powers of 2, so that the partition
+  !> of the increment does not vary with s except where a decision switches: the chained
+  !> tangent is then the exact derivative of what is computed.
   pure subroutine substep(mat, solver, s, old, new, tangent, info, tol)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     real(dp), intent(in) :: s(2), tol
     type(interlock_state_t), intent(in) :: old
     type(interlock_state_t), intent(inout) :: new
-    real(dp), intent(out) :: tangent(2, 2)
+    real(dp), intent(inout) :: tangent(2, 2)
     type(interlock_info_t), intent(inout) :: info
     type(interlock_state_t) :: cur, full, half1, half2
     real(dp) :: ds(2), alpha, h, a_end, err, s_end(2), s_mid(2), t_full(2, 2), t_half(2, 2)
     real(dp) :: jac(4, 2, max_planes), jac1(4, 2, max_planes), jac2(4, 2, max_planes)
+    real(dp) :: stiffness_scale, chain_peak
     integer :: it1, it2, it3, n_accepted
     logical :: ok1, ok2, ok3, control
 
@@ -111,7 +137,10 @@ contains
     h = 1.0_dp
     jac = 0.0_dp
     n_accepted = 0
-    tangent = 0.0_dp
+    info%attempts = 0
+    ! The largest stiffness the law can show (penalty, or traction over the asperity depth).
+    stiffness_scale = max(mat%kn, mat%kt) + max(mat%sigma0_n, mat%sigma0_t) * mat%inv_h_n
+    chain_peak = 0.0_dp
     if (.not. control) h = 0.5_dp
     do while (alpha < 1.0_dp)
       h = min(h, 1.0_dp - alpha)
@@ -127,8 +156,8 @@ contains
       info%attempts = info%attempts + 1
       if (info%attempts > solver%max_substeps) then
         info%status = status_local_failure
-        write (info%message, '(a,i0,a)') 'substepping did not meet its tolerance within ', &
-          solver%max_substeps, ' sub-increments: retry with a smaller increment'
+        write (info%message, '(a,i0,a)') 'substepping needed more than ', solver%max_substeps, &
+          ' sub-increments: retry with a smaller increment'
         return
       end if
       ok1 = .true.
@@ -137,37 +166,63 @@ contains
       call ria_step(mat, solver, s_mid, cur, half1, t_half, it2, ok2, jac, alpha + 0.5_dp * h, jac1)
       ok3 = .false.
       it3 = 0
+      if (ok2) ok2 = bounded(jac1)
       if (ok2) call ria_step(mat, solver, s_end, half1, half2, t_half, it3, ok3, jac1, a_end, jac2)
+      if (ok3) ok3 = bounded(jac2)
       info%newton_iterations = max(info%newton_iterations, it1, it2, it3)
       if (.not. (ok1 .and. ok2 .and. ok3)) then
         h = 0.25_dp * h
         if (h < smallest_fraction) then
           info%status = status_local_failure
-          info%message = 'the local wear equation has no solution on any sub-increment: ' // &
-                         'retry with a smaller increment'
+          if (ok1 .and. ok2 .and. ok3) then
+            info%message = 'the local wear equation has no solution on any sub-increment: ' // &
+                           'retry with a smaller increment'
+          else
+            info%message = 'the update is unstable on small sub-increments (its derivative ' // &
+                           'grows without bound): use the implicit scheme or a smaller increment'
+          end if
           return
         end if
         cycle
       end if
       err = 0.0_dp
       if (control) err = local_error(mat, full, half2)
-      if (err <= tol .or. h <= 1.0e-6_dp) then
+      if (err <= tol .or. h <= smallest_controlled_fraction) then
         cur = half2
         jac = jac2
         tangent = t_half
+        chain_peak = max(chain_peak, maxval(abs(t_half)))
         alpha = a_end
         n_accepted = n_accepted + 2
-        if (control) h = h * min(4.0_dp, max(1.0_dp, 0.9_dp * sqrt(tol / max(err, tiny(1.0_dp)))))
+        if (control) then
+          h = h * min(4.0_dp, max(1.0_dp, 0.9_dp * sqrt(tol / max(err, tiny(1.0_dp)))))
+        else
+          h = 2.0_dp * h
+        end if
       else
         h = h * max(0.1_dp, 0.9_dp * sqrt(tol / err))
       end if
-      ! Sizes are powers of 2 so that the partition of the increment does not vary with s
-      ! (except where a decision switches): the chained tangent is then the exact derivative.
-      if (control) h = scale(1.0_dp, exponent(h) - 1)
+      h = scale(1.0_dp, exponent(h) - 1)
     end do
+    if (chain_peak > 1.0e6_dp * stiffness_scale) then
+      ! Far beyond any stiffness of the law: the chain through the sub-increments amplifies
+      ! (and a product of such factors that cancels down to a normal tangent has lost its
+      ! accuracy to round-off).
+      info%status = status_local_failure
+      info%message = 'the update is unstable on small sub-increments (its derivative grows ' // &
+                     'without bound): use the implicit scheme or a smaller increment'
+      return
+    end if
     new = cur
     info%substeps = n_accepted
   end subroutine substep
+
+  !> The chained derivatives stay far from overflow: an update whose derivative exceeds this is
+  !> reported (an explicit wear update on tiny sub-increments can amplify it exponentially).
+  pure logical function bounded(jac)
+    real(dp), intent(in) :: jac(:, :, :)
+    bounded = maxval(abs(jac)) <= 1.0e100_dp
+  end function bounded
 
   !> Local error estimate between one whole and two half sub-increments: the largest of the
   !> traction difference (relative to the peak tractions), the damage difference and the

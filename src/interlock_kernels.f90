@@ -10,6 +10,7 @@ module interlock_kernels
       kernel_flat, kernel_fixed_angles
   use interlock_state, only: interlock_state_t
   use interlock_geometry, only: contact_area
+  use interlock_damage, only: damage_dissipation_increment
   implicit none
   private
   public :: kernel_step
@@ -18,7 +19,7 @@ module interlock_kernels
   type :: plane_law_t
     real(dp) :: beta, dmg, sf, tauf, zeta
     real(dp) :: sig(2), k(2, 2)
-    real(dp) :: psi, ydmg, wfric
+    real(dp) :: psi, wdmg, wfric
   end type plane_law_t
 
 contains
@@ -50,7 +51,7 @@ contains
                      old%damage(1), p)
       sigma = area * p%sig
       tangent = area * p%k
-      call store_plane(p, 1, area, old%damage(1), old%theta(1), new)
+      call store_plane(p, 1, area, old%theta(1), new)
       do k = 2, mat%n_planes
         new%beta(k) = p%beta
         new%damage(k) = p%dmg
@@ -78,7 +79,7 @@ contains
         sigma = sigma + gam * sg
         tangent = tangent + gam * kg
         p%sig = sg
-        call store_plane(p, k, gam, old%damage(k), old%theta(k), new)
+        call store_plane(p, k, gam, old%theta(k), new)
       end do
       if (mat%use_depth) then
         ! d A_g / d s_N times the traction at unit area.
@@ -94,10 +95,10 @@ contains
   end subroutine kernel_step
 
   !> The plane's end-of-step state into `new`, and its share (weight g) of the energies.
-  pure subroutine store_plane(p, k, g, dmg_old, theta_old, new)
+  pure subroutine store_plane(p, k, g, theta_old, new)
     type(plane_law_t), intent(in) :: p
     integer, intent(in) :: k
-    real(dp), intent(in) :: g, dmg_old, theta_old
+    real(dp), intent(in) :: g, theta_old
     type(interlock_state_t), intent(inout) :: new
     new%beta(k) = p%beta
     new%damage(k) = p%dmg
@@ -105,7 +106,7 @@ contains
     new%zeta(k) = p%zeta
     new%theta(k) = theta_old
     new%tauf(k) = p%tauf
-    new%diss_damage = new%diss_damage + g * p%ydmg * (p%dmg - dmg_old)
+    new%diss_damage = new%diss_damage + g * p%wdmg
     new%diss_friction = new%diss_friction + g * p%wfric
     new%stored = new%stored + g * p%psi
   end subroutine store_plane
@@ -130,7 +131,7 @@ contains
         p%beta = beq
         if (beq > 1.0_dp) then
           x = (beq - 1.0_dp) / (mat%eta * beq)
-          if (x >= 1.0_dp) then
+          if (beq >= mat%beta_break) then
             p%dmg = 1.0_dp
           else
             p%dmg = x
@@ -190,7 +191,9 @@ contains
     end if
     p%psi = 0.5_dp * ((1.0_dp - p%dmg) * (mat%kn * sl(1)**2 + mat%kt * sl(2)**2) + &
                       p%dmg * (mat%kn * neg_n**2 + p%tauf**2 / mat%kt))
-    p%ydmg = 0.5_dp * (mat%kn * pos_n**2 + mat%kt * sl(2)**2 - p%tauf**2 / mat%kt)
+    p%wdmg = 0.0_dp
+    if (p%dmg > dmg_o) p%wdmg = damage_dissipation_increment(mat%eta, mat%beta_break, &
+        mat%kn * mat%s0n**2, beta_o, p%beta) - 0.5_dp * p%tauf**2 / mat%kt * (p%dmg - dmg_o)
   end subroutine plane_law
 
 end module interlock_kernels

@@ -218,9 +218,11 @@ contains
       text = trim(p%name) // ' an integer from ' // trim(format_real(p%lower)) // ' to ' // &
              trim(format_real(p%upper))
     case default
-      text = trim(format_real(p%lower)) // merge(' < ', ' <=', p%lower_open) // ' ' // trim(p%name)
+      text = trim(format_real(p%lower)) // trim(merge(' < ', ' <=', p%lower_open)) // ' ' // &
+             trim(p%name)
       if (p%upper < huge(1.0_dp)) then
-        text = text // merge(' < ', ' <=', p%upper_open) // ' ' // trim(format_real(p%upper))
+        text = text // trim(merge(' < ', ' <=', p%upper_open)) // ' ' // &
+               trim(format_real(p%upper))
       end if
       if (p%infinite_ok) text = text // ' (or >= 1e30 / Inf for infinity)'
       text = text // ' [' // trim(p%unit) // ']'

@@ -39,7 +39,7 @@ contains
         r%beta = beq
         r%gbeta = [dbeq(1), dbeq(2), 0.0_dp, 0.0_dp]
       end if
-      call damage_of_beta(mat%eta, r%beta, r%dmg, dd_dbeta)
+      call damage_of_beta(mat%eta, mat%beta_break, r%beta, r%dmg, dd_dbeta)
       r%gdmg = dd_dbeta * r%gbeta
     else
       r%dmg = dmg_frozen

@@ -86,7 +86,7 @@ contains
           tangent = tangent + gam * area * p%gsig(:, 1:2)
         end if
         tangent(:, 1) = tangent(:, 1) + gam * a * darea * p%sig
-        new%diss_damage = new%diss_damage + gam * area * p%ydmg * (p%dmg - old%damage(k))
+        new%diss_damage = new%diss_damage + gam * area * p%wdmg
         new%diss_friction = new%diss_friction + gam * area * p%wfric
         new%stored = new%stored + gam * area * p%psi
         new%beta(k) = p%beta

@@ -7,7 +7,7 @@ module interlock_schemes
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_implicit
   use interlock_kinematics, only: to_local, to_global, dlocal_dtheta
-  use interlock_damage, only: damage_of_beta
+  use interlock_damage, only: damage_of_beta, damage_dissipation_increment
   use interlock_microplane, only: local_t, microplane_update
   use interlock_wear, only: worn_angle, worn_angle_slope
   implicit none
@@ -21,7 +21,7 @@ module interlock_schemes
     real(dp) :: gsig(2, 6)         !< d sig / d w
     real(dp) :: gq(4, 6)           !< d q / d w
     real(dp) :: psi                !< stored energy density of the plane [N/mm]
-    real(dp) :: ydmg               !< energy release rate conjugate to D [N/mm]
+    real(dp) :: wdmg               !< energy dissipated by damage in the step [N/mm]
     real(dp) :: wfric              !< frictional work in the step, D |tau_f| |d sf| [N/mm]
     integer  :: iterations         !< Newton iterations of the wear equation
     logical  :: ok
@@ -106,7 +106,7 @@ contains
       gz(1:ncol) = dmg_o * abs(tauf_o) * matmul(r%gslip, dvdw(:, 1:ncol))
       if (ncol > 2) then
         ddo_db = 0.0_dp
-        if (mat%use_damage) call damage_of_beta(mat%eta, beta_o, dtmp, ddo_db)
+        if (mat%use_damage) call damage_of_beta(mat%eta, mat%beta_break, beta_o, dtmp, ddo_db)
         gz(3) = gz(3) + abs(tauf_o) * r%slip * ddo_db
         gz(5) = gz(5) + 1.0_dp
         gz(6) = gz(6) + dmg_o * r%slip * sign(1.0_dp, tauf_o)
@@ -132,10 +132,14 @@ contains
       p%gsig(:, j) = p%gsig(:, j) + sig_th * dthw(j)
     end do
 
-    ! Energies (stored energy of eq. 21 per unit plane area; Y = -d psi / d D).
+    ! Energies (stored energy of eq. 21 per unit plane area).
     p%psi = 0.5_dp * ((1.0_dp - r%dmg) * (mat%kn * sl(1)**2 + mat%kt * sl(2)**2) + &
                       r%dmg * (mat%kn * min(0.0_dp, sl(1))**2 + r%tauf**2 / mat%kt))
-    p%ydmg = 0.5_dp * (mat%kn * max(0.0_dp, sl(1))**2 + mat%kt * sl(2)**2 - r%tauf**2 / mat%kt)
+    ! Y dD with Y = c beta^2/2 - tau_f^2/(2 K_t) while damage grows (beta = beta_eq): the
+    ! first part integrated exactly, the friction part at first order.
+    p%wdmg = 0.0_dp
+    if (r%dmg > dmg_o) p%wdmg = damage_dissipation_increment(mat%eta, mat%beta_break, &
+        mat%kn * mat%s0n**2, beta_o, r%beta) - 0.5_dp * r%tauf**2 / mat%kt * (r%dmg - dmg_o)
     p%wfric = r%wdrv
   end subroutine plane_step
 

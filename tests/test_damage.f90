@@ -30,20 +30,24 @@ contains
 
   subroutine damage_law()
     real(dp) :: d, dd
-    call damage_of_beta(0.9_dp, 0.5_dp, d, dd)
+    call damage_of_beta(0.9_dp, 10.0_dp, 0.5_dp, d, dd)
     call assert_equal([0.0_dp, 0.0_dp], [d, dd], 0.0_dp, 'D(0.5) = 0 (elastic)')
-    call damage_of_beta(0.9_dp, 1.0_dp, d, dd)
+    call damage_of_beta(0.9_dp, 10.0_dp, 1.0_dp, d, dd)
     call assert_equal([0.0_dp, 0.0_dp], [d, dd], 0.0_dp, 'D(1) = 0 (onset)')
     ! D = (beta - 1)/(eta beta) = 1/1.8, dD/dbeta = 1/(eta beta^2) = 1/3.6
-    call damage_of_beta(0.9_dp, 2.0_dp, d, dd)
+    call damage_of_beta(0.9_dp, 10.0_dp, 2.0_dp, d, dd)
     call assert_equal([0.5555555555555556_dp, 0.2777777777777778_dp], [d, dd], 1.0e-15_dp, &
                       'D(2) and dD/dbeta with eta = 0.9')
-    call damage_of_beta(0.5_dp, 1.5_dp, d, dd)
+    call damage_of_beta(0.5_dp, 2.0_dp, 1.5_dp, d, dd)
     call assert_equal([2.0_dp / 3.0_dp, 8.0_dp / 9.0_dp], [d, dd], 1.0e-15_dp, &
                       'D(1.5) and dD/dbeta with eta = 0.5')
     ! beyond 1/(1 - eta) = 10: fully damaged, flat
-    call damage_of_beta(0.9_dp, 20.0_dp, d, dd)
+    call damage_of_beta(0.9_dp, 10.0_dp, 20.0_dp, d, dd)
     call assert_equal([1.0_dp, 0.0_dp], [d, dd], 0.0_dp, 'D(20) = 1 with eta = 0.9')
+    ! exactly at beta_break D is exactly 1 (no round-off below it after a separation)
+    call damage_of_beta(0.08356_dp, 1.0_dp / (1.0_dp - 0.08356_dp), 1.0_dp / (1.0_dp - 0.08356_dp), &
+                        d, dd)
+    call assert_equal([1.0_dp, 0.0_dp], [d, dd], 0.0_dp, 'D(1/(1 - eta)) = 1 exactly')
   end subroutine damage_law
 
 end module test_damage

@@ -1,0 +1,190 @@
+!> interlock-history DECK.nml [more decks]: each deck -> one HDF5 file (docs/history-output.md).
+!> Exit status: 0 every case of every deck completed; 1 a deck was rejected or a file could not
+!> be written (no result file, no temporary file is left for it); 2 every file was written but
+!> some case stopped early (its `status` attribute says why).
+program interlock_history
+  use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+  use, intrinsic :: iso_c_binding, only: c_int
+  use interlock, only: interlock_material_t, interlock_solver_t, interlock_state_t, &
+      interlock_version_string, status_ok
+  use interlock_deck, only: deck_t, read_deck, deck_case, deck_n_cases
+  use interlock_mixed_control, only: history_t, run_history
+  use interlock_history_output, only: output_t, output_open, output_write_case, output_close, &
+      output_abort
+  use interlock_h5, only: h5_open_library, h5_close_library
+  implicit none
+
+  interface
+    subroutine c_exit(status) bind(C, name='exit')
+      import :: c_int
+      integer(c_int), value :: status
+    end subroutine c_exit
+  end interface
+
+  character(len=:), allocatable :: arg, command, output_dir
+  character(len=4096), allocatable :: decks(:)
+  integer :: nargs, i, n_decks, rc, stat
+  logical :: options_done
+
+  rc = 0
+  nargs = command_argument_count()
+  allocate (decks(max(nargs, 1)))
+  n_decks = 0
+  output_dir = ''
+  options_done = .false.
+  i = 0
+  do while (i < nargs)
+    i = i + 1
+    arg = argument(i)
+    if (.not. options_done .and. len(arg) > 0) then
+      if (arg(1:1) == '-') then
+        select case (arg)
+        case ('-h', '--help')
+          call usage(output_unit)
+          call finish(0)
+        case ('--version')
+          write (output_unit, '(a)') 'interlock-history ' // interlock_version_string
+          call finish(0)
+        case ('-d', '--output-dir')
+          if (i == nargs) then
+            write (error_unit, '(a)') 'interlock-history: error: ' // arg // ' needs a folder'
+            call finish(1)
+          end if
+          i = i + 1
+          output_dir = argument(i)
+        case ('--')
+          options_done = .true.
+        case default
+          write (error_unit, '(a)') 'interlock-history: error: unknown option ' // arg
+          call usage(error_unit)
+          call finish(1)
+        end select
+        cycle
+      end if
+    end if
+    if (len(arg) > len(decks)) then
+      write (error_unit, '(a)') 'interlock-history: error: a deck path is longer than 4096 characters'
+      call finish(1)
+    end if
+    n_decks = n_decks + 1
+    decks(n_decks) = arg
+  end do
+  if (n_decks == 0) then
+    call usage(error_unit)
+    call finish(1)
+  end if
+  command = command_line()
+
+  call h5_open_library(stat)
+  if (stat /= 0) then
+    write (error_unit, '(a)') 'interlock-history: error: cannot initialise the HDF5 library'
+    call finish(1)
+  end if
+  do i = 1, n_decks
+    call run_deck(trim(decks(i)), rc)
+  end do
+  call h5_close_library(stat)
+  call finish(rc)
+
+contains
+
+  subroutine run_deck(path, rc)
+    character(len=*), intent(in) :: path
+    integer, intent(inout) :: rc
+    type(deck_t) :: deck
+    type(output_t) :: out
+    type(interlock_material_t) :: mat
+    type(interlock_solver_t) :: solver
+    type(interlock_state_t) :: state
+    type(history_t) :: hist
+    character(len=:), allocatable :: label, final_name
+    character(len=1024) :: message
+    integer :: stat, icase, slash
+    character(len=8) :: cbuf
+
+    call read_deck(path, deck, stat, message)
+    if (stat /= status_ok) then
+      write (error_unit, '(a)') 'interlock-history: error: ' // trim(message)
+      rc = max(rc, 1)
+      return
+    end if
+    final_name = deck%output_file
+    if (len(output_dir) > 0) then
+      slash = index(final_name, '/', back=.true.)
+      final_name = output_dir // '/' // final_name(slash + 1:)
+    end if
+    call output_open(final_name, deck, command, out, stat, message)
+    if (stat /= 0) then
+      write (error_unit, '(a)') 'interlock-history: error: ' // path // ': ' // trim(message)
+      rc = max(rc, 1)
+      return
+    end if
+    do icase = 1, deck_n_cases(deck)
+      call deck_case(deck, icase, mat, solver, state, label, stat, message)
+      if (stat /= status_ok) then
+        write (error_unit, '(a)') 'interlock-history: error: ' // trim(message)
+        call output_abort(out)
+        rc = max(rc, 1)
+        return
+      end if
+      call run_history(mat, solver, deck%control, deck%times, deck%values, deck%steps, state, hist)
+      call output_write_case(out, icase, deck, mat, solver, label, hist, stat, message)
+      if (stat /= 0) then
+        write (error_unit, '(a)') 'interlock-history: error: ' // path // ': ' // trim(message)
+        call output_abort(out)
+        rc = max(rc, 1)
+        return
+      end if
+      write (cbuf, '(i4.4)') icase
+      if (len(label) > 0) then
+        write (output_unit, '(a)') path // ': case ' // trim(cbuf) // ' (' // label // '): ' // &
+          hist%status
+      else
+        write (output_unit, '(a)') path // ': case ' // trim(cbuf) // ': ' // hist%status
+      end if
+      if (hist%status /= 'completed') rc = max(rc, 2)
+    end do
+    call output_close(out, stat, message)
+    if (stat /= 0) then
+      write (error_unit, '(a)') 'interlock-history: error: ' // path // ': ' // trim(message)
+      rc = max(rc, 1)
+      return
+    end if
+    write (output_unit, '(a)') path // ' -> ' // final_name
+  end subroutine run_deck
+
+  function argument(k) result(text)
+    integer, intent(in) :: k
+    character(len=:), allocatable :: text
+    integer :: length
+    call get_command_argument(k, length=length)
+    allocate (character(len=length) :: text)
+    if (length > 0) call get_command_argument(k, text)
+  end function argument
+
+  function command_line() result(text)
+    character(len=:), allocatable :: text
+    integer :: length
+    call get_command(length=length)
+    allocate (character(len=length) :: text)
+    if (length > 0) call get_command(text)
+  end function command_line
+
+  subroutine usage(unit)
+    integer, intent(in) :: unit
+    write (unit, '(a)') 'usage: interlock-history [--output-dir DIR] DECK.nml [DECK.nml ...]', &
+      '  Runs each deck (docs/deck-format.md) and writes one HDF5 file per deck', &
+      '  (docs/history-output.md): the &output file, or the deck''s name with .h5 in the', &
+      '  working folder; --output-dir DIR puts the files in DIR.', &
+      '  Exit status: 0 all cases completed; 1 a deck was rejected or a file could not be', &
+      '  written; 2 files written but some case stopped early (see its status attribute).'
+  end subroutine usage
+
+  subroutine finish(code)
+    integer, intent(in) :: code
+    flush (output_unit)
+    flush (error_unit)
+    call c_exit(int(code, c_int))
+  end subroutine finish
+
+end program interlock_history

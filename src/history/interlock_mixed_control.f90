@@ -1,0 +1,445 @@
+!> Mixed control of one material point: each component of the relative displacement is either
+!> prescribed (separation-driven) or solved for so that the matching traction takes a prescribed
+!> value (traction-driven). One component: a scalar Newton iteration on the consistent tangent,
+!> safeguarded by a bracket (bisection fallback) and a bounded bracket search. Two components:
+!> Newton on the 2x2 tangent (LAPACK dgesv) with a backtracking line search. Every step is solved
+!> from the state at the start of the step (the state is never updated during the iterations);
+!> a step that cannot be solved is cut in halves (and regrown after successes), a bounded number
+!> of times. A history is a sequence of such steps along a piecewise-linear loading path.
+module interlock_mixed_control
+  use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
+      interlock_info_t, interlock_update, status_ok, format_real, is_nan_value
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  implicit none
+  private
+  public :: control_t, history_t, solve_step, run_history, component_names
+
+  character(len=10), parameter :: component_names(2) = [character(len=10) :: 'normal', 'tangential']
+  character(len=7), parameter :: traction_names(2) = [character(len=7) :: 'sigma_N', 'sigma_T']
+  character(len=3), parameter :: separation_names(2) = [character(len=3) :: 's_N', 's_T']
+
+  !> How the components are driven and how hard the solver may try.
+  type :: control_t
+    logical  :: traction(2) = [.true., .false.]  !< .true.: traction-driven component
+    real(dp) :: tol = 1.0e-12_dp                 !< relative residual on the driven tractions
+    integer  :: max_iterations = 50              !< Newton iterations per solve (bracket search included)
+    integer  :: max_cuts = 30                    !< a step may be cut down to 2**(-max_cuts) of itself
+  end type control_t
+
+  !> The computed history of one case: one row per load step (row 1 = after the first step).
+  type :: history_t
+    integer :: n_rows = 0
+    integer :: n_planes = 0
+    character(len=:), allocatable :: status       !< 'completed' or why the case stopped
+    real(dp), allocatable :: time(:)
+    real(dp), allocatable :: separation(:, :), traction(:, :)         ! (2, n)
+    real(dp), allocatable :: damage(:, :), beta(:, :), frictional_slip(:, :), zeta(:, :), &
+                             theta(:, :), friction_traction(:, :)     ! (n_planes, n)
+    real(dp), allocatable :: work(:), stored(:), diss_damage(:), diss_friction(:)
+    integer, allocatable :: iterations(:), substeps(:)
+  end type history_t
+
+  interface
+    !> LAPACK: solve A X = B by LU with partial pivoting.
+    subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
+      import :: dp
+      integer, intent(in) :: n, nrhs, lda, ldb
+      real(dp), intent(inout) :: a(lda, *), b(ldb, *)
+      integer, intent(out) :: ipiv(*), info
+    end subroutine dgesv
+  end interface
+
+contains
+
+  !> Run a whole history: the path goes through the points (times(i), values(:, i)) in
+  !> `steps(i)` uniform steps per segment, each component's value being a separation [mm] or a
+  !> traction [MPa] as `ctl%traction` says. The history stops early when a step cannot be solved.
+  subroutine run_history(mat, solver, ctl, times, values, steps, initial, hist)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    type(control_t), intent(in) :: ctl
+    real(dp), intent(in) :: times(:), values(:, :)
+    integer, intent(in) :: steps(:)
+    type(interlock_state_t), intent(in) :: initial
+    type(history_t), intent(out) :: hist
+    type(interlock_state_t) :: old, new
+    real(dp) :: t_start(2), t_end(2), sigma(2), time
+    integer :: n_total, iseg, j, row, np, iterations, substeps, stat
+    character(len=512) :: message
+
+    np = mat%n_planes
+    n_total = sum(steps)
+    hist%n_planes = np
+    allocate (hist%time(n_total), hist%separation(2, n_total), hist%traction(2, n_total), &
+              hist%damage(np, n_total), hist%beta(np, n_total), hist%frictional_slip(np, n_total), &
+              hist%zeta(np, n_total), hist%theta(np, n_total), hist%friction_traction(np, n_total), &
+              hist%work(n_total), hist%stored(n_total), hist%diss_damage(n_total), &
+              hist%diss_friction(n_total), hist%iterations(n_total), hist%substeps(n_total))
+    hist%status = 'completed'
+    old = initial
+    row = 0
+    t_end = values(:, 1)
+    do iseg = 1, size(steps)
+      do j = 1, steps(iseg)
+        t_start = t_end
+        if (j == steps(iseg)) then
+          t_end = values(:, iseg + 1)
+          time = times(iseg + 1)
+        else
+          t_end = values(:, iseg) + (values(:, iseg + 1) - values(:, iseg)) * &
+                  (real(j, dp) / real(steps(iseg), dp))
+          time = times(iseg) + (times(iseg + 1) - times(iseg)) * (real(j, dp) / real(steps(iseg), dp))
+        end if
+        call solve_step(mat, solver, ctl, old, t_start, t_end, new, sigma, iterations, substeps, &
+                        stat, message)
+        if (stat /= status_ok) then
+          hist%status = 'stopped at step ' // int_text(row + 1) // ' (time ' // &
+                        format_real(time) // '): ' // trim(message)
+          hist%n_rows = row
+          return
+        end if
+        row = row + 1
+        hist%time(row) = time
+        hist%separation(:, row) = new%s
+        hist%traction(:, row) = sigma
+        hist%damage(:, row) = new%damage(1:np)
+        hist%beta(:, row) = new%beta(1:np)
+        hist%frictional_slip(:, row) = new%sf(1:np)
+        hist%zeta(:, row) = new%zeta(1:np)
+        hist%theta(:, row) = new%theta(1:np)
+        hist%friction_traction(:, row) = new%tauf(1:np)
+        hist%work(row) = new%work
+        hist%stored(row) = new%stored
+        hist%diss_damage(row) = new%diss_damage
+        hist%diss_friction(row) = new%diss_friction
+        hist%iterations(row) = iterations
+        hist%substeps(row) = substeps
+        old = new
+      end do
+    end do
+    hist%n_rows = row
+  end subroutine run_history
+
+  !> One load step from `old`: the driven values go linearly from `target_start` to
+  !> `target_end`. On failure the step is cut in halves (at most ctl%max_cuts times in a row),
+  !> and the sub-step grows again (doubles) after each success. `iterations` counts the Newton
+  !> iterations of all attempts; `substeps` the library's sub-increments of the accepted updates
+  !> (1 per accepted sub-step without substepping). stat /= status_ok: `message` says why.
+  subroutine solve_step(mat, solver, ctl, old, target_start, target_end, new, sigma, iterations, &
+                        substeps, stat, message)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    type(control_t), intent(in) :: ctl
+    type(interlock_state_t), intent(in) :: old
+    real(dp), intent(in) :: target_start(2), target_end(2)
+    type(interlock_state_t), intent(out) :: new
+    real(dp), intent(out) :: sigma(2)
+    integer, intent(out) :: iterations, substeps, stat
+    character(len=*), intent(out) :: message
+    type(interlock_state_t) :: cur, trial
+    real(dp) :: f, h, f_next, target(2), h_min
+    integer :: it, lsub, attempts, max_attempts
+    logical :: ok
+
+    cur = old
+    f = 0.0_dp
+    h = 1.0_dp
+    h_min = 0.5_dp**ctl%max_cuts
+    iterations = 0
+    substeps = 0
+    attempts = 0
+    ! Each cut halves h; each success can double it: bounded by the cut depth times the halvings.
+    max_attempts = 4 * (ctl%max_cuts + 1) * (ctl%max_cuts + 2)
+    stat = status_ok
+    message = ''
+    sigma = old%sigma
+    do while (f < 1.0_dp)
+      attempts = attempts + 1
+      if (attempts > max_attempts) then
+        stat = 2
+        message = 'the step needed more than ' // int_text(max_attempts) // ' attempts'
+        exit
+      end if
+      f_next = min(1.0_dp, f + h)
+      if (f_next >= 1.0_dp) then
+        target = target_end
+      else
+        target = target_start + f_next * (target_end - target_start)
+      end if
+      call solve_point(mat, solver, ctl, cur, target, trial, sigma, it, lsub, ok, message)
+      iterations = iterations + it
+      if (ok) then
+        cur = trial
+        f = f_next
+        substeps = substeps + lsub
+        h = min(2.0_dp * h, 1.0_dp)
+      else
+        h = 0.5_dp * h
+        if (h < h_min) then
+          stat = 2
+          message = trim(message) // ' (after cutting the step ' // int_text(ctl%max_cuts) // &
+                    ' times)'
+          exit
+        end if
+      end if
+    end do
+    if (stat == status_ok) then
+      new = cur
+      sigma = cur%sigma
+    else
+      new = old
+      sigma = old%sigma
+    end if
+  end subroutine solve_step
+
+  !> Find s such that the driven components of the traction take `target` (the others are
+  !> prescribed separations), from the state `old`, starting from s = old%s.
+  subroutine solve_point(mat, solver, ctl, old, target, new, sigma, iterations, substeps, ok, reason)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    type(control_t), intent(in) :: ctl
+    type(interlock_state_t), intent(in) :: old
+    real(dp), intent(in) :: target(2)
+    type(interlock_state_t), intent(out) :: new
+    real(dp), intent(out) :: sigma(2)
+    integer, intent(out) :: iterations, substeps
+    logical, intent(out) :: ok
+    character(len=*), intent(out) :: reason
+    real(dp) :: s(2), tangent(2, 2)
+    type(interlock_info_t) :: info
+    integer :: i
+
+    s = old%s
+    do i = 1, 2
+      if (.not. ctl%traction(i)) s(i) = target(i)
+    end do
+    iterations = 0
+    substeps = 0
+    reason = ''
+    if (ctl%traction(1) .and. ctl%traction(2)) then
+      call newton_2d(mat, solver, ctl, old, target, s, new, sigma, iterations, info, ok, reason)
+    else if (ctl%traction(1)) then
+      call newton_1d(mat, solver, ctl, 1, old, target(1), s, new, sigma, iterations, info, ok, reason)
+    else if (ctl%traction(2)) then
+      call newton_1d(mat, solver, ctl, 2, old, target(2), s, new, sigma, iterations, info, ok, reason)
+    else
+      call interlock_update(mat, solver, s, old, new, sigma, tangent, info)
+      ok = info%status == status_ok
+      if (.not. ok) reason = info%message
+    end if
+    if (ok) substeps = info%substeps
+  end subroutine solve_point
+
+  !> The traction scale of the residual test: the driven value, or the interface strength.
+  pure real(dp) function residual_scale(mat, i, target)
+    type(interlock_material_t), intent(in) :: mat
+    integer, intent(in) :: i
+    real(dp), intent(in) :: target
+    residual_scale = max(abs(target), merge(mat%sigma0_n, mat%sigma0_t, i == 1))
+  end function residual_scale
+
+  !> Scalar safeguarded Newton on s(i): residual r(x) = sigma_i(x) - target. Until a sign change
+  !> is found the search follows Newton when it points the way an increasing traction needs, and
+  !> otherwise steps (doubling) in that direction; once bracketed, Newton steps that leave the
+  !> bracket or do not halve the residual are replaced by bisection.
+  subroutine newton_1d(mat, solver, ctl, i, old, target, s, new, sigma, iterations, info, ok, reason)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    type(control_t), intent(in) :: ctl
+    integer, intent(in) :: i
+    type(interlock_state_t), intent(in) :: old
+    real(dp), intent(in) :: target
+    real(dp), intent(inout) :: s(2)
+    type(interlock_state_t), intent(out) :: new
+    real(dp), intent(out) :: sigma(2)
+    integer, intent(out) :: iterations
+    type(interlock_info_t), intent(out) :: info
+    logical, intent(out) :: ok
+    character(len=*), intent(out) :: reason
+    real(dp) :: tangent(2, 2), r, d, x, x_new, x_lo, x_hi, r_prev, step, ftol, xscale, r_min, r_max
+    logical :: have_lo, have_hi, bisect
+
+    ok = .false.
+    reason = ''
+    iterations = 0
+    ftol = ctl%tol * residual_scale(mat, i, target)
+    xscale = merge(mat%s0n, mat%s0t, i == 1)
+    step = xscale
+    have_lo = .false.
+    have_hi = .false.
+    x_lo = 0.0_dp
+    x_hi = 0.0_dp
+    r_prev = huge(1.0_dp)
+    r_min = huge(1.0_dp)
+    r_max = -huge(1.0_dp)
+    x = s(i)
+    do
+      s(i) = x
+      call interlock_update(mat, solver, s, old, new, sigma, tangent, info)
+      if (info%status /= status_ok) then
+        reason = info%message
+        return
+      end if
+      r = sigma(i) - target
+      r_min = min(r_min, r)
+      r_max = max(r_max, r)
+      if (abs(r) <= ftol) then
+        ok = .true.
+        return
+      end if
+      if (iterations >= ctl%max_iterations) exit
+      iterations = iterations + 1
+      ! Keep the bracket: x_lo has r < 0, x_hi has r > 0.
+      if (r < 0.0_dp) then
+        x_lo = x
+        have_lo = .true.
+      else
+        x_hi = x
+        have_hi = .true.
+      end if
+      d = tangent(i, i)
+      bisect = .false.
+      if (have_lo .and. have_hi) then
+        if (abs(x_hi - x_lo) <= 4.0_dp * epsilon(1.0_dp) * max(abs(x_lo), abs(x_hi)) + &
+            tiny(1.0_dp)) then
+          reason = 'the ' // trim(traction_names(i)) // ' jumps across the prescribed value ' // &
+                   format_real(target) // ' MPa at ' // trim(separation_names(i)) // ' = ' // &
+                   format_real(x) // ' mm: no solution'
+          return
+        end if
+        if (abs(d) > 0.0_dp .and. ieee_is_finite(d)) then
+          x_new = x - r / d
+          bisect = .not. (x_new > min(x_lo, x_hi) .and. x_new < max(x_lo, x_hi)) .or. &
+                   abs(r) > 0.5_dp * r_prev
+        else
+          bisect = .true.
+        end if
+        if (bisect) x_new = 0.5_dp * (x_lo + x_hi)
+      else
+        ! No sign change yet: an increasing traction needs x to go down when r > 0.
+        if (d > 0.0_dp .and. ieee_is_finite(d)) then
+          x_new = x - r / d
+        else
+          x_new = x - sign(step, r)
+          step = 2.0_dp * step
+        end if
+        if (.not. ieee_is_finite(x_new)) exit
+      end if
+      r_prev = abs(r)
+      x = x_new
+    end do
+    ! No root within the iteration budget.
+    if (.not. (have_lo .and. have_hi)) then
+      reason = 'no ' // trim(separation_names(i)) // ' carries ' // trim(traction_names(i)) // &
+               ' = ' // format_real(target) // ' MPa (the ' // trim(traction_names(i)) // &
+               ' found ranges from ' // format_real(r_min + target) // ' to ' // &
+               format_real(r_max + target) // ' MPa)'
+      if (mat%use_depth .and. s(1) >= mat%h_n .and. i == 2) then
+        reason = trim(reason) // ': the interface has separated (s_N = ' // format_real(s(1)) // &
+                 ' >= H_N = ' // format_real(mat%h_n) // ' mm) and transmits no traction'
+      end if
+    else
+      reason = 'the ' // trim(traction_names(i)) // ' Newton iteration did not converge in ' // &
+               int_text(ctl%max_iterations) // ' iterations'
+    end if
+  end subroutine newton_1d
+
+  !> Both components traction-driven: Newton on the 2x2 tangent (LAPACK dgesv) with a
+  !> backtracking line search on the scaled residual.
+  subroutine newton_2d(mat, solver, ctl, old, target, s, new, sigma, iterations, info, ok, reason)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    type(control_t), intent(in) :: ctl
+    type(interlock_state_t), intent(in) :: old
+    real(dp), intent(in) :: target(2)
+    real(dp), intent(inout) :: s(2)
+    type(interlock_state_t), intent(out) :: new
+    real(dp), intent(out) :: sigma(2)
+    integer, intent(out) :: iterations
+    type(interlock_info_t), intent(out) :: info
+    logical, intent(out) :: ok
+    character(len=*), intent(out) :: reason
+    real(dp) :: tangent(2, 2), a(2, 2), b(2, 1), r(2), scale(2), norm, norm_trial, lambda, &
+                s_trial(2), sigma_trial(2), tangent_trial(2, 2)
+    type(interlock_state_t) :: trial
+    type(interlock_info_t) :: info_trial
+    integer :: ipiv(2), lapack_info, k, attempt
+    logical :: descent
+
+    ok = .false.
+    reason = ''
+    iterations = 0
+    scale = [residual_scale(mat, 1, target(1)), residual_scale(mat, 2, target(2))]
+    call interlock_update(mat, solver, s, old, new, sigma, tangent, info)
+    if (info%status /= status_ok) then
+      reason = info%message
+      return
+    end if
+    r = sigma - target
+    norm = maxval(abs(r) / scale)
+    do
+      if (norm <= ctl%tol) then
+        ok = .true.
+        return
+      end if
+      if (iterations >= ctl%max_iterations) then
+        reason = 'the (sigma_N, sigma_T) Newton iteration did not converge in ' // &
+                 int_text(ctl%max_iterations) // ' iterations'
+        return
+      end if
+      iterations = iterations + 1
+      ! The consistent tangent first; where it is singular (a kink, an open damaged plane) or
+      ! gives no descent, the elastic (penalty) stiffness diag(K_n, K_t), which is never singular.
+      descent = .false.
+      do attempt = 1, 2
+        if (attempt == 1) then
+          a = tangent
+        else
+          a = reshape([mat%kn, 0.0_dp, 0.0_dp, mat%kt], [2, 2])
+        end if
+        b(:, 1) = -r
+        call dgesv(2, 1, a, 2, ipiv, b, 2, lapack_info)
+        if (lapack_info /= 0 .or. .not. all(ieee_is_finite(b(:, 1)))) cycle
+        lambda = 1.0_dp
+        do k = 1, 30
+          s_trial = s + lambda * b(:, 1)
+          call interlock_update(mat, solver, s_trial, old, trial, sigma_trial, tangent_trial, &
+                                info_trial)
+          if (info_trial%status == status_ok) then
+            norm_trial = maxval(abs(sigma_trial - target) / scale)
+            if (.not. is_nan_value(norm_trial)) then
+              if (norm_trial <= (1.0_dp - 1.0e-4_dp * lambda) * norm) then
+                descent = .true.
+                exit
+              end if
+            end if
+          end if
+          lambda = 0.5_dp * lambda
+        end do
+        if (descent) exit
+      end do
+      if (.not. descent) then
+        reason = 'no (s_N, s_T) near (' // format_real(s(1)) // ', ' // format_real(s(2)) // &
+                 ') mm reduces the residual of (sigma_N, sigma_T) = (' // format_real(target(1)) // &
+                 ', ' // format_real(target(2)) // ') MPa: no solution'
+        return
+      end if
+      s = s_trial
+      new = trial
+      sigma = sigma_trial
+      tangent = tangent_trial
+      info = info_trial
+      r = sigma - target
+      norm = norm_trial
+    end do
+  end subroutine newton_2d
+
+  pure function int_text(i) result(text)
+    integer, intent(in) :: i
+    character(len=:), allocatable :: text
+    character(len=16) :: buf
+    write (buf, '(i0)') i
+    text = trim(buf)
+  end function int_text
+
+end module interlock_mixed_control

@@ -1,0 +1,285 @@
+!> interlock-query: what the material table says, for people and scripts (in the spirit of
+!> mfront-query). Every table is generated from src/interlock_material_table.f90;
+!> docs/material.md is the output of `interlock-query --markdown`.
+program interlock_query
+  use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+  use interlock, only: properties, statevars, n_properties, n_required_properties, &
+      n_statevars_per_plane, n_statevars_global, umat_planes, umat_nstatv, statevar_index, &
+      format_range, format_real, property_t, statevar_t, kind_real, kind_flag, kind_choice, &
+      interlock_version_string
+  implicit none
+  character(len=64) :: arg
+  integer :: iarg, n
+
+  n = command_argument_count()
+  if (n == 0) then
+    call usage(error_unit)
+    error stop 2
+  end if
+  do iarg = 1, n
+    call get_command_argument(iarg, arg)
+    select case (trim(arg))
+    case ('--help', '-h')
+      call usage(output_unit)
+    case ('--version')
+      write (output_unit, '(a)') 'interlock-query ' // interlock_version_string
+    case ('--properties')
+      call print_properties()
+    case ('--state-variables')
+      call print_state_variables()
+    case ('--props')
+      call print_props()
+    case ('--statev')
+      call print_statev()
+    case ('--markdown')
+      call print_markdown()
+    case default
+      write (error_unit, '(a)') "interlock-query: unknown option '" // trim(arg) // &
+        "' (see interlock-query --help)"
+      error stop 2
+    end select
+  end do
+
+contains
+
+  subroutine usage(unit)
+    integer, intent(in) :: unit
+    write (unit, '(a)') &
+      'usage: interlock-query OPTION...', &
+      '  The material description of interlock ' // interlock_version_string // &
+      ', generated from its material table.', &
+      '  --properties       every material property: name, symbol, unit, group, kind, default,', &
+      '                     admissible range, description', &
+      '  --state-variables  every state variable: name, unit, per plane or not, description', &
+      '  --props            the UMAT PROPS layout: index, name, unit, default, range, description', &
+      '  --statev           the UMAT STATEV layout: index, name, plane, unit, description', &
+      '  --markdown         the whole reference page (docs/material.md)', &
+      '  --version          the library version', &
+      '  --help             this text'
+  end subroutine usage
+
+  !> Text padded (or cut) to width w.
+  pure function pad(text, w) result(out)
+    character(len=*), intent(in) :: text
+    integer, intent(in) :: w
+    character(len=w) :: out
+    out = text
+  end function pad
+
+  pure function itoa(i) result(text)
+    integer, intent(in) :: i
+    character(len=:), allocatable :: text
+    character(len=16) :: b
+    write (b, '(i0)') i
+    text = trim(b)
+  end function itoa
+
+  pure function default_text(i) result(text)
+    integer, intent(in) :: i
+    character(len=:), allocatable :: text
+    if (properties(i)%required) then
+      text = 'required'
+    else
+      text = format_real(properties(i)%default)
+    end if
+  end function default_text
+
+  pure function kind_text(i) result(text)
+    integer, intent(in) :: i
+    character(len=:), allocatable :: text
+    select case (properties(i)%kind)
+    case (kind_real)
+      text = 'real'
+    case (kind_flag)
+      text = 'flag'
+    case (kind_choice)
+      text = 'choice'
+    case default
+      text = '?'
+    end select
+  end function kind_text
+
+  pure function plane_text(k) result(text)
+    integer, intent(in) :: k
+    character(len=:), allocatable :: text
+    select case (k)
+    case (1)
+      text = '1 (-theta_0)'
+    case (2)
+      text = '2 (flat)'
+    case (3)
+      text = '3 (+theta_0)'
+    case default
+      text = itoa(k)
+    end select
+  end function plane_text
+
+  pure function plane_column(per_plane, k) result(text)
+    logical, intent(in) :: per_plane
+    integer, intent(in) :: k
+    character(len=:), allocatable :: text
+    if (per_plane) then
+      text = plane_text(k)
+    else
+      text = '-'
+    end if
+  end function plane_column
+
+  subroutine print_properties()
+    integer :: i
+    type(property_t) :: p
+    write (output_unit, '(a)') pad('name', 25) // pad('symbol', 12) // pad('unit', 6) // &
+      pad('group', 12) // pad('kind', 7) // pad('default', 10) // pad('admissible', 58) // &
+      'description'
+    do i = 1, n_properties
+      p = properties(i)
+      write (output_unit, '(a)') pad(p%name, 25) // pad(p%symbol, 12) // pad(p%unit, 6) // &
+        pad(p%group, 12) // pad(kind_text(i), 7) // pad(default_text(i), 10) // &
+        pad(format_range(i), 58) // trim(p%description)
+    end do
+  end subroutine print_properties
+
+  subroutine print_props()
+    integer :: i
+    type(property_t) :: p
+    write (output_unit, '(a)') pad('PROPS', 6) // pad('name', 25) // pad('unit', 6) // &
+      pad('default', 10) // pad('admissible', 58) // 'description'
+    do i = 1, n_properties
+      p = properties(i)
+      write (output_unit, '(a)') pad(itoa(i), 6) // pad(p%name, 25) // pad(p%unit, 6) // &
+        pad(default_text(i), 10) // pad(format_range(i), 58) // trim(p%description)
+    end do
+    write (output_unit, '(a)') 'NPROPS from ' // itoa(n_required_properties) // ' to ' // &
+      itoa(n_properties) // '; properties after NPROPS take their defaults.'
+  end subroutine print_props
+
+  subroutine print_state_variables()
+    integer :: i
+    type(statevar_t) :: v
+    write (output_unit, '(a)') pad('name', 25) // pad('unit', 6) // pad('per plane', 11) // &
+      'description'
+    do i = 1, size(statevars)
+      v = statevars(i)
+      write (output_unit, '(a)') pad(v%name, 25) // pad(v%unit, 6) // &
+        pad(merge('yes', 'no ', v%per_plane), 11) // trim(v%description)
+    end do
+  end subroutine print_state_variables
+
+  subroutine print_statev()
+    integer :: i, k, slot
+    type(statevar_t) :: v
+    write (output_unit, '(a)') pad('STATEV', 8) // pad('name', 25) // pad('plane', 14) // &
+      pad('unit', 6) // 'description'
+    do slot = 1, umat_nstatv
+      call locate(slot, i, k)
+      v = statevars(i)
+      write (output_unit, '(a)') pad(itoa(slot), 8) // pad(v%name, 25) // &
+        pad(plane_column(v%per_plane, k), 14) // pad(v%unit, 6) // &
+        trim(v%description)
+    end do
+    write (output_unit, '(a)') 'NSTATV >= ' // itoa(umat_nstatv) // ' (*DEPVAR ' // &
+      itoa(umat_nstatv) // '); all zero before the first increment.'
+  end subroutine print_statev
+
+  !> Which state variable (ivar) and plane (k, 0 for global ones) STATEV(slot) holds.
+  subroutine locate(slot, ivar, k)
+    integer, intent(in) :: slot
+    integer, intent(out) :: ivar, k
+    integer :: j, m
+    do j = 1, n_statevars_per_plane + n_statevars_global
+      do m = 0, umat_planes
+        if (statevars(j)%per_plane .neqv. (m > 0)) cycle
+        if (statevar_index(j, m) == slot) then
+          ivar = j
+          k = m
+          return
+        end if
+      end do
+    end do
+    ivar = 1
+    k = 0
+    write (error_unit, '(a)') 'interlock-query: STATEV(' // itoa(slot) // ') is not in the table'
+    error stop 3
+  end subroutine locate
+
+  subroutine print_markdown()
+    integer :: i, k, slot
+    type(property_t) :: p
+    type(statevar_t) :: v
+    write (output_unit, '(a)') &
+      '# interlock: material properties and state variables', &
+      '', &
+      '<!-- Generated by `interlock-query --markdown` from src/interlock_material_table.f90.', &
+      '     Do not edit: refresh with `interlock-query --markdown > docs/material.md`. -->', &
+      '', &
+      'Units: mm, N, MPa, N/mm. Component 1 is normal, 2 tangential. A property that admits', &
+      'infinity takes any value >= 1e30 (or +Inf) to switch its effect off.', &
+      '', &
+      '## Properties', &
+      '', &
+      '| name | symbol | unit | group | kind | default | admissible | description |', &
+      '|---|---|---|---|---|---|---|---|'
+    do i = 1, n_properties
+      p = properties(i)
+      write (output_unit, '(a)') '| `' // trim(p%name) // '` | ' // trim(p%symbol) // ' | ' // &
+        trim(p%unit) // ' | ' // trim(p%group) // ' | ' // kind_text(i) // ' | ' // &
+        default_text(i) // ' | ' // format_range(i) // ' | ' // trim(p%description) // ' |'
+    end do
+    write (output_unit, '(a)') &
+      '', &
+      '## State variables', &
+      '', &
+      '| name | unit | per plane | description |', &
+      '|---|---|---|---|'
+    do i = 1, size(statevars)
+      v = statevars(i)
+      write (output_unit, '(a)') '| `' // trim(v%name) // '` | ' // trim(v%unit) // ' | ' // &
+        trim(merge('yes', 'no ', v%per_plane)) // ' | ' // trim(v%description) // ' |'
+    end do
+    write (output_unit, '(a)') &
+      '', &
+      '## UMAT', &
+      '', &
+      'The UMAT (`umat/interlock_umat.f90`, library `interlock::interlock_umat`, or the single', &
+      'file `interlock_umat_bundle.f90`) is for 2D cohesive elements: NTENS = 2 (1 normal,', &
+      '2 shear), STRAN/DSTRAN are separations (constitutive thickness 1), the three-plane RIA', &
+      'of the paper (planes -theta_0, 0, +theta_0 with area fraction 1/3 each). DDSDDE is not', &
+      'symmetric once friction or wear acts: declare `*USER MATERIAL, UNSYMM`. SSE is the', &
+      'stored energy, SCD the total dissipation (damage + friction), SPD = 0. PNEWDT is only', &
+      'lowered: -1 on bad input (with a one-line message naming element and point), 0.5 on a', &
+      'local integration failure, and the first-order fraction of the increment (clamped to', &
+      '[0.1, 1]) that keeps the damage and angle increments within `max_damage_increment` and', &
+      '`max_angle_increment_deg`.', &
+      '', &
+      '### PROPS', &
+      '', &
+      'NPROPS from ' // itoa(n_required_properties) // ' to ' // itoa(n_properties) // &
+      '; properties after NPROPS take their defaults.', &
+      '', &
+      '| PROPS | name | unit | default | admissible | description |', &
+      '|---|---|---|---|---|---|'
+    do i = 1, n_properties
+      p = properties(i)
+      write (output_unit, '(a)') '| ' // itoa(i) // ' | `' // trim(p%name) // '` | ' // &
+        trim(p%unit) // ' | ' // default_text(i) // ' | ' // format_range(i) // ' | ' // &
+        trim(p%description) // ' |'
+    end do
+    write (output_unit, '(a)') &
+      '', &
+      '### STATEV', &
+      '', &
+      'NSTATV >= ' // itoa(umat_nstatv) // ' (`*DEPVAR` ' // itoa(umat_nstatv) // &
+      '); all zero before the first increment.', &
+      '', &
+      '| STATEV | name | plane | unit | description |', &
+      '|---|---|---|---|---|'
+    do slot = 1, umat_nstatv
+      call locate(slot, i, k)
+      v = statevars(i)
+      write (output_unit, '(a)') '| ' // itoa(slot) // ' | `' // trim(v%name) // '` | ' // &
+        plane_column(v%per_plane, k) // ' | ' // trim(v%unit) // &
+        ' | ' // trim(v%description) // ' |'
+    end do
+  end subroutine print_markdown
+
+end program interlock_query

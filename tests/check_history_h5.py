@@ -1,0 +1,126 @@
+#!/usr/bin/python3
+"""Check the layout of HDF5 files written by interlock-history (docs/history-output.md).
+
+usage: check_history_h5.py [--allow-stopped] FILE.h5 [...]
+Exit status 0 when every file follows the contract; the failures are printed otherwise.
+"""
+import sys
+
+import h5py
+import numpy as np
+
+FILE_ATTRS = ["program", "version", "command_line", "deck", "deck_file", "title", "n_cases",
+              "sweep_parameter"]
+CASE_TEXT_ATTRS = ["status", "label", "sweep_parameter", "effects", "scheme", "normal_control",
+                   "tangential_control"]
+PROPERTIES = {"sigma0_n": "MPa", "sigma0_t": "MPa", "gc": "N/mm", "eta": "-", "mu": "-",
+              "h_n": "mm", "theta0_deg": "deg", "thetaf_deg": "deg", "zeta0": "N/mm",
+              "prefractured": "-", "substep_tol": "-", "gamma_hat": "-"}
+EFFECTS = ["damage", "friction", "interlocking", "finite_depth", "wear"]
+# name -> (columns: None = (n), 2 = (n, 2), 'planes' = (n, n_planes), unit, integer?)
+DATASETS = {
+    "time": (None, "-", False), "separation": (2, "mm", False), "traction": (2, "MPa", False),
+    "damage": ("planes", "-", False), "beta": ("planes", "-", False),
+    "theta": ("planes", "rad", False), "zeta": ("planes", "N/mm", False),
+    "frictional_slip": ("planes", "mm", False), "friction_traction": ("planes", "MPa", False),
+    "work": (None, "N/mm", False), "stored_energy": (None, "N/mm", False),
+    "damage_dissipation": (None, "N/mm", False), "friction_dissipation": (None, "N/mm", False),
+    "iterations": (None, "-", True), "substeps": (None, "-", True),
+}
+
+
+def text(value):
+    return value.decode() if isinstance(value, (bytes, np.bytes_)) else str(value)
+
+
+def check_file(path, allow_stopped):
+    errors = []
+    with h5py.File(path, "r") as f:
+        for a in FILE_ATTRS:
+            if a not in f.attrs:
+                errors.append(f"file attribute '{a}' missing")
+        if text(f.attrs.get("program", "")) != "interlock-history":
+            errors.append("attribute program is not 'interlock-history'")
+        if len(text(f.attrs.get("deck", ""))) == 0:
+            errors.append("the deck's text is empty")
+        if "cases" not in f:
+            return errors + ["group /cases missing"]
+        names = sorted(f["cases"])
+        n_cases = int(f.attrs.get("n_cases", -1))
+        if names != [f"{i:04d}" for i in range(1, n_cases + 1)]:
+            errors.append(f"/cases holds {names}, expected 0001..{n_cases:04d}")
+        for name in names:
+            g = f["cases"][name]
+            where = f"/cases/{name}"
+            for a in CASE_TEXT_ATTRS:
+                if a not in g.attrs:
+                    errors.append(f"{where}: attribute '{a}' missing")
+            status = text(g.attrs.get("status", ""))
+            if status != "completed" and not allow_stopped:
+                errors.append(f"{where}: status is '{status}', not 'completed'")
+            for p, unit in PROPERTIES.items():
+                if p not in g.attrs:
+                    errors.append(f"{where}: property attribute '{p}' missing")
+                elif text(g.attrs.get(p + "_unit", "")) != unit:
+                    errors.append(f"{where}: '{p}_unit' is not '{unit}'")
+            for e in EFFECTS:
+                if "effect_" + e not in g.attrs:
+                    errors.append(f"{where}: attribute 'effect_{e}' missing")
+            if text(g.attrs.get("sweep_parameter", "")) and "sweep_value" not in g.attrs:
+                errors.append(f"{where}: a sweep without 'sweep_value'")
+            n_planes = int(g.attrs.get("n_planes", 0))
+            if not 1 <= n_planes <= 8:
+                errors.append(f"{where}: n_planes = {n_planes}")
+            n = int(g.attrs.get("n_rows", -1))
+            if status == "completed" and n != int(g.attrs.get("n_steps", -2)):
+                errors.append(f"{where}: completed with {n} rows for {g.attrs.get('n_steps')} steps")
+            for d, (cols, unit, integer) in DATASETS.items():
+                if d not in g:
+                    errors.append(f"{where}: dataset '{d}' missing")
+                    continue
+                ds = g[d]
+                shape = (n,) if cols is None else (n, 2 if cols == 2 else n_planes)
+                if ds.shape != shape:
+                    errors.append(f"{where}/{d}: shape {ds.shape}, expected {shape}")
+                if text(ds.attrs.get("unit", "")) != unit:
+                    errors.append(f"{where}/{d}: unit '{text(ds.attrs.get('unit', ''))}', expected '{unit}'")
+                if len(text(ds.attrs.get("description", ""))) < 10:
+                    errors.append(f"{where}/{d}: no description")
+                x = ds[()]
+                if integer != np.issubdtype(x.dtype, np.integer):
+                    errors.append(f"{where}/{d}: dtype {x.dtype}")
+                if not integer and not np.all(np.isfinite(x)):
+                    errors.append(f"{where}/{d}: holds NaN or Inf")
+            if errors:
+                continue
+            if n > 1 and not np.all(np.diff(g["time"][()]) > 0):
+                errors.append(f"{where}/time: not strictly increasing")
+            if n > 0 and (g["substeps"][()].min() < 1 or g["iterations"][()].min() < 0):
+                errors.append(f"{where}: substeps < 1 or iterations < 0")
+            dmg = g["damage"][()]
+            if n > 0 and (dmg.min() < 0 or dmg.max() > 1):
+                errors.append(f"{where}/damage: outside [0, 1]")
+    return errors
+
+
+def main(argv):
+    allow = "--allow-stopped" in argv
+    files = [a for a in argv if a != "--allow-stopped"]
+    if not files:
+        print(__doc__)
+        return 2
+    failed = 0
+    for path in files:
+        try:
+            errors = check_file(path, allow)
+        except (OSError, KeyError) as exc:
+            errors = [f"cannot read: {exc}"]
+        for e in errors:
+            print(f"{path}: {e}")
+        print(f"{path}: {'ok' if not errors else 'FAILED'}")
+        failed += bool(errors)
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

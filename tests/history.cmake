@@ -1,0 +1,46 @@
+# interlock-history (docs/history-output.md): every deck of inputs/ runs and its HDF5 file follows
+# the layout contract (fixture chain "program writes HDF5" -> "Python checks it"); the reference
+# curves of tests/data/reference are reproduced by both schemes; bad decks are rejected
+# (tests/data/bad_decks/NAME.nml + NAME.expected: add a pair, re-run cmake); the mixed-control
+# solver is unit-tested in Fortran.
+if(NOT TARGET interlock-history)
+  return()
+endif()
+set(INTERLOCK_HISTORY_PYTHON /usr/bin/python3)
+set(history_out ${CMAKE_CURRENT_BINARY_DIR}/history_out)
+file(MAKE_DIRECTORY ${history_out})
+
+file(GLOB history_decks CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/inputs/*.nml)
+foreach(deck IN LISTS history_decks)
+  get_filename_component(name ${deck} NAME_WE)
+  add_test(NAME history_run_${name}
+    COMMAND interlock-history --output-dir ${history_out} ${deck})
+  set_tests_properties(history_run_${name} PROPERTIES FIXTURES_SETUP history_${name}
+    LABELS history)
+  add_test(NAME history_check_${name}
+    COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_history_h5.py
+            ${history_out}/${name}.h5)
+  set_tests_properties(history_check_${name} PROPERTIES FIXTURES_REQUIRED history_${name}
+    LABELS history)
+endforeach()
+
+foreach(figure fig5 fig6 fig7 fig8 fig8_long fig9 fig10 fig11)
+  add_test(NAME history_reference_${figure}
+    COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_reference.py
+            $<TARGET_FILE:interlock-history> ${INTERLOCK_TEST_DATA}/reference
+            ${CMAKE_CURRENT_BINARY_DIR}/history_reference ${figure})
+  set_tests_properties(history_reference_${figure} PROPERTIES LABELS history)
+endforeach()
+
+file(GLOB history_bad_decks CONFIGURE_DEPENDS ${INTERLOCK_TEST_DATA}/bad_decks/*.nml)
+foreach(deck IN LISTS history_bad_decks)
+  get_filename_component(name ${deck} NAME_WE)
+  add_test(NAME history_bad_deck_${name}
+    COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_bad_decks.py
+            $<TARGET_FILE:interlock-history> ${deck})
+  set_tests_properties(history_bad_deck_${name} PROPERTIES LABELS history)
+endforeach()
+
+interlock_add_suite(test_history_mixed_control test_history_mixed_control.f90)
+target_link_libraries(test_history_mixed_control PRIVATE interlock_history_core)
+set_tests_properties(test_history_mixed_control PROPERTIES LABELS history)

@@ -1,0 +1,166 @@
+!> Unit tests of the mixed-control solver of interlock-history (src/history/
+!> interlock_mixed_control.f90) against closed forms of SPEC section 8 on a flat interface.
+module test_history_mixed_control_cases
+  use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
+      interlock_state_init, interlock_material_prepare, interlock_paper_ria, status_ok
+  use interlock_mixed_control, only: control_t, history_t, solve_step, run_history
+  use interlock_assert, only: assert_equal, assert_true
+  implicit none
+  private
+  public :: collect_history_mixed_control
+
+contains
+
+  subroutine collect_history_mixed_control()
+    use interlock_assert, only: run_case
+    call run_case('preload_normal_traction_closed_form', preload_normal_traction_closed_form)
+    call run_case('both_tractions_elastic_dgesv', both_tractions_elastic_dgesv)
+    call run_case('tangential_traction_below_friction_limit', tangential_traction_below_friction_limit)
+    call run_case('tangential_traction_above_friction_limit_fails', &
+                  tangential_traction_above_friction_limit_fails)
+    call run_case('separated_interface_stops_history', separated_interface_stops_history)
+  end subroutine collect_history_mixed_control
+
+  !> Table 1 parameters, a flat RIA (theta = 0): K_n = K_t = 150 MPa/mm.
+  subroutine flat_material(mat, h_n, prefractured)
+    type(interlock_material_t), intent(out) :: mat
+    real(dp), intent(in) :: h_n
+    logical, intent(in) :: prefractured
+    integer :: stat
+    character(len=256) :: message
+    mat%sigma0_n = 3.0_dp
+    mat%sigma0_t = 3.0_dp
+    mat%gc = 0.3_dp
+    mat%eta = 0.9_dp
+    mat%mu = 0.5_dp
+    mat%h_n = h_n
+    mat%prefractured = prefractured
+    call interlock_paper_ria(mat, 0.0_dp, 0.0_dp, huge(1.0_dp))
+    call interlock_material_prepare(mat, stat, message)
+    call assert_true(stat == status_ok, 'material prepared: ' // trim(message))
+  end subroutine flat_material
+
+  subroutine preload_normal_traction_closed_form()
+    type(interlock_material_t) :: mat
+    type(interlock_solver_t) :: solver
+    type(interlock_state_t) :: old, new
+    type(control_t) :: ctl
+    real(dp) :: sigma(2)
+    integer :: it, sub, stat
+    character(len=512) :: message
+    call flat_material(mat, huge(1.0_dp), .false.)
+    call interlock_state_init(mat, old)
+    ctl%traction = [.true., .false.]
+    call solve_step(mat, solver, ctl, old, [0.0_dp, 0.0_dp], [-0.2_dp, 0.0_dp], new, sigma, it, &
+                    sub, stat, message)
+    call assert_true(stat == status_ok, 'preload solved: ' // trim(message))
+    ! s_N = sigma_N / K_n with K_n = sigma0_n / ((1 - eta) 2 Gc / sigma0_n) = 150 MPa/mm.
+    call assert_equal(-0.2_dp / 150.0_dp, new%s(1), 1.0e-15_dp, 's_N = sigma_N / K_n')
+    call assert_equal(-0.2_dp, sigma(1), 3.0e-12_dp, 'sigma_N = target')
+    call assert_equal(0.0_dp, new%s(2), 0.0_dp, 's_T prescribed')
+    call assert_true(sub == 1, 'one sub-increment')
+    call assert_true(it >= 1 .and. it <= 3, 'Newton converges in at most 3 iterations (linear)')
+  end subroutine preload_normal_traction_closed_form
+
+  subroutine both_tractions_elastic_dgesv()
+    type(interlock_material_t) :: mat
+    type(interlock_solver_t) :: solver
+    type(interlock_state_t) :: old, new
+    type(control_t) :: ctl
+    real(dp) :: sigma(2)
+    integer :: it, sub, stat
+    character(len=512) :: message
+    call flat_material(mat, huge(1.0_dp), .false.)
+    call interlock_state_init(mat, old)
+    ctl%traction = [.true., .true.]
+    call solve_step(mat, solver, ctl, old, [0.0_dp, 0.0_dp], [-0.1_dp, 0.05_dp], new, sigma, it, &
+                    sub, stat, message)
+    call assert_true(stat == status_ok, 'both components solved: ' // trim(message))
+    call assert_equal(-0.1_dp / 150.0_dp, new%s(1), 1.0e-15_dp, 's_N = sigma_N / K_n')
+    call assert_equal(0.05_dp / 150.0_dp, new%s(2), 1.0e-15_dp, 's_T = sigma_T / K_t')
+    call assert_equal(0.0_dp, new%damage(1), 0.0_dp, 'still elastic')
+  end subroutine both_tractions_elastic_dgesv
+
+  !> Pre-fractured flat interface under p = 0.2 MPa: tau = min(K_t s_T, mu p) (SPEC 8).
+  subroutine tangential_traction_below_friction_limit()
+    type(interlock_material_t) :: mat
+    type(interlock_solver_t) :: solver
+    type(interlock_state_t) :: old, new
+    type(control_t) :: ctl
+    real(dp) :: sigma(2)
+    integer :: it, sub, stat
+    character(len=512) :: message
+    call flat_material(mat, huge(1.0_dp), .true.)
+    call interlock_state_init(mat, old)
+    ctl%traction = [.true., .true.]
+    call solve_step(mat, solver, ctl, old, [0.0_dp, 0.0_dp], [-0.2_dp, 0.05_dp], new, sigma, it, &
+                    sub, stat, message)
+    call assert_true(stat == status_ok, 'sticking solved: ' // trim(message))
+    call assert_equal(0.05_dp / 150.0_dp, new%s(2), 1.0e-14_dp, 'sticking: s_T = tau / K_t')
+    call assert_equal(-0.2_dp / 150.0_dp, new%s(1), 1.0e-14_dp, 's_N = -p / K_n')
+  end subroutine tangential_traction_below_friction_limit
+
+  subroutine tangential_traction_above_friction_limit_fails()
+    type(interlock_material_t) :: mat
+    type(interlock_solver_t) :: solver
+    type(interlock_state_t) :: old, new
+    type(control_t) :: ctl
+    real(dp) :: sigma(2)
+    integer :: it, sub, stat
+    character(len=512) :: message
+    call flat_material(mat, huge(1.0_dp), .true.)
+    call interlock_state_init(mat, old)
+    ctl%traction = [.false., .true.]
+    old%s = [-0.2_dp / 150.0_dp, 0.0_dp]
+    ! mu p = 0.1 MPa is the largest shear a sliding, fully damaged plane carries.
+    call solve_step(mat, solver, ctl, old, [old%s(1), 0.0_dp], [old%s(1), 0.15_dp], new, sigma, it, &
+                    sub, stat, message)
+    call assert_true(stat /= status_ok, 'no s_T carries sigma_T > mu p')
+    call assert_true(index(message, 'no s_T carries sigma_T') > 0, 'reason: ' // trim(message))
+    call assert_equal(old%s(2), new%s(2), 0.0_dp, 'the state is left as it was')
+  end subroutine tangential_traction_above_friction_limit_fails
+
+  !> A history that opens the interface while a shear traction is prescribed: an open, fully
+  !> damaged interface carries no shear, so the history stops; the rows computed before are kept
+  !> and the status says why.
+  subroutine separated_interface_stops_history()
+    type(interlock_material_t) :: mat
+    type(interlock_solver_t) :: solver
+    type(interlock_state_t) :: initial, old, new
+    type(control_t) :: ctl
+    type(history_t) :: hist
+    real(dp) :: sigma(2)
+    integer :: it, sub, stat
+    character(len=512) :: message
+    call flat_material(mat, 1.0_dp, .false.)
+    call interlock_state_init(mat, initial)
+    ctl%traction = [.false., .true.]
+    call run_history(mat, solver, ctl, [0.0_dp, 1.0_dp, 2.0_dp], &
+                     reshape([0.0_dp, 0.0_dp, -0.001_dp, 0.01_dp, 2.0_dp, 0.01_dp], [2, 3]), &
+                     [2, 2], initial, hist)
+    call assert_true(hist%n_rows == 2, 'two rows kept')
+    call assert_true(index(hist%status, 'stopped at step 3') == 1, 'status: ' // hist%status)
+    call assert_true(index(hist%status, 'no s_T carries sigma_T') > 0, 'reason: ' // hist%status)
+    call assert_equal(0.01_dp, hist%traction(2, 2), 1.0e-13_dp, 'row 2 carries sigma_T')
+    ! Beyond H_N the traction is identically 0: the reason names the separation (SPEC D7).
+    old = initial
+    call solve_step(mat, solver, ctl, old, [0.0_dp, 0.0_dp], [1.5_dp, 0.0_dp], new, sigma, it, &
+                    sub, stat, message)
+    call assert_true(stat == status_ok, 'zero shear beyond H_N: ' // trim(message))
+    call assert_equal(0.0_dp, sigma(1), 0.0_dp, 'nothing transmitted beyond H_N')
+    old = new
+    call solve_step(mat, solver, ctl, old, [1.5_dp, 0.0_dp], [1.5_dp, 0.01_dp], new, sigma, it, &
+                    sub, stat, message)
+    call assert_true(stat /= status_ok, 'no shear beyond H_N')
+    call assert_true(index(message, 'separated') > 0, 'reason: ' // trim(message))
+  end subroutine separated_interface_stops_history
+
+end module test_history_mixed_control_cases
+
+program test_history_mixed_control
+  use test_history_mixed_control_cases, only: collect_history_mixed_control
+  use interlock_assert, only: suite_summary
+  implicit none
+  call collect_history_mixed_control()
+  if (suite_summary('history_mixed_control') /= 0) error stop 1
+end program test_history_mixed_control

@@ -1,0 +1,21 @@
+# Install the build tree into a scratch prefix, then configure, build and run a consumer
+# project that finds the package with find_package(interlock REQUIRED).
+# cmake -DBUILD_DIR= -DCONFIG= -DPREFIX= -DCONSUMER_SOURCE= -DCONSUMER_BUILD= -DGENERATOR= -DFC=
+#       -P test_umat_install.cmake
+file(REMOVE_RECURSE ${PREFIX} ${CONSUMER_BUILD})
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message("$ ${ARGN}\n${out}${err}")
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "failed (${rc})")
+  endif()
+endfunction()
+if(NOT CONFIG)
+  set(CONFIG Release)
+endif()
+run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${PREFIX} --config ${CONFIG})
+run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE} -B ${CONSUMER_BUILD} -G ${GENERATOR}
+    -DCMAKE_BUILD_TYPE=${CONFIG} -DCMAKE_Fortran_COMPILER=${FC} -DCMAKE_PREFIX_PATH=${PREFIX})
+run(${CMAKE_COMMAND} --build ${CONSUMER_BUILD})
+run(${CONSUMER_BUILD}/consumer)
+run(${CONSUMER_BUILD}/consumer_umat)

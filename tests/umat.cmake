@@ -1,0 +1,81 @@
+# The UMAT area: the UMAT against the library (serial and threaded), bad input, PNEWDT,
+# the material table, the single-file bundle with a fixed-form legacy driver,
+# interlock-query and docs/material.md, and install + find_package from a consumer project.
+
+# --- The UMAT against the library; bad input; PNEWDT.
+interlock_add_suite(test_umat test_umat_interface.f90 test_umat.f90)
+target_link_libraries(test_umat PRIVATE interlock_umat)
+# The rejections must also be reported: one line each, naming element, point and the property.
+set_tests_properties(test_umat PROPERTIES
+  PASS_REGULAR_EXPRESSION "interlock UMAT: element 7, point 3 \\(material 'TEST', increment 1\\): PROPS\\(4\\): property 'eta' = 0 is inadmissible: admissible 0 < +eta < +1.*NPROPS = 8 is inadmissible.*NSTATV = 21 is inadmissible.*NTENS = 3 is inadmissible.*separation STRAN \\+ DSTRAN is not finite.*umat: [0-9]+ checks, 0 failed"
+  FAIL_REGULAR_EXPRESSION "FAIL|ERROR STOP")
+
+# --- The table tells the truth (defaults, PROPS slots, STATEV layout).
+interlock_add_suite(test_umat_table test_umat_table.f90)
+
+# --- Many threads at once give the serial numbers.
+find_package(OpenMP COMPONENTS Fortran)
+if(OpenMP_Fortran_FOUND)
+  interlock_add_suite(test_umat_omp test_umat_interface.f90 test_umat_omp.f90)
+  target_link_libraries(test_umat_omp PRIVATE interlock_umat OpenMP::OpenMP_Fortran)
+  set_tests_properties(test_umat_omp PROPERTIES ENVIRONMENT "OMP_THREAD_LIMIT=4")
+  # gfortran's -fcheck=recursion (part of -fcheck=all) keeps a static flag per procedure, so
+  # a Debug library aborts with "Recursive call to nonrecursive procedure" when two threads
+  # are inside it at once. Until the Debug flags say -fcheck=all,no-recursion, skip.
+  if(CMAKE_BUILD_TYPE STREQUAL "Debug" AND NOT INTERLOCK_FFLAGS MATCHES "no-recursion")
+    set_tests_properties(test_umat_omp PROPERTIES DISABLED TRUE)
+    message(STATUS "test_umat_omp disabled: Debug flags include -fcheck=recursion (not thread-safe)")
+  endif()
+endif()
+
+# --- The single-file bundle.
+if(TARGET interlock_umat_bundle)
+  # (a) built here with the project's flags, linked with the legacy driver and nothing else.
+  add_executable(test_umat_legacy_driver legacy_driver.f ${INTERLOCK_UMAT_BUNDLE})
+  add_dependencies(test_umat_legacy_driver interlock_umat_bundle)
+  set_target_properties(test_umat_legacy_driver PROPERTIES
+    Fortran_MODULE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/mod_test_umat_legacy_driver)
+  set_source_files_properties(${INTERLOCK_UMAT_BUNDLE} PROPERTIES
+    GENERATED TRUE COMPILE_OPTIONS "${INTERLOCK_FFLAGS}")
+  # F77-style host code: no -std=f2008 (old-style CHARACTER*80) and an implicit interface.
+  set_source_files_properties(legacy_driver.f PROPERTIES COMPILE_OPTIONS
+    "-Wall;-Wextra;$<$<CONFIG:Debug>:-fcheck=all;-ffpe-trap=invalid,zero,overflow;-finit-real=snan;-g>")
+  add_test(NAME test_umat_legacy_driver COMMAND test_umat_legacy_driver)
+  set_tests_properties(test_umat_legacy_driver PROPERTIES
+    PASS_REGULAR_EXPRESSION "legacy driver: all checks passed" FAIL_REGULAR_EXPRESSION "FAIL")
+  # (b) what a user does: gfortran on the bundle alone (warning-free, -Werror), then the driver.
+  add_test(NAME test_umat_bundle_standalone
+    COMMAND ${CMAKE_COMMAND}
+      -DFC=${CMAKE_Fortran_COMPILER} -DBUNDLE=${INTERLOCK_UMAT_BUNDLE}
+      -DDRIVER=${CMAKE_CURRENT_SOURCE_DIR}/legacy_driver.f
+      -DWORK=${CMAKE_CURRENT_BINARY_DIR}/bundle_standalone
+      -P ${CMAKE_CURRENT_SOURCE_DIR}/test_umat_bundle.cmake)
+  set_tests_properties(test_umat_bundle_standalone PROPERTIES TIMEOUT 120)
+endif()
+
+# --- interlock-query and docs/material.md.
+if(TARGET interlock_query)
+  add_test(NAME test_umat_query_doc
+    COMMAND ${CMAKE_COMMAND} -DQUERY=$<TARGET_FILE:interlock_query>
+      -DDOC=${PROJECT_SOURCE_DIR}/docs/material.md -DOUT=${CMAKE_CURRENT_BINARY_DIR}/material.md
+      -P ${CMAKE_CURRENT_SOURCE_DIR}/test_umat_doc.cmake)
+  add_test(NAME test_umat_query_props COMMAND interlock_query --props)
+  set_tests_properties(test_umat_query_props PROPERTIES PASS_REGULAR_EXPRESSION
+    "PROPS +name.*\n4 +eta +- +required +0 < +eta < +1.*\n19 +wear +- +1 .*NPROPS from 9 to 19")
+  add_test(NAME test_umat_query_statev COMMAND interlock_query --statev)
+  set_tests_properties(test_umat_query_statev PROPERTIES PASS_REGULAR_EXPRESSION
+    "STATEV +name.*\n13 +theta +1 \\(-theta_0\\) +rad.*\n22 +initialized +- .*NSTATV >= 22")
+  add_test(NAME test_umat_query_bad_option COMMAND interlock_query --no-such-option)
+  set_tests_properties(test_umat_query_bad_option PROPERTIES WILL_FAIL TRUE)
+endif()
+
+# --- cmake --install into a temporary prefix, then a consumer project with find_package.
+add_test(NAME test_umat_install_consumer
+  COMMAND ${CMAKE_COMMAND}
+    -DBUILD_DIR=${PROJECT_BINARY_DIR} -DCONFIG=$<CONFIG>
+    -DPREFIX=${CMAKE_CURRENT_BINARY_DIR}/install_test/prefix
+    -DCONSUMER_SOURCE=${CMAKE_CURRENT_SOURCE_DIR}/consumer
+    -DCONSUMER_BUILD=${CMAKE_CURRENT_BINARY_DIR}/install_test/consumer
+    -DGENERATOR=${CMAKE_GENERATOR} -DFC=${CMAKE_Fortran_COMPILER}
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/test_umat_install.cmake)
+set_tests_properties(test_umat_install_consumer PROPERTIES TIMEOUT 300)
