@@ -1,13 +1,15 @@
 !> Specialised one-step updates, chosen once when the material is prepared, so that a scene
 !> pays only for the effects it uses (SPEC section 7): without wear the inclinations are
-!> constant (no sine, cosine or exponential), one flat plane needs no rotation at all, and the
-!> local law is written with scalar derivatives instead of the general path's gradient vectors
-!> (which substepping and wear need). Each kernel agrees with the general path (interlock_ria)
-!> to round-off; a test checks it.
+!> constant (sines and cosines computed once, at set-up), one flat plane needs no rotation at
+!> all, and the local law is written with scalar derivatives instead of the general path's
+!> gradient vectors (which substepping and the implicit wear equation need). The explicit
+!> scheme freezes each angle within the step, so with wear it runs the same kernel with the
+!> stored angle's sine and cosine, and one exponential per plane that wore. Each kernel agrees
+!> with the general path (interlock_ria) to round-off; a test checks it.
 module interlock_kernels
   use interlock_kinds, only: dp
-  use interlock_material, only: interlock_material_t, scheme_implicit, &
-      kernel_flat, kernel_fixed_angles
+  use interlock_material, only: interlock_material_t, scheme_implicit, kernel_flat
+  use interlock_wear, only: worn_angle
   use interlock_state, only: interlock_state_t
   use interlock_geometry, only: contact_area
   use interlock_damage, only: damage_dissipation_increment
@@ -35,7 +37,7 @@ contains
     real(dp), intent(out) :: tangent(2, 2)
     logical, intent(out) :: done
     type(plane_law_t) :: p
-    real(dp) :: area, darea, sigma(2), sl(2), c, sn, gam, kg(2, 2), sg(2)
+    real(dp) :: area, darea, sigma(2), sl(2), c, sn, gam, kg(2, 2), sg(2), theta, slope
     integer :: k
 
     area = 1.0_dp
@@ -64,8 +66,14 @@ contains
       sigma = 0.0_dp
       tangent = 0.0_dp
       do k = 1, mat%n_planes
-        c = mat%cos0(k)
-        sn = mat%sin0(k)
+        theta = old%theta(k)
+        if (mat%plane_wears(k)) then
+          c = cos(theta)
+          sn = sin(theta)
+        else
+          c = mat%cos0(k)
+          sn = mat%sin0(k)
+        end if
         sl = [c * s(1) + sn * s(2), -sn * s(1) + c * s(2)]
         call plane_law(mat, scheme, sl, old%beta(k), old%sf(k), old%zeta(k), old%tauf(k), &
                        old%damage(k), p)
@@ -79,7 +87,10 @@ contains
         sigma = sigma + gam * sg
         tangent = tangent + gam * kg
         p%sig = sg
-        call store_plane(p, k, gam, old%theta(k), new)
+        ! Explicit wear (eq. 22, 25): the angle for the next step.
+        if (mat%plane_wears(k) .and. p%zeta > old%zeta(k)) call worn_angle(mat%theta_init(k), &
+            mat%thetaf_eff(k), mat%inv_zeta0(k), p%zeta, theta, slope)
+        call store_plane(p, k, gam, theta, new)
       end do
       if (mat%use_depth) then
         ! d A_g / d s_N times the traction at unit area.

@@ -13,7 +13,7 @@ module interlock_material
   public :: scheme_explicit, scheme_implicit, scheme_name
   public :: effect_damage, effect_friction, effect_interlocking, effect_finite_depth, effect_wear
   public :: effect_names, n_effects
-  public :: kernel_general, kernel_flat, kernel_fixed_angles
+  public :: kernel_general, kernel_flat, kernel_inclined
 
   integer, parameter :: max_planes = 8
   integer, parameter :: scheme_explicit = 1, scheme_implicit = 2
@@ -21,9 +21,11 @@ module interlock_material
   integer, parameter :: effect_damage = 1, effect_friction = 2, effect_interlocking = 3, &
                         effect_finite_depth = 4, effect_wear = 5
   !> Update kernels, chosen once by interlock_material_prepare from the effect set.
-  integer, parameter :: kernel_general = 0      !< any effect set (wear, substepping)
+  integer, parameter :: kernel_general = 0      !< any effect set and scheme
   integer, parameter :: kernel_flat = 1         !< every plane flat: one plane, no rotation
-  integer, parameter :: kernel_fixed_angles = 2 !< inclined planes without wear
+  !> inclined planes: constant angles, or wear with the explicit scheme (angle frozen in the
+  !> step); the implicit scheme with wear takes the general path
+  integer, parameter :: kernel_inclined = 2
   character(len=12), parameter :: effect_names(n_effects) = &
     [character(len=12) :: 'damage', 'friction', 'interlocking', 'finite_depth', 'wear']
 
@@ -204,12 +206,10 @@ contains
     mat%plane_wears(mat%n_planes + 1:) = .false.
     mat%use_wear = any(mat%plane_wears(1:mat%n_planes))
     mat%flat = all(same_value(mat%theta_init(1:mat%n_planes), 0.0_dp)) .and. .not. mat%use_wear
-    if (mat%use_wear) then
-      mat%kernel = kernel_general
-    else if (mat%flat) then
+    if (mat%flat) then
       mat%kernel = kernel_flat
     else
-      mat%kernel = kernel_fixed_angles
+      mat%kernel = kernel_inclined
     end if
     mat%prepared = .true.
     stat = status_ok

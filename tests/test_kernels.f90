@@ -10,7 +10,8 @@ module test_kernels
   implicit none
   private
   public :: test_flat_damage_only, test_flat_friction, test_flat_depth, test_ria_fixed_angles, &
-            test_ria_prefractured, test_general_ria_two_planes, test_kernel_selection
+            test_ria_prefractured, test_general_ria_two_planes, test_kernel_selection, &
+            test_ria_explicit_wear
 
   real(dp), parameter :: tol = 1.0e-12_dp   !< relative to the natural scale of each quantity
 
@@ -134,7 +135,7 @@ contains
     call base_material(mat, 0.5_dp, 0.5_dp)
     call interlock_paper_ria(mat, 25.0_dp * deg_to_rad, 25.0_dp * deg_to_rad, 20.0_dp)
     call prepare_or_fail(mat)
-    call compare_paths(mat, kernel_fixed_angles, 'RIA 25 deg, no wear, depth 0.5')
+    call compare_paths(mat, kernel_inclined, 'RIA 25 deg, no wear, depth 0.5')
   end subroutine test_ria_fixed_angles
 
   subroutine test_ria_prefractured()
@@ -144,7 +145,7 @@ contains
     call interlock_paper_ria(mat, 30.0_dp * deg_to_rad, 7.0_dp * deg_to_rad, 20.0_dp)
     mat%effect(effect_wear) = .false.
     call prepare_or_fail(mat)
-    call compare_paths(mat, kernel_fixed_angles, 'pre-fractured RIA, wear off')
+    call compare_paths(mat, kernel_inclined, 'pre-fractured RIA, wear off')
   end subroutine test_ria_prefractured
 
   subroutine test_general_ria_two_planes()
@@ -155,16 +156,26 @@ contains
     mat%theta0(1:2) = [-10.0_dp, 20.0_dp] * deg_to_rad
     mat%thetaf(1:2) = mat%theta0(1:2)
     call prepare_or_fail(mat)
-    call compare_paths(mat, kernel_fixed_angles, 'two planes -10/+20 deg, mu = 2')
+    call compare_paths(mat, kernel_inclined, 'two planes -10/+20 deg, mu = 2')
   end subroutine test_general_ria_two_planes
 
-  !> Wear needs the general path; interlocking off makes any RIA flat.
+  !> Explicit wear: the angle frozen in the step, one exponential per plane that wore. (The
+  !> implicit scheme with wear always takes the general path, so its comparison is trivial.)
+  subroutine test_ria_explicit_wear()
+    type(interlock_material_t) :: mat
+    call base_material(mat, 0.5_dp, 0.5_dp)
+    call interlock_paper_ria(mat, 30.0_dp * deg_to_rad, 7.0_dp * deg_to_rad, 0.05_dp)
+    call prepare_or_fail(mat)
+    call compare_paths(mat, kernel_inclined, 'RIA 30/7 deg, wear, depth 0.5')
+  end subroutine test_ria_explicit_wear
+
+  !> Interlocking off makes any RIA flat.
   subroutine test_kernel_selection()
     type(interlock_material_t) :: mat
     call base_material(mat, 0.5_dp, 1.0_dp)
     call interlock_paper_ria(mat, 30.0_dp * deg_to_rad, 7.0_dp * deg_to_rad, 20.0_dp)
     call prepare_or_fail(mat)
-    call assert_equal(kernel_general, mat%kernel, 'wear selects the general path')
+    call assert_equal(kernel_inclined, mat%kernel, 'wear: the inclined kernel (explicit scheme)')
     mat%effect(effect_interlocking) = .false.
     call prepare_or_fail(mat)
     call assert_equal(kernel_flat, mat%kernel, 'interlocking off selects the flat kernel')
@@ -184,6 +195,7 @@ program test_kernels_main
   call run_case('RIA without wear', test_ria_fixed_angles)
   call run_case('pre-fractured RIA without wear', test_ria_prefractured)
   call run_case('two-plane RIA, locking friction', test_general_ria_two_planes)
+  call run_case('RIA with explicit wear', test_ria_explicit_wear)
   call run_case('kernel selection', test_kernel_selection)
   if (suite_summary('core_kernels') /= 0) error stop 1
 end program test_kernels_main

@@ -46,6 +46,12 @@
 !> unused with an empty `associate` block, which the compiler sees as a use and which
 !> generates no code.
 !>
+!> **Replaying a failure.** When the environment variable INTERLOCK_REPLAY_DIR names a folder,
+!> every local failure also writes a deck there, `interlock_replay_e<NOEL>_p<NPT>_k<KINC>.nml`,
+!> with the parameters, the state at the start of the increment and the increment: run it with
+!> `interlock-history` to reproduce the failure at that single point. Off by default, since an
+!> FE run calls the UMAT from many threads and points.
+!>
 !> **Threads.** No SAVE'd, module or COMMON state is written; the procedure is `recursive` so
 !> that every local lives on the stack: safe to call from many threads at once.
 recursive subroutine UMAT(STRESS, STATEV, DDSDDE, SSE, SPD, SCD, RPL, DDSDDT, DRPLDE, DRPLDT, &
@@ -55,7 +61,8 @@ recursive subroutine UMAT(STRESS, STATEV, DDSDDE, SSE, SPD, SCD, RPL, DDSDDT, DR
   use, intrinsic :: iso_fortran_env, only: output_unit
   use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
       interlock_info_t, interlock_update, umat_controls_t, props_to_material, statev_to_state, &
-      state_to_statev, umat_nstatv, status_ok, status_local_failure, message_len, is_nan_value
+      state_to_statev, umat_nstatv, status_ok, status_local_failure, message_len, is_nan_value, &
+      interlock_write_replay_deck
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   implicit none
   integer, intent(in) :: NDI                 !< direct components (1 for a 2D cohesive element)
@@ -142,6 +149,7 @@ recursive subroutine UMAT(STRESS, STATEV, DDSDDE, SSE, SPD, SCD, RPL, DDSDDT, DR
   if (info%status /= status_ok) then
     call fail(info%message, merge(pnewdt_local_failure, pnewdt_bad_input, &
                                   info%status == status_local_failure))
+    if (info%status == status_local_failure) call write_replay(info%message)
     return
   end if
 
@@ -179,6 +187,22 @@ contains
       trim(CMNAME) // "', increment " // trim(int_text(KINC)) // '): ' // trim(why)
     call lower_pnewdt(proposal)
   end subroutine fail
+
+  !> The replay deck of a failed increment, when INTERLOCK_REPLAY_DIR asks for it.
+  subroutine write_replay(why)
+    character(len=*), intent(in) :: why
+    character(len=4096) :: dir
+    character(len=96) :: name
+    integer :: length, env_stat, ios
+    call get_environment_variable('INTERLOCK_REPLAY_DIR', dir, length, env_stat)
+    if (env_stat /= 0 .or. length == 0) return
+    write (name, '(a,i0,a,i0,a,i0,a)') 'interlock_replay_e', NOEL, '_p', NPT, '_k', KINC, '.nml'
+    call interlock_write_replay_deck(trim(dir) // '/' // trim(name), mat, solver, old, s, &
+      'UMAT element ' // int_text(NOEL) // ', point ' // int_text(NPT) // ', increment ' // &
+      int_text(KINC) // ': ' // why, ios)
+    if (ios /= 0) write (output_unit, '(a)') 'interlock UMAT: could not write the replay deck ' &
+      // trim(dir) // '/' // trim(name)
+  end subroutine write_replay
 
   !> PNEWDT = min(PNEWDT, proposal); a NaN on entry is replaced.
   subroutine lower_pnewdt(proposal)
