@@ -12,20 +12,8 @@ if [[ ! -f "$deck" ]]; then
   exit 1
 fi
 
-# Debian packages, only those missing; apt-get update at most once.
-packages=(gfortran cmake ninja-build libhdf5-dev liblapack-dev python3-h5py python3-matplotlib)
-missing=()
-for p in "${packages[@]}"; do
-  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
-    missing+=("$p")
-  fi
-done
-if (( ${#missing[@]} > 0 )); then
-  echo "main.sh: installing ${missing[*]}"
-  export DEBIAN_FRONTEND=noninteractive
-  apt-get update
-  apt-get install -y --no-install-recommends "${missing[@]}"
-fi
+# Debian packages, only those missing.
+bash scripts/ensure_packages.sh
 
 # Configure once, build Release (incremental).
 if [[ ! -f build/build.ninja ]]; then

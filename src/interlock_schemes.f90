@@ -103,7 +103,7 @@ contains
 
     if (solver%scheme /= scheme_implicit) then
       ! d zeta / d w for the explicit update zeta = zeta_o + D_o |tauf_o| |sf - sf_o|.
-      gz(1:ncol) = dmg_o * abs(tauf_o) * matmul(r%gslip, dvdw(:, 1:ncol))
+      gz = dmg_o * abs(tauf_o) * matmul(r%gslip, dvdw)
       if (ncol > 2) then
         ddo_db = 0.0_dp
         if (mat%use_damage) call damage_of_beta(mat%eta, mat%beta_break, beta_o, dtmp, ddo_db)
@@ -117,17 +117,16 @@ contains
     p%dmg = r%dmg
     p%sf = r%sf
     p%tauf = r%tauf
-    p%gq = 0.0_dp
-    p%gq(1, 1:ncol) = matmul(r%gbeta, dvdw(:, 1:ncol))
-    p%gq(2, 1:ncol) = matmul(r%gsf, dvdw(:, 1:ncol))
-    p%gq(3, 1:ncol) = gz(1:ncol)
-    p%gq(4, 1:ncol) = matmul(r%gtauf, dvdw(:, 1:ncol))
+    ! Fixed-size products (columns beyond ncol are zero): no temporaries on the heap.
+    p%gq(1, :) = matmul(r%gbeta, dvdw)
+    p%gq(2, :) = matmul(r%gsf, dvdw)
+    p%gq(3, :) = gz
+    p%gq(4, :) = matmul(r%gtauf, dvdw)
 
     call to_global(c, sn, r%sig, p%sig)
     ! d(R^T)/dtheta sigma_loc
     sig_th = [-sn * r%sig(1) - c * r%sig(2), c * r%sig(1) - sn * r%sig(2)]
-    p%gsig = 0.0_dp
-    p%gsig(:, 1:ncol) = matmul(transpose(rotation(c, sn)), matmul(r%gsig, dvdw(:, 1:ncol)))
+    p%gsig = matmul(transpose(rotation(c, sn)), matmul(r%gsig, dvdw))
     do j = 1, ncol
       p%gsig(:, j) = p%gsig(:, j) + sig_th * dthw(j)
     end do

@@ -11,7 +11,7 @@ module test_kernels
   private
   public :: test_flat_damage_only, test_flat_friction, test_flat_depth, test_ria_fixed_angles, &
             test_ria_prefractured, test_general_ria_two_planes, test_kernel_selection, &
-            test_ria_explicit_wear
+            test_ria_explicit_wear, test_theta_zero_is_single_plane
 
   real(dp), parameter :: tol = 1.0e-12_dp   !< relative to the natural scale of each quantity
 
@@ -169,6 +169,48 @@ contains
     call compare_paths(mat, kernel_inclined, 'RIA 30/7 deg, wear, depth 0.5')
   end subroutine test_ria_explicit_wear
 
+  !> SPEC section 7: theta = 0 gives the single-plane model whatever H_N. The three-plane RIA at
+  !> theta_0 = 0 is computed plane by plane on the general path (no flat shortcut, no kernel)
+  !> and compared with one flat plane on the flat kernel, along the same random history.
+  subroutine test_theta_zero_is_single_plane()
+    type(interlock_material_t) :: ria, one
+    type(interlock_solver_t) :: solver
+    type(interlock_state_t) :: o_r, n_r, o_1, n_1
+    type(interlock_info_t) :: i_r, i_1
+    type(rng_t) :: rng
+    real(dp) :: s(2), sig_r(2), sig_1(2), k_r(2, 2), k_1(2, 2), h_n(3), err
+    integer :: ih, i
+    h_n = [0.05_dp, 0.5_dp, huge(1.0_dp)]
+    do ih = 1, 3
+      call base_material(ria, 0.5_dp, h_n(ih))
+      call interlock_paper_ria(ria, 0.0_dp, 0.0_dp, 20.0_dp)
+      call prepare_or_fail(ria)
+      ria%flat = .false.
+      ria%kernel = kernel_general
+      call base_material(one, 0.5_dp, h_n(ih))
+      call one_flat_plane(one)
+      call prepare_or_fail(one)
+      call interlock_state_init(ria, o_r)
+      call interlock_state_init(one, o_1)
+      s = 0.0_dp
+      err = 0.0_dp
+      do i = 1, 2000
+        s(2) = s(2) + (rng_uniform(rng) - 0.5_dp) * 0.8_dp * one%s0t
+        s(1) = 0.8_dp * s(1) + 0.2_dp * merge(-1.5_dp, 3.0_dp, mod(i / 250, 2) == 0) * one%s0n &
+               + (rng_uniform(rng) - 0.5_dp) * one%s0n
+        call interlock_update(ria, solver, s, o_r, n_r, sig_r, k_r, i_r)
+        call interlock_update(one, solver, s, o_1, n_1, sig_1, k_1, i_1)
+        err = max(err, maxval(abs(sig_r - sig_1)) / one%sigma0_n, &
+                  maxval(abs(k_r - k_1)) / one%kn, maxval(abs(n_r%damage(1:3) - n_1%damage(1))))
+        o_r = n_r
+        o_1 = n_1
+      end do
+      write (*, '(2x,a,es10.3,a,es10.3)') 'theta = 0 RIA vs one plane, H_N = ', h_n(ih), &
+        ': largest relative difference ', err
+      call assert_true(err <= tol, 'theta = 0: three planes equal one flat plane')
+    end do
+  end subroutine test_theta_zero_is_single_plane
+
   !> Interlocking off makes any RIA flat.
   subroutine test_kernel_selection()
     type(interlock_material_t) :: mat
@@ -196,6 +238,7 @@ program test_kernels_main
   call run_case('pre-fractured RIA without wear', test_ria_prefractured)
   call run_case('two-plane RIA, locking friction', test_general_ria_two_planes)
   call run_case('RIA with explicit wear', test_ria_explicit_wear)
+  call run_case('theta = 0 is the single-plane model', test_theta_zero_is_single_plane)
   call run_case('kernel selection', test_kernel_selection)
   if (suite_summary('core_kernels') /= 0) error stop 1
 end program test_kernels_main
