@@ -64,12 +64,9 @@ contains
     if (solver%substep_tol > 0.0_dp) then
       call substep(mat, solver, s, old, new, tangent, info, solver%substep_tol)
     else
-      ! The specialised kernel of the material's effect set, when it applies (the implicit
-      ! wear equation needs the general path).
-      if (mat%kernel /= kernel_general .and. .not. (mat%use_wear .and. &
-          solver%scheme == scheme_implicit)) then
-        call kernel_step(mat, solver%scheme, s, old, new, tangent, done)
-      end if
+      ! The specialised kernel of the material's effect set, when it applies.
+      if (mat%kernel /= kernel_general) call kernel_step(mat, solver, s, old, new, tangent, &
+                                                         done, info%newton_iterations)
       if (.not. done) then
         call ria_step(mat, solver, s, old, new, tangent, info%newton_iterations, ok)
         if (.not. ok) then

@@ -8,11 +8,12 @@
 !> with the general path (interlock_ria) to round-off; a test checks it.
 module interlock_kernels
   use interlock_kinds, only: dp
-  use interlock_material, only: interlock_material_t, scheme_implicit, kernel_flat
-  use interlock_wear, only: worn_angle
+  use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_implicit, &
+      kernel_flat
+  use interlock_wear, only: worn_angle, worn_angle_slope, wear_root_t, wear_root_begin, &
+      wear_root_update
   use interlock_state, only: interlock_state_t
   use interlock_geometry, only: contact_area
-  use interlock_damage, only: damage_dissipation_increment
   implicit none
   private
   public :: kernel_step
@@ -22,24 +23,33 @@ module interlock_kernels
     real(dp) :: beta, dmg, sf, tauf, zeta
     real(dp) :: sig(2), k(2, 2)
     real(dp) :: psi, wdmg, wfric
+    real(dp) :: gw(2)   !< d wfric / d(s_kn, s_kt) at fixed start state (the implicit wear driver)
   end type plane_law_t
 
 contains
 
   !> One increment with a specialised kernel. `done` is false when the kernel does not apply
   !> to this increment (a separated RIA): the caller then takes the general path.
-  pure subroutine kernel_step(mat, scheme, s, old, new, tangent, done)
+  !> One increment with a specialised kernel. `done` is false when the kernel does not apply
+  !> to this increment (a separated RIA, or an implicit wear equation the bounded iteration did
+  !> not solve): the caller then takes the general path, which can also sub-increment.
+  pure subroutine kernel_step(mat, solver, s, old, new, tangent, done, iterations)
     type(interlock_material_t), intent(in) :: mat
-    integer, intent(in) :: scheme
+    type(interlock_solver_t), intent(in) :: solver
     real(dp), intent(in) :: s(2)
     type(interlock_state_t), intent(in) :: old
     type(interlock_state_t), intent(inout) :: new
     real(dp), intent(out) :: tangent(2, 2)
     logical, intent(out) :: done
+    integer, intent(out) :: iterations
     type(plane_law_t) :: p
-    real(dp) :: area, darea, sigma(2), sl(2), c, sn, gam, kg(2, 2), sg(2), theta, slope
-    integer :: k
+    real(dp) :: area, darea, sigma(2), sl(2), c, sn, gam, kg(2, 2), sg(2), theta, slope, &
+                dthds(2), dsig_dth(2)
+    integer :: k, scheme, it
+    logical :: coupled
 
+    scheme = solver%scheme
+    iterations = 0
     area = 1.0_dp
     darea = 0.0_dp
     if (mat%use_depth) call contact_area(s(1), mat%inv_h_n, area, darea)
@@ -67,16 +77,27 @@ contains
       tangent = 0.0_dp
       do k = 1, mat%n_planes
         theta = old%theta(k)
-        if (mat%plane_wears(k)) then
-          c = cos(theta)
-          sn = sin(theta)
-        else
+        dthds = 0.0_dp
+        coupled = .false.
+        if (.not. mat%plane_wears(k)) then
           c = mat%cos0(k)
           sn = mat%sin0(k)
+          sl = [c * s(1) + sn * s(2), -sn * s(1) + c * s(2)]
+          call plane_law(mat, scheme, sl, old%beta(k), old%sf(k), old%zeta(k), old%tauf(k), &
+                         old%damage(k), p)
+        else if (scheme == scheme_implicit) then
+          call implicit_wear_plane(mat, solver, k, s, old, p, theta, c, sn, sl, dthds, it, done)
+          iterations = max(iterations, it)
+          if (.not. done) return
+          coupled = .true.
+        else
+          ! Explicit (eq. 25): the angle frozen at its stored value within the step.
+          c = cos(theta)
+          sn = sin(theta)
+          sl = [c * s(1) + sn * s(2), -sn * s(1) + c * s(2)]
+          call plane_law(mat, scheme, sl, old%beta(k), old%sf(k), old%zeta(k), old%tauf(k), &
+                         old%damage(k), p)
         end if
-        sl = [c * s(1) + sn * s(2), -sn * s(1) + c * s(2)]
-        call plane_law(mat, scheme, sl, old%beta(k), old%sf(k), old%zeta(k), old%tauf(k), &
-                       old%damage(k), p)
         gam = mat%gamma_hat(k) * area
         ! R^T sigma_loc and R^T K_loc R.
         sg = [c * p%sig(1) - sn * p%sig(2), sn * p%sig(1) + c * p%sig(2)]
@@ -84,12 +105,24 @@ contains
         kg(1, 2) = c * (sn * p%k(1, 1) + c * p%k(1, 2)) - sn * (sn * p%k(2, 1) + c * p%k(2, 2))
         kg(2, 1) = sn * (c * p%k(1, 1) - sn * p%k(1, 2)) + c * (c * p%k(2, 1) - sn * p%k(2, 2))
         kg(2, 2) = sn * (sn * p%k(1, 1) + c * p%k(1, 2)) + c * (sn * p%k(2, 1) + c * p%k(2, 2))
+        if (coupled) then
+          ! Implicit wear: theta depends on s through zeta. d sigma_k / d theta =
+          ! d(R^T)/d theta sigma_loc + R^T K_loc d(s_kn, s_kt)/d theta, d s_loc/d theta = (s_kt, -s_kn).
+          dsig_dth = [-sn * p%sig(1) - c * p%sig(2), c * p%sig(1) - sn * p%sig(2)] + &
+                     [c * (p%k(1, 1) * sl(2) - p%k(1, 2) * sl(1)) - &
+                      sn * (p%k(2, 1) * sl(2) - p%k(2, 2) * sl(1)), &
+                      sn * (p%k(1, 1) * sl(2) - p%k(1, 2) * sl(1)) + &
+                      c * (p%k(2, 1) * sl(2) - p%k(2, 2) * sl(1))]
+          kg(:, 1) = kg(:, 1) + dsig_dth * dthds(1)
+          kg(:, 2) = kg(:, 2) + dsig_dth * dthds(2)
+        end if
         sigma = sigma + gam * sg
         tangent = tangent + gam * kg
         p%sig = sg
         ! Explicit wear (eq. 22, 25): the angle for the next step.
-        if (mat%plane_wears(k) .and. p%zeta > old%zeta(k)) call worn_angle(mat%theta_init(k), &
-            mat%thetaf_eff(k), mat%inv_zeta0(k), p%zeta, theta, slope)
+        if (scheme /= scheme_implicit .and. mat%plane_wears(k) .and. p%zeta > old%zeta(k)) &
+          call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), p%zeta, theta, &
+                          slope)
         call store_plane(p, k, gam, theta, new)
       end do
       if (mat%use_depth) then
@@ -104,6 +137,61 @@ contains
     new%sigma = sigma
     new%work = old%work + 0.5_dp * dot_product(old%sigma + sigma, s - old%s)
   end subroutine kernel_step
+
+  !> A wearing plane with the implicit scheme (interlock_wear: the backward-Euler wear equation
+  !> solved by the safeguarded Newton iteration), in its own frame at the root's angle, and
+  !> d theta / d s by implicit differentiation: d zeta/d s = (grad g . R) / F'.
+  pure subroutine implicit_wear_plane(mat, solver, k, s, old, p, theta, c, sn, sl, dthds, &
+                                      iterations, ok)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    integer, intent(in) :: k
+    real(dp), intent(in) :: s(2)
+    type(interlock_state_t), intent(in) :: old
+    type(plane_law_t), intent(out) :: p
+    real(dp), intent(inout) :: theta
+    real(dp), intent(out) :: c, sn, sl(2), dthds(2)
+    integer, intent(out) :: iterations
+    logical, intent(out) :: ok
+    type(wear_root_t) :: rt
+    real(dp) :: thp, fp
+    ! At zeta_o the angle is the stored one: no exponential.
+    thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), theta)
+    call wear_evaluate(mat, k, s, old, theta, thp, p, c, sn, sl, fp)
+    iterations = 0
+    ok = .true.
+    if (p%wfric > 0.0_dp) then
+      call wear_root_begin(rt, old%zeta(k), p%wfric)
+      do
+        call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, thp)
+        call wear_evaluate(mat, k, s, old, theta, thp, p, c, sn, sl, fp)
+        call wear_root_update(rt, rt%x - old%zeta(k) - p%wfric, fp, solver%newton_tol, &
+                              solver%newton_max_iterations)
+        if (rt%done) exit
+      end do
+      iterations = rt%iterations
+      ok = rt%ok
+      p%zeta = rt%x
+    end if
+    dthds = thp * [p%gw(1) * c - p%gw(2) * sn, p%gw(1) * sn + p%gw(2) * c] / fp
+  end subroutine implicit_wear_plane
+
+  !> The plane at angle theta (slope thp = d theta / d zeta) and F' = 1 - thp dg/d theta of its
+  !> wear equation, dg/d theta = grad g . (s_kt, -s_kn).
+  pure subroutine wear_evaluate(mat, k, s, old, theta, thp, p, c, sn, sl, fp)
+    type(interlock_material_t), intent(in) :: mat
+    integer, intent(in) :: k
+    real(dp), intent(in) :: s(2), theta, thp
+    type(interlock_state_t), intent(in) :: old
+    type(plane_law_t), intent(out) :: p
+    real(dp), intent(out) :: c, sn, sl(2), fp
+    c = cos(theta)
+    sn = sin(theta)
+    sl = [c * s(1) + sn * s(2), -sn * s(1) + c * s(2)]
+    call plane_law(mat, scheme_implicit, sl, old%beta(k), old%sf(k), old%zeta(k), old%tauf(k), &
+                   old%damage(k), p)
+    fp = 1.0_dp - thp * (p%gw(1) * sl(2) - p%gw(2) * sl(1))
+  end subroutine wear_evaluate
 
   !> The plane's end-of-step state into `new`, and its share (weight g) of the energies.
   pure subroutine store_plane(p, k, g, theta_old, new)
@@ -128,27 +216,27 @@ contains
     integer, intent(in) :: scheme
     real(dp), intent(in) :: sl(2), beta_o, sf_o, zeta_o, tauf_o, dmg_o
     type(plane_law_t), intent(out) :: p
-    real(dp) :: an, at, beq, ddb, gd(2), dtau(2), mu_p, tau_trial, sgn, pos_n, neg_n, slip, x
+    real(dp) :: an, at, beq, rb, ddb, gd(2), dtau(2), mu_p, tau_trial, sgn, pos_n, neg_n, slip, &
+                dslip(2)
 
-    ! Damage (interlock_damage): beta = max(beta_o, beta_eq), D = (beta - 1)/(eta beta).
+    ! Damage (interlock_damage): beta = max(beta_o, beta_eq), D = (beta - 1)/(eta beta); one
+    ! division, and only while damage grows (the inverses are the material's).
     p%beta = beta_o
     p%dmg = dmg_o
     gd = 0.0_dp
     if (mat%use_damage) then
-      an = max(0.0_dp, sl(1)) / mat%s0n
-      at = sl(2) / mat%s0t
+      an = max(0.0_dp, sl(1)) * mat%inv_s0n
+      at = sl(2) * mat%inv_s0t
       beq = sqrt(an * an + at * at)
       if (beq > beta_o) then
         p%beta = beq
-        if (beq > 1.0_dp) then
-          x = (beq - 1.0_dp) / (mat%eta * beq)
-          if (beq >= mat%beta_break) then
-            p%dmg = 1.0_dp
-          else
-            p%dmg = x
-            ddb = 1.0_dp / (mat%eta * beq * beq * beq)
-            gd = [ddb * an / mat%s0n, ddb * at / mat%s0t]
-          end if
+        if (beq >= mat%beta_break) then
+          p%dmg = 1.0_dp
+        else if (beq > 1.0_dp) then
+          rb = 1.0_dp / beq
+          p%dmg = (beq - 1.0_dp) * mat%inv_eta * rb
+          ddb = mat%inv_eta * rb * rb * rb
+          gd = [ddb * an * mat%inv_s0n, ddb * at * mat%inv_s0t]
         else
           p%dmg = 0.0_dp
         end if
@@ -165,18 +253,21 @@ contains
         p%tauf = tau_trial
         dtau = [0.0_dp, mat%kt]
         slip = 0.0_dp
+        dslip = 0.0_dp
       else
         sgn = sign(1.0_dp, tau_trial)
         p%tauf = sgn * mu_p
-        p%sf = sl(2) - p%tauf / mat%kt
+        p%sf = sl(2) - p%tauf * mat%inv_kt
         dtau = [-sgn * mat%mu_eff * mat%kn, 0.0_dp]
-        slip = (abs(tau_trial) - mu_p) / mat%kt
+        slip = (abs(tau_trial) - mu_p) * mat%inv_kt
+        dslip = [mat%mu_eff * mat%kn * mat%inv_kt, sgn]
       end if
     else
       p%sf = sl(2)
       p%tauf = 0.0_dp
       dtau = 0.0_dp
       slip = abs(p%sf - sf_o)
+      dslip = 0.0_dp
     end if
 
     ! Traction and its derivative (interlock_microplane).
@@ -193,18 +284,23 @@ contains
     p%k(2, 1) = p%dmg * dtau(1) + (p%tauf - mat%kt * sl(2)) * gd(1)
     p%k(2, 2) = (1.0_dp - p%dmg) * mat%kt + p%dmg * dtau(2) + (p%tauf - mat%kt * sl(2)) * gd(2)
 
-    ! Frictional work and energies (interlock_schemes).
+    ! Frictional work and energies (interlock_schemes): the decohesion part of Y dD exactly
+    ! (interlock_damage:damage_dissipation_increment), the friction part at first order.
     p%wfric = p%dmg * abs(p%tauf) * slip
+    ! grad of D |tau_f| slip; d|tau_f| = sign(tau_f) dtau (tau_f = 0 where it is free)
+    p%gw = abs(p%tauf) * slip * gd + p%dmg * slip * sign(1.0_dp, p%tauf) * dtau + &
+           p%dmg * abs(p%tauf) * dslip
     if (scheme == scheme_implicit) then
       p%zeta = zeta_o + p%wfric
     else
       p%zeta = zeta_o + dmg_o * abs(tauf_o) * slip
     end if
     p%psi = 0.5_dp * ((1.0_dp - p%dmg) * (mat%kn * sl(1)**2 + mat%kt * sl(2)**2) + &
-                      p%dmg * (mat%kn * neg_n**2 + p%tauf**2 / mat%kt))
+                      p%dmg * (mat%kn * neg_n**2 + p%tauf**2 * mat%inv_kt))
     p%wdmg = 0.0_dp
-    if (p%dmg > dmg_o) p%wdmg = damage_dissipation_increment(mat%eta, mat%beta_break, &
-        mat%kn * mat%s0n**2, beta_o, p%beta) - 0.5_dp * p%tauf**2 / mat%kt * (p%dmg - dmg_o)
+    if (p%dmg > dmg_o) p%wdmg = mat%decohesion_energy_factor * &
+        (min(max(p%beta, 1.0_dp), mat%beta_break) - min(max(beta_o, 1.0_dp), mat%beta_break)) &
+        - 0.5_dp * p%tauf**2 * mat%inv_kt * (p%dmg - dmg_o)
   end subroutine plane_law
 
 end module interlock_kernels

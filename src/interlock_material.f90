@@ -63,6 +63,10 @@ module interlock_material
     real(dp) :: thetaf_eff(max_planes) = 0.0_dp
     real(dp) :: inv_zeta0(max_planes) = 0.0_dp
     real(dp) :: cos0(max_planes) = 1.0_dp, sin0(max_planes) = 0.0_dp
+    !> Inverses for the kernels (a multiplication instead of a division on the hot path), and
+    !> c/(2 eta) with c = K_n s_0n^2: decohesion energy per unit growth of beta.
+    real(dp) :: inv_s0n = 0.0_dp, inv_s0t = 0.0_dp, inv_eta = 0.0_dp, inv_kt = 0.0_dp
+    real(dp) :: decohesion_energy_factor = 0.0_dp
     !> The kernel for updates without substepping (kernel_general forces the general path).
     integer  :: kernel = kernel_general
   end type interlock_material_t
@@ -173,6 +177,11 @@ contains
     mat%kn = mat%sigma0_n / mat%s0n
     mat%kt = mat%sigma0_t / mat%s0t
     mat%beta_break = 1.0_dp / (1.0_dp - mat%eta)
+    mat%inv_s0n = 1.0_dp / mat%s0n
+    mat%inv_s0t = 1.0_dp / mat%s0t
+    mat%inv_eta = 1.0_dp / mat%eta
+    mat%inv_kt = 1.0_dp / mat%kt
+    mat%decohesion_energy_factor = 0.5_dp * mat%kn * mat%s0n**2 / mat%eta
     if (.not. (mat%kn < huge(1.0_dp) .and. mat%kt < huge(1.0_dp) .and. mat%s0n > 0.0_dp .and. &
                mat%s0t > 0.0_dp)) then
       message = 'the parameters give a stiffness K_n = sigma0_n^2/(2 Gc_bar (1-eta)) or K_t ' // &

@@ -9,7 +9,8 @@ module interlock_schemes
   use interlock_kinematics, only: to_local, to_global, dlocal_dtheta
   use interlock_damage, only: damage_of_beta, damage_dissipation_increment
   use interlock_microplane, only: local_t, microplane_update
-  use interlock_wear, only: worn_angle, worn_angle_slope
+  use interlock_wear, only: worn_angle, worn_angle_slope, wear_root_t, wear_root_begin, &
+      wear_root_update
   implicit none
   private
   public :: plane_t, plane_step
@@ -163,61 +164,28 @@ contains
     real(dp), intent(out) :: zeta, theta, c, sn, sl(2), thp, fp
     integer, intent(out) :: iterations
     logical, intent(out) :: ok
-    real(dp) :: lo, hi, x, f, g0, width, xn, scale
-    integer :: n
+    type(wear_root_t) :: rt
+    real(dp) :: f
 
     ok = .true.
     iterations = 0
     ! At zeta_o: theta = theta_o (stored), no exponential needed.
-    x = zeta_o
     theta = theta_o
     thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), theta_o)
-    call wear_residual(mat, k, s, beta_o, sf_o, zeta_o, x, .false., theta, thp, r, c, sn, sl, f, fp)
-    g0 = -f
-    zeta = x
-    if (.not. (g0 > 0.0_dp)) return      ! no frictional work: zeta stays, F = 0 exactly
-    lo = zeta_o
-    width = g0
-    n = 0
+    call wear_residual(mat, k, s, beta_o, sf_o, zeta_o, zeta_o, .false., theta, thp, r, c, sn, sl, &
+                       f, fp)
+    zeta = zeta_o
+    if (.not. (-f > 0.0_dp)) return      ! no frictional work: zeta stays, F = 0 exactly
+    call wear_root_begin(rt, zeta_o, -f)
     do
-      hi = zeta_o + width
-      call wear_residual(mat, k, s, beta_o, sf_o, zeta_o, hi, .true., theta, thp, r, c, sn, sl, f, fp)
-      if (f >= 0.0_dp) exit
-      lo = hi
-      width = 2.0_dp * width
-      n = n + 1
-      if (n > 200) then
-        ok = .false.
-        return
-      end if
+      call wear_residual(mat, k, s, beta_o, sf_o, zeta_o, rt%x, .true., theta, thp, r, c, sn, sl, &
+                         f, fp)
+      call wear_root_update(rt, f, fp, solver%newton_tol, solver%newton_max_iterations)
+      if (rt%done) exit
     end do
-    x = hi
-    scale = max(abs(x), g0)
-    do
-      if (abs(f) <= solver%newton_tol * scale) exit
-      iterations = iterations + 1
-      if (iterations > solver%newton_max_iterations) then
-        ok = .false.
-        return
-      end if
-      if (fp > 0.0_dp) then
-        xn = x - f / fp
-      else
-        xn = lo - 1.0_dp
-      end if
-      if (.not. (xn > lo .and. xn < hi)) xn = 0.5_dp * (lo + hi)
-      if (.not. (abs(xn - x) > 0.0_dp)) exit   ! cannot move: at round-off
-      x = xn
-      call wear_residual(mat, k, s, beta_o, sf_o, zeta_o, x, .true., theta, thp, r, c, sn, sl, f, fp)
-      if (f < 0.0_dp) then
-        lo = x
-      else
-        hi = x
-      end if
-      if (hi - lo <= 4.0_dp * epsilon(1.0_dp) * abs(x)) exit
-    end do
-    zeta = x
-    ok = fp > 0.0_dp
+    zeta = rt%x
+    iterations = rt%iterations
+    ok = rt%ok
   end subroutine solve_wear
 
   !> F(z) = z - zeta_o - g(theta(z)) and F'(z) for plane k (theta and its slope kept as given

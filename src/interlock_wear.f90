@@ -5,6 +5,21 @@ module interlock_wear
   implicit none
   private
   public :: worn_angle, worn_angle_slope
+  public :: wear_root_t, wear_root_begin, wear_root_update
+
+  !> The backward-Euler wear equation of one plane, F(zeta) = zeta - zeta_o - g(theta(zeta)) = 0
+  !> (g the frictional work in the step, >= 0), solved by reverse communication: the caller
+  !> evaluates F and F' at `x` and calls wear_root_update until `done`. F(zeta_o) = -g0 <= 0;
+  !> the root is bracketed from zeta_o upwards (doubling steps) and found by Newton's method
+  !> safeguarded by bisection, so it cannot diverge. `ok` is false when a bound was reached.
+  type :: wear_root_t
+    real(dp) :: zeta_o = 0.0_dp, x = 0.0_dp, lo = 0.0_dp, hi = 0.0_dp, width = 0.0_dp
+    real(dp) :: scale = 0.0_dp
+    logical :: bracketed = .false., done = .false., ok = .true.
+    integer :: iterations = 0, expansions = 0
+  end type wear_root_t
+
+  integer, parameter :: max_expansions = 200
 
 contains
 
@@ -23,5 +38,74 @@ contains
     real(dp), intent(in) :: thetaf, inv_zeta0, theta
     worn_angle_slope = -(theta - thetaf) * inv_zeta0
   end function worn_angle_slope
+
+  !> Start from F(zeta_o) = -g0 (g0 > 0): the first point to evaluate is zeta_o + g0.
+  pure subroutine wear_root_begin(rt, zeta_o, g0)
+    type(wear_root_t), intent(out) :: rt
+    real(dp), intent(in) :: zeta_o, g0
+    rt%zeta_o = zeta_o
+    rt%lo = zeta_o
+    rt%width = g0
+    rt%scale = g0
+    rt%x = zeta_o + g0
+  end subroutine wear_root_begin
+
+  !> F = f and F' = fp at rt%x: the next point in rt%x, or rt%done (root at rt%x when rt%ok).
+  pure subroutine wear_root_update(rt, f, fp, tol, max_iterations)
+    type(wear_root_t), intent(inout) :: rt
+    real(dp), intent(in) :: f, fp, tol
+    integer, intent(in) :: max_iterations
+    real(dp) :: xn
+    if (.not. rt%bracketed) then
+      if (f < 0.0_dp) then
+        rt%lo = rt%x
+        rt%width = 2.0_dp * rt%width
+        rt%x = rt%zeta_o + rt%width
+        rt%expansions = rt%expansions + 1
+        if (rt%expansions > max_expansions) call finish(rt, .false.)
+        return
+      end if
+      rt%hi = rt%x
+      rt%bracketed = .true.
+      rt%scale = max(abs(rt%x), rt%scale)
+    else
+      if (f < 0.0_dp) then
+        rt%lo = rt%x
+      else
+        rt%hi = rt%x
+      end if
+      if (rt%hi - rt%lo <= 4.0_dp * epsilon(1.0_dp) * abs(rt%x)) then
+        call finish(rt, fp > 0.0_dp)
+        return
+      end if
+    end if
+    if (abs(f) <= tol * rt%scale) then
+      call finish(rt, fp > 0.0_dp)
+      return
+    end if
+    rt%iterations = rt%iterations + 1
+    if (rt%iterations > max_iterations) then
+      call finish(rt, .false.)
+      return
+    end if
+    if (fp > 0.0_dp) then
+      xn = rt%x - f / fp
+    else
+      xn = rt%lo - 1.0_dp
+    end if
+    if (.not. (xn > rt%lo .and. xn < rt%hi)) xn = 0.5_dp * (rt%lo + rt%hi)
+    if (.not. (abs(xn - rt%x) > 0.0_dp)) then
+      call finish(rt, fp > 0.0_dp)     ! cannot move: at round-off
+      return
+    end if
+    rt%x = xn
+  end subroutine wear_root_update
+
+  pure subroutine finish(rt, ok)
+    type(wear_root_t), intent(inout) :: rt
+    logical, intent(in) :: ok
+    rt%done = .true.
+    rt%ok = ok
+  end subroutine finish
 
 end module interlock_wear

@@ -1,0 +1,871 @@
+!> interlock-bench: what accuracy costs in time.
+!>
+!> 1. Cost per call of interlock_update (traction + tangent) for each effect set and scheme,
+!>    over precomputed separation histories, as the median of interleaved repetitions, and the
+!>    same as a ratio to a minimal bilinear cohesive law timed in the same run.
+!> 2. Work-precision of every scheme/tolerance on the paper's Fig. 11, Fig. 12 and granite
+!>    scenes at constant normal traction: error against a converged reference versus CPU time,
+!>    the observed order, and the CPU time each scheme needs for a given error.
+!>
+!> Usage: interlock-bench [--quick] [--out DIR] [--only cost|precision] [--target ERR]
+!> Writes DIR/cost.csv, DIR/work_precision.csv, DIR/reference.csv and DIR/wp_summary.csv.
+program interlock_bench
+  use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
+  use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
+      interlock_info_t, interlock_update, interlock_state_init, scheme_explicit, scheme_implicit, &
+      scheme_name, status_ok, interlock_version_string
+  use interlock_bench_bilinear, only: bilinear_t, bilinear_state_t, bilinear_setup, bilinear_update
+  use interlock_bench_scenes, only: scene_t, make_scene, run_scene, slip_at, n_effect_sets, &
+      effect_set_names, make_effect_set, make_histories
+  implicit none
+
+  integer, parameter :: n_scenes = 3
+  character(len=8), parameter :: scene_names(n_scenes) = [character(len=8) :: &
+    'fig11', 'fig12', 'granite']
+  logical :: quick, do_cost, do_precision
+  character(len=16) :: dump_scene, dump_scheme
+  real(dp) :: dump_tol
+  integer :: dump_steps, profile_set, profile_scheme, profile_passes
+  character(len=512) :: out_dir
+  real(dp) :: target_error
+  integer :: problems
+
+  call parse_arguments()
+  problems = 0
+  if (len_trim(dump_scene) > 0) then
+    call dump_history()
+    stop
+  end if
+  if (profile_set >= 0) then
+    call profile_run()
+    stop
+  end if
+  write (output_unit, '(a)') 'interlock-bench (interlock ' // interlock_version_string // ')' // &
+    merge(' --quick', '        ', quick)
+  if (do_cost) call cost_study()
+  if (do_precision) call precision_study()
+  if (problems > 0) then
+    write (error_unit, '(a,i0,a)') 'interlock-bench: ', problems, ' problem(s), see above'
+    error stop 1
+  end if
+
+contains
+
+  subroutine parse_arguments()
+    integer :: i, n, ios
+    character(len=512) :: arg, val
+    quick = .false.
+    do_cost = .true.
+    do_precision = .true.
+    out_dir = '.'
+    target_error = 1.0e-4_dp
+    dump_scene = ''
+    profile_set = -1
+    n = command_argument_count()
+    i = 1
+    do while (i <= n)
+      call get_command_argument(i, arg)
+      select case (trim(arg))
+      case ('--quick')
+        quick = .true.
+      case ('--out', '--only', '--target')
+        if (i == n) call usage('missing value after ' // trim(arg))
+        call get_command_argument(i + 1, val)
+        i = i + 1
+        select case (trim(arg))
+        case ('--out')
+          out_dir = val
+        case ('--only')
+          do_cost = trim(val) == 'cost'
+          do_precision = trim(val) == 'precision'
+          if (.not. (do_cost .or. do_precision)) call usage('--only takes cost or precision')
+        case ('--target')
+          read (val, *, iostat=ios) target_error
+          if (ios /= 0 .or. .not. target_error > 0.0_dp) call usage('--target takes a positive error')
+        end select
+      case ('--history')
+        if (i + 4 > n) call usage('--history takes SCENE SCHEME TOL N')
+        call get_command_argument(i + 1, dump_scene)
+        call get_command_argument(i + 2, dump_scheme)
+        call get_command_argument(i + 3, val)
+        read (val, *, iostat=ios) dump_tol
+        if (ios /= 0) call usage('--history: TOL must be a number (0: no substepping)')
+        call get_command_argument(i + 4, val)
+        read (val, *, iostat=ios) dump_steps
+        if (ios /= 0 .or. dump_steps < 1) call usage('--history: N must be a positive integer')
+        i = i + 4
+      case ('--profile')
+        if (i + 3 > n) call usage('--profile takes SET SCHEME PASSES')
+        call get_command_argument(i + 1, val)
+        read (val, *, iostat=ios) profile_set
+        if (ios /= 0 .or. profile_set < 0 .or. profile_set > n_effect_sets) &
+          call usage('--profile: SET is 0 (bilinear) .. 5 (full model)')
+        call get_command_argument(i + 2, val)
+        read (val, *, iostat=ios) profile_scheme
+        if (ios /= 0 .or. (profile_scheme /= scheme_explicit .and. profile_scheme /= scheme_implicit)) &
+          call usage('--profile: SCHEME is 1 (explicit) or 2 (implicit)')
+        call get_command_argument(i + 3, val)
+        read (val, *, iostat=ios) profile_passes
+        if (ios /= 0 .or. profile_passes < 1) call usage('--profile: PASSES must be positive')
+        i = i + 3
+      case ('-h', '--help')
+        call usage('')
+      case default
+        call usage('unknown argument ' // trim(arg))
+      end select
+      i = i + 1
+    end do
+  end subroutine parse_arguments
+
+  subroutine usage(message)
+    character(len=*), intent(in) :: message
+    if (len_trim(message) > 0) write (error_unit, '(a)') 'interlock-bench: ' // message
+    write (error_unit, '(a)') 'usage: interlock-bench [--quick] [--out DIR] ' // &
+      '[--only cost|precision] [--target ERR]'
+    write (error_unit, '(a)') '       interlock-bench --profile SET SCHEME PASSES  ' // &
+      '(one cost configuration only, for valgrind/gprof: SET 0 bilinear, 1..5 effect sets; ' // &
+      'SCHEME 1 explicit, 2 implicit; 4000-point histories)'
+    write (error_unit, '(a)') '       interlock-bench --history SCENE SCHEME TOL N  ' // &
+      '(one run of a scene as CSV on stdout; SCENE fig11|fig12|granite, SCHEME explicit|implicit)'
+    write (error_unit, '(a)') '  writes DIR/cost.csv, DIR/work_precision.csv, ' // &
+      'DIR/reference.csv, DIR/wp_summary.csv (DIR must exist; default .)'
+    if (len_trim(message) > 0) error stop 2
+    stop
+  end subroutine usage
+
+  pure function path(name) result(p)
+    character(len=*), intent(in) :: name
+    character(len=:), allocatable :: p
+    p = trim(out_dir) // '/' // name
+  end function path
+
+  subroutine open_csv(name, unit, header)
+    character(len=*), intent(in) :: name, header
+    integer, intent(out) :: unit
+    integer :: ios
+    character(len=256) :: msg
+    open (newunit=unit, file=path(name), status='replace', action='write', iostat=ios, iomsg=msg)
+    if (ios /= 0) then
+      write (error_unit, '(a)') 'interlock-bench: cannot write ' // path(name) // ': ' // trim(msg)
+      error stop 2
+    end if
+    write (unit, '(a)') header
+  end subroutine open_csv
+
+  pure function fmt_tol(tol) result(s)
+    real(dp), intent(in) :: tol
+    character(len=8) :: s
+    if (tol > 0.0_dp) then
+      write (s, '(es8.0)') tol
+      s = adjustl(s)
+    else
+      s = 'none'
+    end if
+  end function fmt_tol
+
+  !> One run of a scene, as CSV on standard output: time, s_N, s_T, sigma_T.
+  subroutine dump_history()
+    type(scene_t) :: sc
+    type(interlock_solver_t) :: solver
+    real(dp), allocatable :: sn(:), st(:)
+    integer :: stat, i, updates, max_newton
+    logical :: ok
+    character(len=256) :: message
+    real(dp) :: t, resid
+    call make_scene(trim(dump_scene), sc, stat, message)
+    if (stat /= status_ok) call usage(trim(message))
+    select case (trim(dump_scheme))
+    case ('explicit')
+      solver%scheme = scheme_explicit
+    case ('implicit')
+      solver%scheme = scheme_implicit
+    case default
+      call usage('--history: SCHEME must be explicit or implicit')
+    end select
+    solver%substep_tol = dump_tol
+    allocate (sn(0:dump_steps), st(0:dump_steps))
+    call run_scene(sc, solver, dump_steps, 1, sn, st, ok, updates, max_newton, resid, message)
+    write (output_unit, '(a)') 'time,s_N,s_T,sigma_T'
+    do i = 0, dump_steps
+      t = sc%knot_t(sc%n_knots) * real(i, dp) / real(dump_steps, dp)
+      write (output_unit, '(es22.14,3(",",es22.14))') t, sn(i), slip_at(sc, t), st(i)
+    end do
+    write (error_unit, '(a,i0,a,es9.2)') 'updates: ', updates, '; largest normal-traction ' // &
+      'residual accepted (relative): ', resid
+    if (.not. ok) then
+      write (error_unit, '(a)') 'the run failed: ' // trim(message)
+      error stop 3
+    end if
+  end subroutine dump_history
+
+  !> Run one configuration of the cost study PASSES times over the histories (nothing timed):
+  !> for a profiler, e.g. valgrind --tool=callgrind interlock-bench --profile 5 1 20.
+  subroutine profile_run()
+    type(interlock_material_t) :: mat
+    type(interlock_solver_t) :: solver
+    real(dp), allocatable :: h(:, :, :)
+    real(dp) :: chk
+    integer :: k, stat, fails, nsub
+    character(len=256) :: message
+    allocate (h(2, 4000, 3))
+    call make_histories(4000, h)
+    call make_effect_set(max(1, profile_set), mat, stat, message)
+    if (stat /= status_ok) call usage(trim(message))
+    solver%scheme = profile_scheme
+    chk = 0.0_dp
+    fails = 0
+    do k = 1, profile_passes
+      if (profile_set == 0) then
+        call time_bilinear(mat, h, chk)
+      else
+        call time_interlock(mat, solver, h, chk, fails, nsub)
+      end if
+    end do
+    write (output_unit, '(a,i0,a,es22.15)') 'calls: ', 12000 * profile_passes, '; checksum ', chk
+  end subroutine profile_run
+
+  ! ------------------------------------------------------------------------------------------
+  ! 1. Cost per call
+  ! ------------------------------------------------------------------------------------------
+
+  subroutine cost_study()
+    integer, parameter :: n_cfg = 2 * n_effect_sets + 2
+    type(interlock_material_t) :: mats(n_effect_sets)
+    type(interlock_solver_t) :: solvers(n_cfg)
+    integer :: cfg_set(n_cfg), npts, reps, rep, c, stat, u, fails, nsub, k, inner(0:n_cfg)
+    real(dp) :: min_rep
+    real(dp), allocatable :: h(:, :, :), times(:, :)
+    real(dp) :: t0, t1, chk(0:n_cfg), ns(0:n_cfg), ns_lo(0:n_cfg), ns_hi(0:n_cfg), calls, dev
+    real(dp) :: subs(n_cfg), chk_pass
+    character(len=256) :: message
+    character(len=24) :: label
+
+    npts = merge(100, 4000, quick)
+    reps = merge(3, 21, quick)
+    min_rep = merge(0.0_dp, 0.004_dp, quick)
+    allocate (h(2, npts, 3), times(reps, 0:n_cfg))
+    call make_histories(npts, h)
+    calls = real(3 * npts, dp)
+    do c = 1, n_effect_sets
+      call make_effect_set(c, mats(c), stat, message)
+      if (stat /= status_ok) then
+        write (error_unit, '(a)') 'effect set ' // trim(effect_set_names(c)) // ': ' // trim(message)
+        error stop 2
+      end if
+    end do
+    ! Configurations: (set, explicit), (set, implicit) for every set, then the full model with
+    ! substepping at tol = 1e-3 for both schemes.
+    do c = 1, n_effect_sets
+      cfg_set(2 * c - 1) = c
+      cfg_set(2 * c) = c
+      solvers(2 * c - 1)%scheme = scheme_explicit
+      solvers(2 * c)%scheme = scheme_implicit
+    end do
+    cfg_set(n_cfg - 1:n_cfg) = n_effect_sets
+    solvers(n_cfg - 1)%scheme = scheme_explicit
+    solvers(n_cfg)%scheme = scheme_implicit
+    solvers(n_cfg - 1)%substep_tol = 1.0e-3_dp
+    solvers(n_cfg)%substep_tol = 1.0e-3_dp
+
+    ! The baseline must compute what the damage-only set computes (else the ratio means nothing).
+    dev = baseline_deviation(mats(1), h)
+    write (output_unit, '(/,a,i0,a,i0,a)') '== Cost per call: 3 histories x ', npts, &
+      ' points, median of ', reps, ' interleaved repetitions (CPU time)'
+    write (output_unit, '(a,es9.2)') 'bilinear baseline vs damage-only set, max relative ' // &
+      'difference of traction and tangent: ', dev
+    if (.not. dev < 1.0e-12_dp) then
+      write (error_unit, '(a)') 'the bilinear baseline does not reproduce the damage-only set'
+      problems = problems + 1
+    end if
+
+    chk = 0.0_dp
+    fails = 0
+    subs = 0.0_dp
+    ! Rep 0 warms up, is not timed, and sets how many passes over the histories one timed
+    ! repetition makes (inner), so that each timing spans at least min_rep CPU seconds.
+    inner = 1
+    nsub = 0
+    do rep = 0, reps
+      call cpu_time(t0)
+      do k = 1, inner(0)
+        call time_bilinear(mats(1), h, chk(0))
+      end do
+      call cpu_time(t1)
+      call record_time(rep, 0, t1 - t0, min_rep, inner, times)
+      do c = 1, n_cfg
+        call cpu_time(t0)
+        do k = 1, inner(c)
+          call time_interlock(mats(cfg_set(c)), solvers(c), h, chk(c), fails, nsub)
+        end do
+        call cpu_time(t1)
+        call record_time(rep, c, t1 - t0, min_rep, inner, times)
+        subs(c) = real(nsub, dp) / calls
+      end do
+      if (rep == 0) chk_pass = sum(chk)   ! one pass of everything: reproducible
+    end do
+    if (fails > 0) then
+      write (error_unit, '(a,i0,a)') 'cost study: ', fails, ' updates failed'
+      problems = problems + 1
+    end if
+    do c = 0, n_cfg
+      ns(c) = 1.0e9_dp * median(times(:, c)) / calls
+      ns_lo(c) = 1.0e9_dp * minval(times(:, c)) / calls
+      ns_hi(c) = 1.0e9_dp * maxval(times(:, c)) / calls
+    end do
+
+    call open_csv('cost.csv', u, 'effect_set,scheme,substep_tol,ns_per_call,ratio_to_bilinear,' // &
+      'ns_min,ns_max,mean_substeps,calls_per_rep,reps,checksum')
+    write (output_unit, '(a24,1x,a8,1x,a6,3(1x,a10),1x,a10,1x,a8)') 'effect set', 'scheme', 'subtol', &
+      'ns/call', 'min', 'max', 'x bilinear', 'substeps'
+    write (output_unit, '(a24,1x,a8,1x,a6,3(1x,f10.1),1x,f10.2,1x,a8)') 'bilinear (baseline)', '-', &
+      '-', ns(0), ns_lo(0), ns_hi(0), 1.0_dp, '-'
+    write (u, '(a,",",es12.5,",",f8.4,2(",",es12.5),",",f8.4,",",i0,",",i0,",",es22.15)') &
+      'bilinear,-,none', ns(0), 1.0_dp, ns_lo(0), ns_hi(0), 1.0_dp, nint(calls), reps, chk(0)
+    do c = 1, n_cfg
+      label = effect_set_names(cfg_set(c))
+      write (output_unit, '(a24,1x,a8,1x,a6,3(1x,f10.1),1x,f10.2,1x,f8.2)') label, &
+        scheme_name(solvers(c)%scheme), fmt_tol(solvers(c)%substep_tol), ns(c), ns_lo(c), ns_hi(c), &
+        ns(c) / ns(0), subs(c)
+      write (u, '(a,",",a,",",a,",",es12.5,",",f8.4,2(",",es12.5),",",f8.4,",",i0,",",i0,",",es22.15)') &
+        trim(label), scheme_name(solvers(c)%scheme), trim(fmt_tol(solvers(c)%substep_tol)), ns(c), &
+        ns(c) / ns(0), ns_lo(c), ns_hi(c), subs(c), nint(calls), reps, chk(c)
+    end do
+    close (u)
+    write (output_unit, '(a,es22.15,a,es12.5,a)') 'checksum (sum of tractions and tangents, one ' // &
+      'pass of every configuration): ', chk_pass, ' (all passes: ', sum(chk), ')'
+    write (output_unit, '(a)') 'targets: damage-only <= 1.3 x bilinear: ' // &
+      verdict(ns(1) / ns(0) <= 1.3_dp) // ' (explicit ' // fmt_ratio(ns(1) / ns(0)) // &
+      ', implicit ' // fmt_ratio(ns(2) / ns(0)) // '); full model explicit <= 4 x: ' // &
+      verdict(ns(2 * n_effect_sets - 1) / ns(0) <= 4.0_dp) // ' (' // &
+      fmt_ratio(ns(2 * n_effect_sets - 1) / ns(0)) // ')'
+  end subroutine cost_study
+
+  !> Store the time of one repetition (per pass); rep 0 (warm-up) sets the passes per repetition.
+  pure subroutine record_time(rep, c, dt, min_rep, inner, times)
+    integer, intent(in) :: rep, c
+    real(dp), intent(in) :: dt, min_rep
+    integer, intent(inout) :: inner(0:)
+    real(dp), intent(inout) :: times(:, 0:)
+    if (rep > 0) then
+      times(rep, c) = dt / inner(c)
+    else
+      inner(c) = max(1, min(1000, ceiling(min_rep / max(dt, 1.0e-7_dp))))
+    end if
+  end subroutine record_time
+
+  pure function verdict(ok) result(s)
+    logical, intent(in) :: ok
+    character(len=:), allocatable :: s
+    s = merge('met   ', 'MISSED', ok)
+    s = trim(s)
+  end function verdict
+
+  pure function fmt_ratio(x) result(s)
+    real(dp), intent(in) :: x
+    character(len=:), allocatable :: s
+    character(len=16) :: b
+    write (b, '(f8.2,"x")') x
+    s = trim(adjustl(b))
+  end function fmt_ratio
+
+  subroutine time_interlock(mat, solver, h, chk, fails, nsub)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    real(dp), intent(in) :: h(:, :, :)
+    real(dp), intent(inout) :: chk
+    integer, intent(inout) :: fails
+    integer, intent(out) :: nsub
+    type(interlock_state_t) :: st(2)
+    type(interlock_info_t) :: info
+    real(dp) :: sig(2), tangent(2, 2), acc
+    integer :: ih, i, cur
+    acc = 0.0_dp
+    nsub = 0
+    do ih = 1, size(h, 3)
+      call interlock_state_init(mat, st(1))
+      cur = 1
+      do i = 1, size(h, 2)
+        call interlock_update(mat, solver, h(:, i, ih), st(cur), st(3 - cur), sig, tangent, info)
+        if (info%status /= status_ok) fails = fails + 1
+        nsub = nsub + info%substeps
+        acc = acc + (sig(1) + sig(2)) + (tangent(1, 1) + tangent(2, 2)) + &
+              (tangent(1, 2) + tangent(2, 1))
+        cur = 3 - cur
+      end do
+    end do
+    chk = chk + acc
+  end subroutine time_interlock
+
+  subroutine time_bilinear(mat, h, chk)
+    type(interlock_material_t), intent(in) :: mat
+    real(dp), intent(in) :: h(:, :, :)
+    real(dp), intent(inout) :: chk
+    type(bilinear_t) :: law
+    type(bilinear_state_t) :: st(2)
+    real(dp) :: sig(2), tangent(2, 2), acc
+    integer :: ih, i, cur
+    call bilinear_setup(mat, law)
+    acc = 0.0_dp
+    do ih = 1, size(h, 3)
+      st(1) = bilinear_state_t()
+      cur = 1
+      do i = 1, size(h, 2)
+        call bilinear_update(law, h(:, i, ih), st(cur), st(3 - cur), sig, tangent)
+        acc = acc + (sig(1) + sig(2)) + (tangent(1, 1) + tangent(2, 2)) + &
+              (tangent(1, 2) + tangent(2, 1))
+        cur = 3 - cur
+      end do
+    end do
+    chk = chk + acc
+  end subroutine time_bilinear
+
+  !> Largest difference between the bilinear baseline and interlock's damage-only set over
+  !> the histories (traction and tangent, each relative to its largest magnitude).
+  real(dp) function baseline_deviation(mat, h) result(dev)
+    type(interlock_material_t), intent(in) :: mat
+    real(dp), intent(in) :: h(:, :, :)
+    type(interlock_solver_t) :: solver
+    type(bilinear_t) :: law
+    type(bilinear_state_t) :: b(2)
+    type(interlock_state_t) :: st(2)
+    type(interlock_info_t) :: info
+    real(dp) :: sig_a(2), sig_b(2), tan_a(2, 2), tan_b(2, 2), dsig, dtan, msig, mtan
+    integer :: ih, i, cur
+    call bilinear_setup(mat, law)
+    dsig = 0.0_dp
+    dtan = 0.0_dp
+    msig = tiny(1.0_dp)
+    mtan = tiny(1.0_dp)
+    do ih = 1, size(h, 3)
+      call interlock_state_init(mat, st(1))
+      b(1) = bilinear_state_t()
+      cur = 1
+      do i = 1, size(h, 2)
+        call interlock_update(mat, solver, h(:, i, ih), st(cur), st(3 - cur), sig_a, tan_a, info)
+        call bilinear_update(law, h(:, i, ih), b(cur), b(3 - cur), sig_b, tan_b)
+        dsig = max(dsig, maxval(abs(sig_a - sig_b)))
+        dtan = max(dtan, maxval(abs(tan_a - tan_b)))
+        msig = max(msig, maxval(abs(sig_b)))
+        mtan = max(mtan, maxval(abs(tan_b)))
+        cur = 3 - cur
+      end do
+    end do
+    dev = max(dsig / msig, dtan / mtan)
+  end function baseline_deviation
+
+  pure real(dp) function median(x)
+    real(dp), intent(in) :: x(:)
+    real(dp) :: y(size(x)), t
+    integer :: i, j, n
+    n = size(x)
+    y = x
+    do i = 2, n            ! insertion sort: n is small
+      t = y(i)
+      j = i - 1
+      do while (j >= 1)
+        if (.not. y(j) > t) exit
+        y(j + 1) = y(j)
+        j = j - 1
+      end do
+      y(j + 1) = t
+    end do
+    if (mod(n, 2) == 1) then
+      median = y((n + 1) / 2)
+    else
+      median = 0.5_dp * (y(n / 2) + y(n / 2 + 1))
+    end if
+  end function median
+
+  ! ------------------------------------------------------------------------------------------
+  ! 2. Work-precision
+  ! ------------------------------------------------------------------------------------------
+
+  subroutine precision_study()
+    real(dp), allocatable :: tols_explicit(:), tols_implicit(:)
+    integer :: jmax, ref_shift, n_cfg, is, c, j, n_grid, n, u, ur, us
+    integer :: updates, max_newton, runs
+    type(scene_t) :: sc
+    type(interlock_solver_t), allocatable :: solvers(:)
+    real(dp), allocatable :: ref_sn(:), ref_st(:), sn(:), st(:)
+    real(dp), allocatable :: err(:, :), cpu(:, :), prev_sn(:), prev_st(:), r_sn(:), r_st(:)
+    logical, allocatable :: okr(:, :)
+    character(len=24), allocatable :: labels(:)
+    character(len=10), allocatable :: tol_names(:)
+    integer, allocatable :: scheme_of(:)
+    integer :: n_all, cr, prev_updates
+    real(dp) :: e_st, e_sn, e_curve, min_time, order, cost_t, cost_explicit, best_cost, uncert, plain, resid
+    character(len=256) :: why
+    integer :: best_c, stat
+    logical :: ok, reached, extrapolated, rich
+    character(len=256) :: message
+    character(len=24) :: label
+
+    if (quick) then
+      jmax = 2
+      ref_shift = 4
+      tols_explicit = [0.0_dp, 1.0e-2_dp]
+      tols_implicit = [0.0_dp, 1.0e-2_dp]
+      min_time = 0.0_dp
+    else
+      jmax = 10
+      ref_shift = 4
+      ! (explicit substepping at 1e-5 costs ~10 s per run for no gain: left out)
+      tols_explicit = [0.0_dp, 1.0e-2_dp, 1.0e-3_dp, 1.0e-4_dp]
+      tols_implicit = [0.0_dp, 1.0e-2_dp, 1.0e-3_dp, 1.0e-4_dp, 1.0e-5_dp]
+      min_time = 0.05_dp
+    end if
+    ! Configurations run: each scheme with uniform steps and with substepping; then two
+    ! derived ones: global Richardson extrapolation 2 u(2n) - u(n) of the uniform-step runs of
+    ! each scheme (the runs at n and 2n are both timed: its cost is their sum).
+    n_cfg = size(tols_explicit) + size(tols_implicit)
+    n_all = n_cfg + 2
+    allocate (solvers(n_cfg), err(0:jmax, n_all), cpu(0:jmax, n_all), okr(0:jmax, n_all), &
+              labels(n_all), tol_names(n_all), scheme_of(n_all))
+    do c = 1, n_cfg
+      if (c <= size(tols_explicit)) then     ! configuration 1 is the paper's: explicit, uniform
+        solvers(c)%scheme = scheme_explicit
+        solvers(c)%substep_tol = tols_explicit(c)
+      else
+        solvers(c)%scheme = scheme_implicit
+        solvers(c)%substep_tol = tols_implicit(c - size(tols_explicit))
+      end if
+      scheme_of(c) = solvers(c)%scheme
+      tol_names(c) = fmt_tol(solvers(c)%substep_tol)
+      labels(c) = trim(scheme_name(scheme_of(c))) // ' ' // trim(tol_names(c))
+    end do
+    scheme_of(n_cfg + 1:) = [scheme_explicit, scheme_implicit]
+    tol_names(n_cfg + 1:) = 'richardson'
+    do c = n_cfg + 1, n_all
+      labels(c) = trim(scheme_name(scheme_of(c))) // ' Richardson'
+    end do
+
+    write (output_unit, '(/,a)') '== Work-precision: error = max over the history of ' // &
+      '|sigma_T - ref| / max|sigma_T,ref| and |s_N - ref| / max|s_N,ref|, at every step of the run'
+    call open_csv('work_precision.csv', u, 'scene,scheme,substep_tol,config,n_steps,cpu_s,error,' // &
+      'error_sigma_t,error_s_n,updates,runs_timed,max_normal_residual,ok,error_curve')
+    call open_csv('reference.csv', ur, 'scene,n_reference,uncertainty,plain_error_at_n_reference,' // &
+      'order_check')
+    call open_csv('wp_summary.csv', us, 'scene,scheme,substep_tol,config,observed_order,' // &
+      'cpu_s_at_target,target_error,explicit_uniform_over_this,explicit_extrapolated')
+
+    do is = 1, n_scenes
+      call make_scene(trim(scene_names(is)), sc, stat, message)
+      if (stat /= status_ok) then
+        write (error_unit, '(a)') trim(message)
+        error stop 2
+      end if
+      n_grid = sc%base_steps * 2**jmax
+      allocate (ref_sn(0:n_grid), ref_st(0:n_grid))
+      call make_reference(sc, n_grid, ref_shift, ref_sn, ref_st, uncert, plain, order)
+      write (output_unit, '(/,a)') trim(sc%title)
+      write (output_unit, '(a,i0,a,i0,a,es9.2,a,es9.2,a,f5.2,a)') '  reference: Richardson of ' // &
+        'implicit at ', n_grid * 2**ref_shift, ' and ', n_grid * 2**(ref_shift + 1), &
+        ' steps; uncertainty ', uncert, ' (vs the pair one level coarser); plain implicit at ', &
+        plain, ' (observed order ', order, ')'
+      flush (output_unit)
+      write (ur, '(a,",",i0,",",es12.5,",",es12.5,",",f8.4)') trim(sc%name), &
+        n_grid * 2**(ref_shift + 1), uncert, plain, order
+      if (.not. uncert < merge(5.0e-3_dp, 1.0e-5_dp, quick)) then
+        write (error_unit, '(a)') '  the reference of ' // trim(sc%name) // ' is not converged'
+        problems = problems + 1
+      end if
+      write (output_unit, '(a20,1x,a7,2x,a)') 'scheme / substep tol', 'order', &
+        'error (cpu ms) at n_steps = base * 2**j'
+
+      okr = .false.
+      err = huge(1.0_dp)
+      cpu = 0.0_dp
+      allocate (prev_sn(0:n_grid), prev_st(0:n_grid), r_sn(0:n_grid), r_st(0:n_grid))
+      prev_sn = 0.0_dp
+      prev_st = 0.0_dp
+      prev_updates = 0
+      do c = 1, n_cfg
+        label = labels(c)
+        cr = 0
+        if (.not. solvers(c)%substep_tol > 0.0_dp) cr = n_cfg + merge(1, 2, &
+          solvers(c)%scheme == scheme_explicit)
+        do j = 0, jmax
+          n = sc%base_steps * 2**j
+          allocate (sn(0:n), st(0:n))
+          call timed_run(sc, solvers(c), n, min_time, sn, st, ok, updates, max_newton, resid, why, &
+                         cpu(j, c), runs)
+          okr(j, c) = ok
+          if (ok) then
+            e_st = maxval(abs(st - ref_st(0:n_grid:n_grid / n))) / maxval(abs(ref_st))
+            e_sn = maxval(abs(sn - ref_sn(0:n_grid:n_grid / n))) / maxval(abs(ref_sn))
+            e_curve = max(interp_error(st, ref_st), interp_error(sn, ref_sn))
+          else
+            e_curve = huge(1.0_dp)
+            e_st = huge(1.0_dp)
+            e_sn = huge(1.0_dp)
+            if (j >= 2) problems = problems + 1
+            write (error_unit, '(a,i0,a)') '  ' // trim(sc%name) // ' ' // trim(label) // ' at ', n, &
+              ' steps failed: ' // trim(why)
+          end if
+          err(j, c) = max(e_st, e_sn)
+          if (.not. ok) resid = -1.0_dp
+          write (u, '(a,",",a,",",a,",",a,",",i0,4(",",es12.5),",",i0,",",i0,",",es12.5,",",l1,' // &
+            '",",es12.5)') &
+            trim(sc%name), scheme_name(solvers(c)%scheme), trim(fmt_tol(solvers(c)%substep_tol)), &
+            trim(label), n, cpu(j, c), err(j, c), e_st, e_sn, updates, runs, resid, ok, e_curve
+          if (cr > 0) then
+            ! Global Richardson extrapolation on the coarser grid, from this run and the last.
+            rich = .false.
+            if (j > 0) rich = ok .and. okr(j - 1, c)    ! (no short-circuit in Fortran)
+            if (rich) then
+              r_sn(0:n / 2) = 2.0_dp * sn(0:n:2) - prev_sn(0:n / 2)
+              r_st(0:n / 2) = 2.0_dp * st(0:n:2) - prev_st(0:n / 2)
+              e_st = maxval(abs(r_st(0:n / 2) - ref_st(0:n_grid:2 * n_grid / n))) / maxval(abs(ref_st))
+              e_sn = maxval(abs(r_sn(0:n / 2) - ref_sn(0:n_grid:2 * n_grid / n))) / maxval(abs(ref_sn))
+              e_curve = max(interp_error(r_st(0:n / 2), ref_st), interp_error(r_sn(0:n / 2), ref_sn))
+              err(j - 1, cr) = max(e_st, e_sn)
+              cpu(j - 1, cr) = cpu(j - 1, c) + cpu(j, c)
+              okr(j - 1, cr) = .true.
+              write (u, '(a,",",a,",",a,",",a,",",i0,4(",",es12.5),",",i0,",",i0,",",es12.5,",",' // &
+                'l1,",",es12.5)') trim(sc%name), scheme_name(scheme_of(cr)), trim(tol_names(cr)), &
+                trim(labels(cr)), n / 2, cpu(j - 1, cr), err(j - 1, cr), e_st, e_sn, &
+                updates + prev_updates, runs, 0.0_dp, .true., e_curve
+            end if
+            prev_sn(0:n) = sn
+            prev_st(0:n) = st
+            prev_updates = updates
+          end if
+          deallocate (sn, st)
+        end do
+      end do
+
+      ! Table: order, error and CPU time per step count (every other level on the terminal).
+      cost_explicit = cost_at(err(:, 1), cpu(:, 1), okr(:, 1), target_error, reached)
+      extrapolated = .false.
+      if (.not. reached) then
+        ! Beyond the finest run: first order in the step count (cost ~ n ~ 1/error), the
+        ! explicit scheme's observed order being ~1 (checked on the finer half of the levels).
+        order = observed_order(err(:, 1), okr(:, 1), sc%base_steps, jmax)
+        cost_explicit = -1.0_dp
+        if (okr(jmax, 1) .and. order > 0.5_dp) then
+          cost_explicit = cpu(jmax, 1) * (err(jmax, 1) / target_error)**(1.0_dp / order)
+          extrapolated = .true.
+        end if
+      end if
+      best_cost = huge(1.0_dp)
+      best_c = 0
+      do c = 1, n_all
+        label = labels(c)
+        order = observed_order(err(:, c), okr(:, c), sc%base_steps, merge(jmax, jmax - 1, c <= n_cfg))
+        write (output_unit, '(a20,1x,f7.2,2x)', advance='no') label, order
+        do j = 0, jmax, merge(1, 2, quick)
+          if (okr(j, c)) then
+            write (output_unit, '(es8.1,"(",f0.1,")",1x)', advance='no') err(j, c), 1.0e3_dp * cpu(j, c)
+          else if (c > n_cfg) then
+            write (output_unit, '(a,1x)', advance='no') '-'
+          else
+            write (output_unit, '(a,1x)', advance='no') 'failed'
+          end if
+        end do
+        write (output_unit, '(a)') ''
+        flush (output_unit)
+        cost_t = cost_at(err(:, c), cpu(:, c), okr(:, c), target_error, reached)
+        if (reached) then
+          if (cost_t < best_cost) then
+            best_cost = cost_t
+            best_c = c
+          end if
+          write (us, '(a,",",a,",",a,",",a,",",f8.4,",",es12.5,",",es9.2,",",es12.5,",",l1)') &
+            trim(sc%name), scheme_name(scheme_of(c)), trim(tol_names(c)), &
+            trim(label), order, cost_t, target_error, merge(cost_explicit / cost_t, -1.0_dp, &
+            cost_explicit > 0.0_dp), extrapolated
+        else
+          write (us, '(a,",",a,",",a,",",a,",",f8.4,",",a,",",es9.2,",",a)') &
+            trim(sc%name), scheme_name(scheme_of(c)), trim(tol_names(c)), &
+            trim(label), order, 'not reached', target_error, ',' // merge('T', 'F', extrapolated)
+        end if
+      end do
+      write (output_unit, '(a)') '  (columns: n_steps = ' // trim(steps_list(sc%base_steps, jmax, &
+        merge(1, 2, quick))) // ')'
+      if (best_c > 0) then
+        label = labels(best_c)
+        if (cost_explicit > 0.0_dp) then
+          write (output_unit, '(a,es8.1,a,es9.2,a,es9.2,a,f0.1,a)') '  CPU time for error ', &
+            target_error, ': explicit uniform ', cost_explicit, ' s' // &
+            trim(merge(' (extrapolated at the observed order)', '                                     ', &
+            extrapolated)) // '; best (' // trim(label) // &
+            ') ', best_cost, ' s: ', cost_explicit / best_cost, 'x cheaper'
+        else
+          write (output_unit, '(a,es8.1,a,es9.2,a)') '  CPU time for error ', target_error, &
+            ': explicit uniform does not reach it; best (' // trim(label) // ') ', best_cost, ' s'
+        end if
+      else
+        write (output_unit, '(a,es8.1)') '  no scheme reaches the error ', target_error
+      end if
+      deallocate (ref_sn, ref_st, prev_sn, prev_st, r_sn, r_st)
+    end do
+    close (u)
+    close (ur)
+    close (us)
+  end subroutine precision_study
+
+  !> The run's curve x(0:n), linearly interpolated between its steps, against the reference
+  !> at every point of the finest grid (size(ref) - 1 steps), relative to max |ref|: the error
+  !> of the curve a user would plot, which also sees what happens between coarse steps.
+  pure real(dp) function interp_error(x, ref) result(e)
+    real(dp), intent(in) :: x(0:), ref(0:)
+    integer :: n, n_grid, stride, k, i
+    real(dp) :: w, v
+    n = size(x) - 1
+    n_grid = size(ref) - 1
+    stride = n_grid / n
+    e = 0.0_dp
+    do k = 0, n_grid
+      i = k / stride
+      if (i >= n) then
+        v = x(n)
+      else
+        w = real(mod(k, stride), dp) / real(stride, dp)
+        v = (1.0_dp - w) * x(i) + w * x(i + 1)
+      end if
+      e = max(e, abs(v - ref(k)))
+    end do
+    e = e / maxval(abs(ref))
+  end function interp_error
+
+  pure function steps_list(base, jmax, stride) result(s)
+    integer, intent(in) :: base, jmax, stride
+    character(len=:), allocatable :: s
+    character(len=16) :: b
+    integer :: j
+    s = ''
+    do j = 0, jmax, stride
+      write (b, '(i0)') base * 2**j
+      s = s // trim(b) // merge(', ', '  ', j + stride <= jmax)
+    end do
+    s = trim(s)
+  end function steps_list
+
+  !> Run a scene repeatedly until min_time CPU seconds have passed; cpu = mean per run.
+  subroutine timed_run(sc, solver, n, min_time, sn, st, ok, updates, max_newton, resid, why, cpu, &
+                       runs)
+    type(scene_t), intent(in) :: sc
+    type(interlock_solver_t), intent(in) :: solver
+    integer, intent(in) :: n
+    real(dp), intent(in) :: min_time
+    real(dp), intent(out) :: sn(0:), st(0:), cpu, resid
+    character(len=*), intent(out) :: why
+    logical, intent(out) :: ok
+    integer, intent(out) :: updates, max_newton, runs
+    real(dp) :: t0, t1, total
+    total = 0.0_dp
+    runs = 0
+    do
+      call cpu_time(t0)
+      call run_scene(sc, solver, n, 1, sn, st, ok, updates, max_newton, resid, why)
+      call cpu_time(t1)
+      total = total + (t1 - t0)
+      runs = runs + 1
+      if (total >= min_time .or. .not. ok .or. runs >= 1000) exit
+    end do
+    cpu = total / runs
+  end subroutine timed_run
+
+  !> The reference on the finest run grid (n_grid steps): local Richardson extrapolation
+  !> 2 u(2m) - u(m) of the implicit scheme (first order) at m = n_grid 2**shift steps.
+  !> `uncert` compares it with the extrapolation one level coarser (m/2, m), `plain` is the
+  !> error of u(2m) itself, `order` = log2(|u(m) - R| / |u(2m) - R|).
+  subroutine make_reference(sc, n_grid, shift, ref_sn, ref_st, uncert, plain, order)
+    type(scene_t), intent(in) :: sc
+    integer, intent(in) :: n_grid, shift
+    real(dp), intent(out) :: ref_sn(0:), ref_st(0:), uncert, plain, order
+    type(interlock_solver_t) :: solver
+    real(dp), dimension(0:n_grid) :: a_sn, a_st, b_sn, b_st, c_sn, c_st
+    integer :: m, updates, max_newton
+    logical :: ok1, ok2, ok3
+    real(dp) :: ea, r1, r2, r3
+
+    solver%scheme = scheme_implicit
+    m = n_grid * 2**shift
+    call run_scene(sc, solver, m / 2, 2**(shift - 1), c_sn, c_st, ok1, updates, max_newton, r1)
+    call run_scene(sc, solver, m, 2**shift, a_sn, a_st, ok2, updates, max_newton, r2)
+    call run_scene(sc, solver, 2 * m, 2**(shift + 1), b_sn, b_st, ok3, updates, max_newton, r3)
+    if (.not. (ok1 .and. ok2 .and. ok3 .and. max(r1, r2, r3) < 1.0e-10_dp)) then
+      write (error_unit, '(a)') 'the reference run of ' // trim(sc%name) // ' failed'
+      error stop 3
+    end if
+    ref_sn = 2.0_dp * b_sn - a_sn
+    ref_st = 2.0_dp * b_st - a_st
+    uncert = rel_diff(ref_sn, ref_st, 2.0_dp * a_sn - c_sn, 2.0_dp * a_st - c_st)
+    plain = rel_diff(ref_sn, ref_st, b_sn, b_st)
+    ea = rel_diff(ref_sn, ref_st, a_sn, a_st)
+    order = log(ea / max(plain, tiny(1.0_dp))) / log(2.0_dp)
+  end subroutine make_reference
+
+  pure real(dp) function rel_diff(r_sn, r_st, x_sn, x_st) result(d)
+    real(dp), intent(in) :: r_sn(:), r_st(:), x_sn(:), x_st(:)
+    d = max(maxval(abs(x_sn - r_sn)) / maxval(abs(r_sn)), maxval(abs(x_st - r_st)) / maxval(abs(r_st)))
+  end function rel_diff
+
+  !> Slope of log(error) against log(n_steps) (least squares over the finer half of the levels),
+  !> as a positive order; 0 when fewer than two usable points.
+  pure real(dp) function observed_order(err, ok, base, jmax) result(order)
+    real(dp), intent(in) :: err(0:)
+    logical, intent(in) :: ok(0:)
+    integer, intent(in) :: base, jmax
+    real(dp) :: x, y, sx, sy, sxx, sxy
+    integer :: j, m
+    sx = 0.0_dp
+    sy = 0.0_dp
+    sxx = 0.0_dp
+    sxy = 0.0_dp
+    m = 0
+    do j = jmax / 2, jmax
+      if (.not. ok(j) .or. .not. err(j) > 0.0_dp) cycle
+      x = log(real(base, dp) * 2.0_dp**j)
+      y = log(err(j))
+      sx = sx + x
+      sy = sy + y
+      sxx = sxx + x * x
+      sxy = sxy + x * y
+      m = m + 1
+    end do
+    order = 0.0_dp
+    if (m >= 2) order = -(m * sxy - sx * sy) / (m * sxx - sx * sx)
+  end function observed_order
+
+  !> CPU time from which a configuration stays at or below `target`: from the last step count
+  !> whose error is above it (or whose run failed), log-log interpolation to the next one; the
+  !> coarsest run's time when every run reaches it. (The last crossing, not the first: a coarse
+  !> run can look accurate only because its few steps miss the sharp part of the curve.)
+  real(dp) function cost_at(err, cpu, ok, target, reached) result(t)
+    real(dp), intent(in) :: err(0:), cpu(0:), target
+    logical, intent(in) :: ok(0:)
+    logical, intent(out) :: reached
+    integer :: j, jlast, jabove
+    real(dp) :: w
+    reached = .false.
+    t = 0.0_dp
+    jlast = -1
+    do j = 0, size(err) - 1
+      if (ok(j)) jlast = j
+    end do
+    if (jlast < 0) return
+    if (err(jlast) > target) return
+    jabove = -1
+    do j = 0, jlast
+      if (.not. ok(j)) then
+        jabove = j
+      else if (err(j) > target) then
+        jabove = j
+      end if
+    end do
+    reached = .true.
+    if (jabove < 0) then
+      t = cpu(0)
+      return
+    end if
+    t = cpu(jabove + 1)
+    if (ok(jabove) .and. err(jabove + 1) > 0.0_dp .and. cpu(jabove) > 0.0_dp .and. &
+        cpu(jabove + 1) > 0.0_dp) then
+      w = log(target / err(jabove)) / log(err(jabove + 1) / err(jabove))
+      t = exp(log(cpu(jabove)) + w * log(cpu(jabove + 1) / cpu(jabove)))
+    end if
+  end function cost_at
+
+end program interlock_bench
