@@ -169,7 +169,26 @@ contains
       return
     end if
 
-    ! Derived (SPEC section 2).
+    ! Derived (SPEC section 2). First their binary exponents, so that no division below can
+    ! overflow or underflow (FE codes may run with floating-point traps on): the lengths
+    ! s_c, s_0 and the stiffnesses K must lie within 2^(+-300) (about 1e(+-90)).
+    if (.not. (representable(exponent(mat%gc) - exponent(mat%sigma0_n)) .and. &
+               representable(exponent(mat%gc) - exponent(mat%sigma0_t)) .and. &
+               representable(exponent(mat%gc) - exponent(mat%sigma0_n) + &
+                             exponent(1.0_dp - mat%eta)) .and. &
+               representable(exponent(mat%gc) - exponent(mat%sigma0_t) + &
+                             exponent(1.0_dp - mat%eta)) .and. &
+               representable(2 * exponent(mat%sigma0_n) - exponent(mat%gc) - &
+                             exponent(1.0_dp - mat%eta)) .and. &
+               representable(2 * exponent(mat%sigma0_t) - exponent(mat%gc) - &
+                             exponent(1.0_dp - mat%eta)))) then
+      message = 'sigma0_n = ' // format_real(mat%sigma0_n) // ', sigma0_t = ' // &
+                format_real(mat%sigma0_t) // ', gc = ' // format_real(mat%gc) // ' and eta = ' // &
+                format_real(mat%eta) // ' give lengths s_c = 2 gc/sigma0, s_0 = (1-eta) s_c ' // &
+                'or stiffnesses K = sigma0/s_0 outside 1e-90 .. 1e90 (mm, MPa/mm): not a ' // &
+                'physical interface'
+      return
+    end if
     mat%scn = 2.0_dp * mat%gc / mat%sigma0_n
     mat%sct = 2.0_dp * mat%gc / mat%sigma0_t
     mat%s0n = (1.0_dp - mat%eta) * mat%scn
@@ -224,5 +243,11 @@ contains
     stat = status_ok
     message = ''
   end subroutine interlock_material_prepare
+
+  !> A binary exponent well inside double precision's range.
+  pure logical function representable(e)
+    integer, intent(in) :: e
+    representable = abs(e) <= 300
+  end function representable
 
 end module interlock_material

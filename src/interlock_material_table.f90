@@ -223,6 +223,8 @@ contains
       if (p%upper < huge(1.0_dp)) then
         text = text // trim(merge(' < ', ' <=', p%upper_open)) // ' ' // &
                trim(format_real(p%upper))
+      else if (.not. p%infinite_ok) then
+        text = text // ' < 1e30'
       end if
       if (p%infinite_ok) text = text // ' (or >= 1e30 / Inf for infinity)'
       text = text // ' [' // trim(p%unit) // ']'
@@ -242,9 +244,48 @@ contains
       write (buf, '(i0)') nint(x, kind=8)
       text = trim(buf)
     else
-      write (buf, '(g0.6)') x
-      text = trim(adjustl(buf))
+      ! Six significant digits, trailing zeros dropped: 0.3, -0.0015, 2.5e-07, 1e+200.
+      if (abs(x) >= 1.0e-3_dp .and. abs(x) < 1.0e6_dp) then
+        write (buf, '(f0.6)') x
+        buf = adjustl(buf)
+        if (index(buf, '.') > 0) buf = strip_zeros(buf)
+        if (buf(1:1) == '.') buf = '0' // buf(1:len(buf) - 1)
+        if (buf(1:2) == '-.') buf = '-0' // buf(2:len(buf) - 1)
+        if (len_trim(strip_zeros(buf)) == 0) buf = '0'
+        text = trim(buf)
+      else
+        write (buf, '(es14.5e3)') x
+        buf = adjustl(buf)
+        text = trim(strip_zeros(buf(1:index(buf, 'E') - 1))) // 'e' // &
+               trim(exponent_text(buf(index(buf, 'E') + 1:)))
+      end if
     end if
   end function format_real
+
+  !> "1.500000" -> "1.5", "2.000" -> "2".
+  pure function strip_zeros(s) result(r)
+    character(len=*), intent(in) :: s
+    character(len=len(s)) :: r
+    integer :: n
+    r = s
+    n = len_trim(r)
+    do while (n > 1 .and. r(n:n) == '0')
+      r(n:n) = ' '
+      n = n - 1
+    end do
+    if (r(n:n) == '.') r(n:n) = ' '
+  end function strip_zeros
+
+  !> "+005" -> "+05" (at least two digits), "-010" -> "-10".
+  pure function exponent_text(s) result(r)
+    character(len=*), intent(in) :: s
+    character(len=:), allocatable :: r
+    integer :: i
+    r = trim(adjustl(s))
+    i = 2
+    do while (len(r) > 3 .and. r(i:i) == '0')
+      r = r(1:i - 1) // r(i + 1:)
+    end do
+  end function exponent_text
 
 end module interlock_material_table

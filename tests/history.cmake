@@ -32,14 +32,45 @@ foreach(figure fig5 fig6 fig7 fig8 fig8_long fig9 fig10 fig11)
   set_tests_properties(history_reference_${figure} PROPERTIES LABELS history)
 endforeach()
 
-file(GLOB history_bad_decks CONFIGURE_DEPENDS ${INTERLOCK_TEST_DATA}/bad_decks/*.nml)
-foreach(deck IN LISTS history_bad_decks)
-  get_filename_component(name ${deck} NAME_WE)
+# Bad decks: tests/data/bad_decks/NAME.expected (+ NAME.nml; an .expected alone is a deck that
+# does not exist), and the decks too big or too binary for the source tree, written at configure
+# time by the same script (--generate). One test per deck.
+set(history_generated_decks ${CMAKE_CURRENT_BINARY_DIR}/bad_decks_generated)
+execute_process(COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_bad_decks.py
+                        --generate ${history_generated_decks}
+                RESULT_VARIABLE history_generate_rc)
+if(NOT history_generate_rc EQUAL 0)
+  message(WARNING "test_history_bad_decks.py --generate failed: the generated bad decks are not tested")
+endif()
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
+             ${CMAKE_CURRENT_SOURCE_DIR}/test_history_bad_decks.py)
+file(GLOB history_bad_decks CONFIGURE_DEPENDS ${INTERLOCK_TEST_DATA}/bad_decks/*.expected)
+file(GLOB history_bad_decks_generated ${history_generated_decks}/*.expected)
+foreach(expected IN LISTS history_bad_decks history_bad_decks_generated)
+  get_filename_component(name ${expected} NAME_WE)
   add_test(NAME history_bad_deck_${name}
     COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_bad_decks.py
-            $<TARGET_FILE:interlock-history> ${deck})
-  set_tests_properties(history_bad_deck_${name} PROPERTIES LABELS history)
+            $<TARGET_FILE:interlock-history> ${expected})
+  set_tests_properties(history_bad_deck_${name} PROPERTIES LABELS history TIMEOUT 120)
 endforeach()
+
+# Windows line ends (CR LF) are accepted: the same results as the LF deck.
+add_test(NAME history_crlf_deck
+  COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_bad_decks.py --crlf
+          $<TARGET_FILE:interlock-history> ${PROJECT_SOURCE_DIR}/inputs/fig6.nml)
+set_tests_properties(history_crlf_deck PROPERTIES LABELS history)
+
+# Mixed control under stress: tiny H_N, eta -> 1, tiny zeta0, huge steps, both schemes, with and
+# without substepping, slip under constant sigma_N and both components traction-driven.
+add_test(NAME history_stress
+  COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_stress.py
+          $<TARGET_FILE:interlock-history> ${CMAKE_CURRENT_BINARY_DIR}/history_stress)
+set_tests_properties(history_stress PROPERTIES LABELS history TIMEOUT 300)
+
+# --help documents the options and the exit status.
+add_test(NAME history_help COMMAND interlock-history --help)
+set_tests_properties(history_help PROPERTIES LABELS history
+  PASS_REGULAR_EXPRESSION "--output-dir DIR.*--version.*Exit status:.*0  every case.*1  a deck was rejected.*2  every file was written.*iterations <= newton_max_iterations")
 
 interlock_add_suite(test_history_mixed_control test_history_mixed_control.f90)
 target_link_libraries(test_history_mixed_control PRIVATE interlock_history_core)

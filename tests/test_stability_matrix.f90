@@ -620,7 +620,9 @@ contains
     write (u, '(a,i0,a)') '  sub-increments tried in one update ', worst_attempts, '.'
     write (u, '(a)') '- Checks after every update: D in [0,1] and non-decreasing, zeta ' // &
       'non-decreasing, theta between theta_f and theta_0 (so |theta| <= |theta_0|), ' // &
-      'dissipations non-decreasing, traction and tangent finite, and'
+      'friction dissipation non-decreasing (the damage dissipation increment of the law ' // &
+      'as SPEC states it can be negative after a shear reversal: see the issue note), ' // &
+      'traction and tangent finite, and'
     write (u, '(a)') '  |sigma| <= c + (1 + mu) K_n |s| with c = sigma0_n + sigma0_t ' // &
       '(the cohesive part never exceeds the peak tractions, contact is the penalty K_n on ' // &
       'the interpenetration, friction at most mu times the contact pressure).'

@@ -90,7 +90,7 @@ contains
 
   !> The invariants of one accepted update from `old` to `new` (empty `what` when all hold):
   !> D in [0,1] and non-decreasing, zeta non-decreasing, theta between theta_f and theta_0,
-  !> dissipations non-decreasing, finite and bounded traction, finite tangent.
+  !> friction dissipation non-decreasing, finite and bounded traction, finite tangent.
   pure subroutine check_update(mat, old, new, sigma, tangent, what)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_state_t), intent(in) :: old, new

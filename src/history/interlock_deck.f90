@@ -2,20 +2,26 @@
 !> iostat/iomsg, validated through the library's material table (check_property,
 !> format_range) and interlock_material_prepare. Every error names the deck file, the group,
 !> the variable and the admissible range; nothing is ever stopped here (status + message).
-!> Before any namelist read the file is checked as text: size, control bytes, the group names
-!> (unknown or repeated groups are errors, required groups must be present).
+!> Before any namelist read the file is checked as text (interlock_deck_text): size, control
+!> bytes, line ends, the groups (unknown, repeated, unclosed groups and text outside every group
+!> are errors, required groups must be present) and the variables of each group (unknown or
+!> repeated variables are errors). A value that cannot be read is found by re-reading each
+!> assignment of the group alone, so that the message names the variable.
 module interlock_deck
   use interlock, only: dp, deg_to_rad, pi, max_planes, n_effects, &
       interlock_material_t, interlock_solver_t, interlock_state_t, interlock_state_init, &
       interlock_material_prepare, interlock_paper_ria, scheme_explicit, scheme_implicit, &
-      properties, property_index, check_property, format_range, format_real, &
+      properties, property_index, check_property, format_range, &
       prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
       prop_thetaf, prop_zeta0, prop_prefractured, prop_scheme, prop_substep_tol, prop_max_dd, &
       prop_max_dtheta, prop_effect_damage, prop_effect_wear, is_nan_value, same_value, &
       is_infinite_value, &
       status_ok, status_bad_input
   use interlock_mixed_control, only: control_t
-  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use interlock_deck_text, only: group_scan_t, scan_deck, probe_text, value_text, lower, int_text, &
+      is_folder
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_get_halting_mode, &
+      ieee_set_halting_mode, ieee_overflow, ieee_invalid, ieee_divide_by_zero
   implicit none
   private
   public :: deck_t, read_deck, deck_case, deck_n_cases, deck_groups
@@ -36,21 +42,53 @@ module interlock_deck
     'microplanes', 'effects', 'loading', 'solver', 'sweep', 'initial_state', 'output']
   logical, parameter :: group_required(8) = [.true., .true., .false., .true., .false., .false., &
                                              .false., .false.]
-  character(len=*), parameter :: vars_interface = 'sigma0_n, sigma0_t, gc, eta, mu, h_n, prefractured'
-  character(len=*), parameter :: vars_microplanes = 'theta0_deg, thetaf_deg, zeta0, n_planes, gamma_hat'
-  character(len=*), parameter :: vars_effects = 'damage, friction, interlocking, finite_depth, wear'
-  character(len=*), parameter :: vars_loading = &
-    'normal_control, tangential_control, times, normal, tangential, steps, cycles'
-  character(len=*), parameter :: vars_solver = &
-    'scheme, substep_tol, newton_tol, newton_max_iterations, max_cuts'
-  character(len=*), parameter :: vars_sweep = 'parameter, values'
-  character(len=*), parameter :: vars_initial = &
-    'damage, beta, frictional_slip, zeta, theta, friction_traction, separation, traction'
-  character(len=*), parameter :: vars_output = 'file, title'
+  !> The variables of each group and what each takes (messages name them).
+  type :: var_t
+    integer :: group
+    character(len=24) :: name
+    character(len=72) :: what
+  end type var_t
+  character(len=*), parameter :: real_list = 'real numbers, one per microplane (at most 8)'
+  type(var_t), parameter :: deck_vars(*) = [ &
+    var_t(1, 'sigma0_n', 'a real number [MPa]'), var_t(1, 'sigma0_t', 'a real number [MPa]'), &
+    var_t(1, 'gc', 'a real number [N/mm]'), var_t(1, 'eta', 'a real number [-]'), &
+    var_t(1, 'mu', 'a real number [-]'), var_t(1, 'h_n', 'a real number [mm] (or Inf)'), &
+    var_t(1, 'prefractured', 'a logical (.true. or .false.)'), &
+    var_t(2, 'theta0_deg', real_list // ' [deg]'), var_t(2, 'thetaf_deg', real_list // ' [deg]'), &
+    var_t(2, 'zeta0', real_list // ' [N/mm] (or Inf)'), &
+    var_t(2, 'n_planes', 'an integer (1 to 8)'), var_t(2, 'gamma_hat', real_list // ' [-]'), &
+    var_t(3, 'damage', 'a logical (.true. or .false.)'), &
+    var_t(3, 'friction', 'a logical (.true. or .false.)'), &
+    var_t(3, 'interlocking', 'a logical (.true. or .false.)'), &
+    var_t(3, 'finite_depth', 'a logical (.true. or .false.)'), &
+    var_t(3, 'wear', 'a logical (.true. or .false.)'), &
+    var_t(4, 'normal_control', "a quoted string: 'traction' or 'separation'"), &
+    var_t(4, 'tangential_control', "a quoted string: 'traction' or 'separation'"), &
+    var_t(4, 'times', 'real numbers, one per point (at most 10001)'), &
+    var_t(4, 'normal', 'real numbers, one per point (at most 10001) [MPa or mm]'), &
+    var_t(4, 'tangential', 'real numbers, one per point (at most 10001) [MPa or mm]'), &
+    var_t(4, 'steps', 'integers, one per segment (at most 10000)'), &
+    var_t(4, 'cycles', 'an integer (1 to 100000)'), &
+    var_t(5, 'scheme', "a quoted string: 'explicit' or 'implicit'"), &
+    var_t(5, 'substep_tol', 'a real number [-]'), var_t(5, 'newton_tol', 'a real number [-]'), &
+    var_t(5, 'newton_max_iterations', 'an integer (1 to 1000)'), &
+    var_t(5, 'max_cuts', 'an integer (0 to 50)'), &
+    var_t(6, 'parameter', 'a quoted string: a property name of the material table'), &
+    var_t(6, 'values', 'real numbers, one per case (at most 1000)'), &
+    var_t(7, 'damage', real_list), var_t(7, 'beta', real_list), &
+    var_t(7, 'frictional_slip', real_list // ' [mm]'), var_t(7, 'zeta', real_list // ' [N/mm]'), &
+    var_t(7, 'theta', real_list // ' [rad]'), &
+    var_t(7, 'friction_traction', real_list // ' [MPa]'), &
+    var_t(7, 'separation', 'two real numbers (normal, tangential) [mm]'), &
+    var_t(7, 'traction', 'two real numbers (normal, tangential) [MPa]'), &
+    var_t(8, 'file', 'a quoted string: a file path (at most 4096 characters)'), &
+    var_t(8, 'title', 'a quoted string (at most 1024 characters)')]
+  integer, parameter :: title_len = 1024
 
   !> A validated deck. The loading block is stored expanded over its cycles.
   type :: deck_t
     character(len=:), allocatable :: path, text, output_file, title
+    logical :: output_given = .false.   !< &output file given (else the deck's name with .h5)
     ! &interface
     real(dp) :: sigma0_n = 0.0_dp, sigma0_t = 0.0_dp, gc = 0.0_dp, eta = 0.0_dp, mu = 0.0_dp
     real(dp) :: h_n = huge(1.0_dp)
@@ -93,12 +131,32 @@ contains
 
   !> Read and validate the deck `path`. stat /= status_ok: `message` says what is wrong, where
   !> (file, group, variable) and what is admissible. Every case is built once to validate it.
+  !> Floating-point halting is off while the deck is read, so that a value such as 1e400 reads
+  !> as +Inf (and is then rejected or taken as infinity) even in a trapping (Debug) build.
   subroutine read_deck(path, deck, stat, message)
     character(len=*), intent(in) :: path
     type(deck_t), intent(out) :: deck
     integer, intent(out) :: stat
     character(len=*), intent(out) :: message
-    logical :: present_groups(size(deck_groups))
+    logical :: halt(3)
+    call ieee_get_halting_mode(ieee_overflow, halt(1))
+    call ieee_get_halting_mode(ieee_invalid, halt(2))
+    call ieee_get_halting_mode(ieee_divide_by_zero, halt(3))
+    call ieee_set_halting_mode(ieee_overflow, .false.)
+    call ieee_set_halting_mode(ieee_invalid, .false.)
+    call ieee_set_halting_mode(ieee_divide_by_zero, .false.)
+    call read_deck_text(path, deck, stat, message)
+    call ieee_set_halting_mode(ieee_overflow, halt(1))
+    call ieee_set_halting_mode(ieee_invalid, halt(2))
+    call ieee_set_halting_mode(ieee_divide_by_zero, halt(3))
+  end subroutine read_deck
+
+  subroutine read_deck_text(path, deck, stat, message)
+    character(len=*), intent(in) :: path
+    type(deck_t), intent(inout) :: deck
+    integer, intent(out) :: stat
+    character(len=*), intent(out) :: message
+    type(group_scan_t) :: scan(size(deck_groups))
     integer :: u, ios, g, icase
     character(len=512) :: iomsg
     type(interlock_material_t) :: mat
@@ -112,12 +170,23 @@ contains
     call load_text(path, deck%text, stat, message)
     if (stat /= status_ok) return
     stat = status_bad_input
-    call scan_groups(path, deck%text, present_groups, message)
-    if (len_trim(message) > 0) return
+    call scan_deck(deck%text, deck_groups, scan, message)
+    if (len_trim(message) > 0) then
+      message = path // ': ' // trim(message)
+      return
+    end if
     do g = 1, size(deck_groups)
-      if (group_required(g) .and. .not. present_groups(g)) then
+      if (group_required(g) .and. .not. scan(g)%present) then
         message = path // ': the required group &' // trim(deck_groups(g)) // &
                   ' is missing (required groups: &interface, &microplanes, &loading)'
+        return
+      end if
+    end do
+    do g = 1, size(deck_groups)
+      if (.not. scan(g)%present) cycle
+      call check_assignments(g, scan(g), message)
+      if (len_trim(message) > 0) then
+        message = path // ': &' // trim(deck_groups(g)) // ': ' // trim(message)
         return
       end if
     end do
@@ -129,25 +198,25 @@ contains
       return
     end if
     do g = 1, size(deck_groups)
-      if (.not. present_groups(g)) cycle
+      if (.not. scan(g)%present) cycle
       rewind (u)
       select case (g)
       case (1)
-        call read_interface(u, deck, message)
+        call read_interface(u, deck%text, scan(g), deck, message)
       case (2)
-        call read_microplanes(u, deck, message)
+        call read_microplanes(u, deck%text, scan(g), deck, message)
       case (3)
-        call read_effects(u, deck, message)
+        call read_effects(u, deck%text, scan(g), deck, message)
       case (4)
-        call read_loading(u, deck, message)
+        call read_loading(u, deck%text, scan(g), deck, message)
       case (5)
-        call read_solver(u, deck, message)
+        call read_solver(u, deck%text, scan(g), deck, message)
       case (6)
-        call read_sweep(u, deck, message)
+        call read_sweep(u, deck%text, scan(g), deck, message)
       case (7)
-        call read_initial_state(u, deck, message)
+        call read_initial_state(u, deck%text, scan(g), deck, message)
       case (8)
-        call read_output(u, deck, message)
+        call read_output(u, deck%text, scan(g), deck, message)
       end select
       if (len_trim(message) > 0) then
         message = path // ': &' // trim(deck_groups(g)) // ': ' // trim(message)
@@ -163,7 +232,7 @@ contains
       if (stat /= status_ok) return
     end do
     stat = status_ok
-  end subroutine read_deck
+  end subroutine read_deck_text
 
   !> The material, solver and initial state of case `icase` (the sweep value applied).
   subroutine deck_case(deck, icase, mat, solver, state, label, stat, message)
@@ -255,9 +324,17 @@ contains
       mat%thetaf(1:n) = d%thetaf_deg(1:n) * deg_to_rad
       mat%zeta0(1:n) = d%zeta0(1:n)
     end if
-    call interlock_material_prepare(mat, stat, why)
-    if (stat /= status_ok) then
-      message = deck%path // ': ' // trim(case_text(deck, icase)) // trim(why)
+    why = scale_check(mat)
+    if (len_trim(why) == 0) call interlock_material_prepare(mat, stat, why)
+    if (len_trim(why) > 0) then
+      if (deck%sweep_property > 0) then
+        message = deck%path // ': ' // trim(case_text(deck, icase)) // trim(why)
+      else if (index(why, 'gamma') == 1 .or. index(why, 'theta') == 1 .or. &
+               index(why, 'plane') == 1 .or. index(why, 'n_planes') == 1) then
+        message = deck%path // ': &microplanes: ' // trim(why)
+      else
+        message = deck%path // ': &interface: ' // trim(why)
+      end if
       stat = status_bad_input
       return
     end if
@@ -311,7 +388,7 @@ contains
     character(len=:), allocatable :: text
     text = ''
     if (deck%sweep_property > 0) text = '&sweep case ' // int_text(icase) // ' (' // &
-      trim(deck%sweep_parameter) // ' = ' // format_real(deck%sweep_values(icase)) // '): '
+      trim(deck%sweep_parameter) // ' = ' // value_str(deck%sweep_values(icase)) // '): '
   end function case_text
 
   ! ------------------------------------------------------------------ text checks
@@ -325,6 +402,7 @@ contains
     character(len=*), intent(out) :: message
     logical :: exists
     integer :: u, ios, i, c, line
+    logical :: ok_cr
     integer(kind=8) :: nbytes
     character(len=512) :: iomsg
 
@@ -336,13 +414,21 @@ contains
       message = path // ': no such deck file'
       return
     end if
+    if (is_folder(path)) then
+      message = path // ': the deck is a folder, not a file'
+      return
+    end if
     if (nbytes == 0) then
       message = path // ': the deck is empty'
       return
     end if
-    if (nbytes < 0 .or. nbytes > max_deck_bytes) then
-      message = path // ': the deck is not a regular file of at most ' // &
-                int_text(max_deck_bytes) // ' bytes'
+    if (nbytes < 0) then
+      message = path // ': the deck is not a regular file'
+      return
+    end if
+    if (nbytes > max_deck_bytes) then
+      message = path // ': the deck has ' // trim(int8_text(nbytes)) // ' bytes: admissible ' // &
+                'at most ' // int_text(max_deck_bytes) // ' bytes (4 MiB)'
       return
     end if
     deallocate (text)
@@ -359,10 +445,27 @@ contains
       message = path // ': cannot read the deck: ' // trim(iomsg)
       return
     end if
+    if (len(text) >= 2) then
+      c = ichar(text(1:1)) + 256 * ichar(text(2:2))
+      if (c == 255 + 256 * 254 .or. c == 254 + 256 * 255) then
+        message = path // ': the deck is UTF-16 encoded (a byte order mark ' // &
+                  'and NUL bytes): save it as ASCII or UTF-8 text'
+        return
+      end if
+    end if
     line = 1
     do i = 1, len(text)
       c = iachar(text(i:i))
       if (c == 10) line = line + 1
+      if (c == 13) then
+        ok_cr = i < len(text)
+        if (ok_cr) ok_cr = text(i + 1:i + 1) == achar(10)
+        if (.not. ok_cr) then
+          message = path // ': line ' // int_text(line) // ': a carriage return (code 13) ' // &
+                    'without a line feed: line ends must be LF (Unix) or CR LF (Windows)'
+          return
+        end if
+      end if
       if (c < 32 .and. c /= 9 .and. c /= 10 .and. c /= 13 .and. c /= 12 .or. c == 127) then
         message = path // ': line ' // int_text(line) // ': byte ' // int_text(i) // &
                   ' is a control character (code ' // int_text(c) // &
@@ -373,116 +476,88 @@ contains
     stat = status_ok
   end subroutine load_text
 
-  !> Find the namelist groups (&name outside comments and strings). Unknown or repeated groups
-  !> are errors (message /= '').
-  subroutine scan_groups(path, text, found, message)
-    character(len=*), intent(in) :: path, text
-    logical, intent(out) :: found(:)
-    character(len=*), intent(out) :: message
-    integer :: i, j, g, line
-    logical :: in_comment
-    character :: quote, ch
-    character(len=64) :: name
-
-    found = .false.
-    message = ''
-    in_comment = .false.
-    quote = ' '
-    line = 1
-    i = 1
-    do while (i <= len(text))
-      ch = text(i:i)
-      if (ch == achar(10)) then
-        line = line + 1
-        in_comment = .false.
-        quote = ' '
-      else if (in_comment) then
-        continue
-      else if (quote /= ' ') then
-        if (ch == quote) quote = ' '
-      else if (ch == '!') then
-        in_comment = .true.
-      else if (ch == '''' .or. ch == '"') then
-        quote = ch
-      else if (ch == '&' .or. ch == '$') then
-        j = i + 1
-        do while (j <= len(text))
-          if (.not. is_name_char(text(j:j))) exit
-          j = j + 1
-        end do
-        name = lower(text(i + 1:min(j - 1, i + 64)))
-        if (name == 'end') then
-          continue
-        else if (j == i + 1) then
-          message = path // ': line ' // int_text(line) // ': a ''' // ch // &
-                    ''' that does not start a group name'
-          return
-        else
-          g = group_index(name)
-          if (g == 0) then
-            message = path // ': line ' // int_text(line) // ': unknown group &' // &
-                      trim(name) // ' (the groups are &interface, ' // &
-                      '&microplanes, &effects, &loading, &solver, &sweep, &initial_state, &output)'
-            return
-          end if
-          if (found(g)) then
-            message = path // ': line ' // int_text(line) // ': the group &' // &
-                      trim(deck_groups(g)) // ' appears more than once'
-            return
-          end if
-          found(g) = .true.
-        end if
-        i = j - 1
-      end if
-      i = i + 1
-    end do
-  end subroutine scan_groups
-
-  pure integer function group_index(name)
-    character(len=*), intent(in) :: name
-    integer :: g
-    group_index = 0
-    do g = 1, size(deck_groups)
-      if (trim(deck_groups(g)) == trim(name)) group_index = g
-    end do
-  end function group_index
-
-  pure logical function is_name_char(ch)
-    character, intent(in) :: ch
-    is_name_char = (ch >= 'a' .and. ch <= 'z') .or. (ch >= 'A' .and. ch <= 'Z') .or. &
-                   (ch >= '0' .and. ch <= '9') .or. ch == '_'
-  end function is_name_char
-
-  pure function lower(s) result(t)
-    character(len=*), intent(in) :: s
-    character(len=len(s)) :: t
-    integer :: i, c
-    t = s
-    do i = 1, len(s)
-      c = iachar(s(i:i))
-      if (c >= iachar('A') .and. c <= iachar('Z')) t(i:i) = achar(c + 32)
-    end do
-  end function lower
-
   ! ----------------------------------------------------------------- the groups
 
-  subroutine nml_error(ios, iomsg, variables, message)
-    integer, intent(in) :: ios
-    character(len=*), intent(in) :: iomsg, variables
+  !> The message of a failed namelist read: the assignment `k` that fails when read alone
+  !> (its variable, value and what the variable takes), or the runtime's message.
+  subroutine nml_error(g, text, scan, k, iomsg, probe_msg, message)
+    integer, intent(in) :: g, k
+    character(len=*), intent(in) :: text, iomsg, probe_msg
+    type(group_scan_t), intent(in) :: scan
     character(len=*), intent(out) :: message
-    if (ios < 0) then
-      message = 'the group could not be read (end of file before its closing /): ' // trim(iomsg)
+    integer :: v
+    if (k >= 1 .and. k <= scan%n) then
+      v = var_index(g, scan%a(k)%name)
+      message = trim(scan%a(k)%name) // trim(scan%a(k)%subscript) // ' = ' // &
+                value_text(text, scan%a(k)) // ' cannot be read (line ' // int_text(scan%a(k)%line) // &
+                '): ' // trim(scan%a(k)%name)
+      if (v > 0) then
+        message = trim(message) // ' takes ' // trim(deck_vars(v)%what)
+      end if
+      message = trim(message) // ' (Fortran: ' // trim(probe_msg) // ')'
     else
-      message = trim(iomsg) // ' (the variables of this group are: ' // variables // ')'
+      message = trim(iomsg) // ' (the variables of this group are: ' // group_vars(g) // ')'
     end if
   end subroutine nml_error
+
+  !> Index in deck_vars of variable `name` of group g, 0 if there is none.
+  pure integer function var_index(g, name)
+    integer, intent(in) :: g
+    character(len=*), intent(in) :: name
+    integer :: v
+    var_index = 0
+    do v = 1, size(deck_vars)
+      if (deck_vars(v)%group == g .and. trim(deck_vars(v)%name) == trim(name)) then
+        var_index = v
+        return
+      end if
+    end do
+  end function var_index
+
+  !> "sigma0_n, sigma0_t, ...": the variables of group g.
+  pure function group_vars(g) result(text)
+    integer, intent(in) :: g
+    character(len=:), allocatable :: text
+    integer :: v
+    text = ''
+    do v = 1, size(deck_vars)
+      if (deck_vars(v)%group /= g) cycle
+      if (len(text) > 0) text = text // ', '
+      text = text // trim(deck_vars(v)%name)
+    end do
+  end function group_vars
+
+  !> Every assignment of group g names a variable of the group, and none is given twice.
+  subroutine check_assignments(g, scan, message)
+    integer, intent(in) :: g
+    type(group_scan_t), intent(in) :: scan
+    character(len=*), intent(out) :: message
+    integer :: k, j
+    message = ''
+    do k = 1, scan%n
+      if (var_index(g, scan%a(k)%name) == 0) then
+        message = 'unknown variable ' // trim(scan%a(k)%name) // ' (line ' // &
+                  int_text(scan%a(k)%line) // '; the variables of this group are: ' // &
+                  group_vars(g) // ')'
+        return
+      end if
+      do j = 1, k - 1
+        if (scan%a(j)%name /= scan%a(k)%name) cycle
+        if (len_trim(scan%a(j)%subscript) > 0 .and. len_trim(scan%a(k)%subscript) > 0 .and. &
+            scan%a(j)%subscript /= scan%a(k)%subscript) cycle
+        message = trim(scan%a(k)%name) // trim(scan%a(k)%subscript) // &
+                  ' is given more than once (lines ' // int_text(scan%a(j)%line) // ' and ' // &
+                  int_text(scan%a(k)%line) // '): give each variable once'
+        return
+      end do
+    end do
+  end subroutine check_assignments
 
   !> A required real: given, and inside its table range.
   subroutine check_required(iprop, value, message)
     integer, intent(in) :: iprop
     real(dp), intent(in) :: value
     character(len=*), intent(out) :: message
-    logical :: ok
     message = ''
     if (.not. is_nan_value(value)) then
       if (same_value(value, unset)) then
@@ -491,18 +566,21 @@ contains
         return
       end if
     end if
-    call check_property(iprop, value, ok, message)
-    if (ok) message = ''
+    call check_value(iprop, value, message)
   end subroutine check_required
 
-  subroutine read_interface(u, deck, message)
+  subroutine read_interface(u, text, scan, deck, message)
     integer, intent(in) :: u
+    character(len=*), intent(in) :: text
+    type(group_scan_t), intent(in) :: scan
     type(deck_t), intent(inout) :: deck
     character(len=*), intent(out) :: message
     real(dp) :: sigma0_n, sigma0_t, gc, eta, mu, h_n
     logical :: prefractured
     integer :: ios
-    character(len=512) :: iomsg
+    character(len=512) :: iomsg, iomsg2
+    character(len=:), allocatable :: probe
+    integer :: kp
     namelist /interface/ sigma0_n, sigma0_t, gc, eta, mu, h_n, prefractured
     sigma0_n = unset
     sigma0_t = unset
@@ -514,7 +592,12 @@ contains
     message = ''
     read (u, nml=interface, iostat=ios, iomsg=iomsg)
     if (ios /= 0) then
-      call nml_error(ios, iomsg, vars_interface, message)
+      do kp = 1, scan%n
+        probe = probe_text(text, 'interface', scan%a(kp))
+        read (probe, nml=interface, iostat=ios, iomsg=iomsg2)
+        if (ios /= 0) exit
+      end do
+      call nml_error(1, text, scan, kp, iomsg, iomsg2, message)
       return
     end if
     call check_required(prop_sigma0_n, sigma0_n, message); if (len_trim(message) > 0) return
@@ -532,13 +615,18 @@ contains
     deck%prefractured = prefractured
   end subroutine read_interface
 
-  subroutine read_microplanes(u, deck, message)
+  subroutine read_microplanes(u, text, scan, deck, message)
     integer, intent(in) :: u
+    character(len=*), intent(in) :: text
+    type(group_scan_t), intent(in) :: scan
     type(deck_t), intent(inout) :: deck
     character(len=*), intent(out) :: message
     real(dp), dimension(max_planes) :: theta0_deg, thetaf_deg, zeta0, gamma_hat
     integer :: n_planes, ios, n, k
-    character(len=512) :: iomsg
+    logical :: ok
+    character(len=512) :: iomsg, iomsg2
+    character(len=:), allocatable :: probe
+    integer :: kp
     namelist /microplanes/ theta0_deg, thetaf_deg, zeta0, n_planes, gamma_hat
     theta0_deg = unset
     thetaf_deg = unset
@@ -548,7 +636,12 @@ contains
     message = ''
     read (u, nml=microplanes, iostat=ios, iomsg=iomsg)
     if (ios /= 0) then
-      call nml_error(ios, iomsg, vars_microplanes, message)
+      do kp = 1, scan%n
+        probe = probe_text(text, 'microplanes', scan%a(kp))
+        read (probe, nml=microplanes, iostat=ios, iomsg=iomsg2)
+        if (ios /= 0) exit
+      end do
+      call nml_error(2, text, scan, kp, iomsg, iomsg2, message)
       return
     end if
     if (has_gaps(theta0_deg) .or. has_gaps(thetaf_deg) .or. has_gaps(zeta0) .or. &
@@ -575,9 +668,9 @@ contains
       call check_required(prop_thetaf, thetaf_deg(1), message); if (len_trim(message) > 0) return
       call check_required(prop_zeta0, zeta0(1), message); if (len_trim(message) > 0) return
       if (thetaf_deg(1) > theta0_deg(1)) then
-        message = "property 'thetaf_deg' = " // format_real(thetaf_deg(1)) // &
+        message = "property 'thetaf_deg' = " // value_str(thetaf_deg(1)) // &
                   ' is inadmissible: admissible 0 <= thetaf_deg <= theta0_deg = ' // &
-                  format_real(theta0_deg(1)) // ' [deg]'
+                  value_str(theta0_deg(1)) // ' [deg]'
         return
       end if
       deck%theta0_deg = 0.0_dp
@@ -619,11 +712,26 @@ contains
           message = 'plane ' // int_text(k) // ': ' // trim(message)
           return
         end if
-        if (is_nan_value(gamma_hat(k)) .or. is_nan_value(thetaf_deg(k))) then
-          message = 'plane ' // int_text(k) // ': gamma_hat and thetaf_deg must be numbers (NaN given)'
+        if (.not. (in_range(gamma_hat(k), 0.0_dp, 1.0_dp) .and. gamma_hat(k) > 0.0_dp)) then
+          message = 'plane ' // int_text(k) // ': gamma_hat(' // int_text(k) // ') = ' // &
+                    value_str(gamma_hat(k)) // ' is inadmissible: admissible 0 < gamma_hat <= 1 [-]'
+          return
+        end if
+        ok = in_range(abs(thetaf_deg(k)), 0.0_dp, abs(theta0_deg(k)))
+        if (ok) ok = .not. (thetaf_deg(k) * theta0_deg(k) < 0.0_dp)
+        if (.not. ok) then
+          message = 'plane ' // int_text(k) // ': thetaf_deg(' // int_text(k) // ') = ' // &
+                    value_str(thetaf_deg(k)) // ' is inadmissible: admissible 0 <= |thetaf_deg| ' // &
+                    '<= |theta0_deg| = ' // value_str(abs(theta0_deg(k))) // &
+                    ' [deg], of the same sign as theta0_deg = ' // value_str(theta0_deg(k))
           return
         end if
       end do
+      if (abs(sum(gamma_hat(1:n)) - 1.0_dp) > 1.0e-9_dp) then
+        message = 'gamma_hat sums to ' // value_str(sum(gamma_hat(1:n))) // ': admissible a sum ' // &
+                  'of 1 (within 1e-9): the area fractions of the microplanes'
+        return
+      end if
       deck%n_planes = n
       deck%gamma_hat = 0.0_dp
       deck%theta0_deg = 0.0_dp
@@ -636,13 +744,17 @@ contains
     end if
   end subroutine read_microplanes
 
-  subroutine read_effects(u, deck, message)
+  subroutine read_effects(u, text, scan, deck, message)
     integer, intent(in) :: u
+    character(len=*), intent(in) :: text
+    type(group_scan_t), intent(in) :: scan
     type(deck_t), intent(inout) :: deck
     character(len=*), intent(out) :: message
     logical :: damage, friction, interlocking, finite_depth, wear
     integer :: ios
-    character(len=512) :: iomsg
+    character(len=512) :: iomsg, iomsg2
+    character(len=:), allocatable :: probe
+    integer :: kp
     namelist /effects/ damage, friction, interlocking, finite_depth, wear
     damage = .true.
     friction = .true.
@@ -652,14 +764,21 @@ contains
     message = ''
     read (u, nml=effects, iostat=ios, iomsg=iomsg)
     if (ios /= 0) then
-      call nml_error(ios, iomsg, vars_effects, message)
+      do kp = 1, scan%n
+        probe = probe_text(text, 'effects', scan%a(kp))
+        read (probe, nml=effects, iostat=ios, iomsg=iomsg2)
+        if (ios /= 0) exit
+      end do
+      call nml_error(3, text, scan, kp, iomsg, iomsg2, message)
       return
     end if
     deck%effect = [damage, friction, interlocking, finite_depth, wear]
   end subroutine read_effects
 
-  subroutine read_loading(u, deck, message)
+  subroutine read_loading(u, text, scan, deck, message)
     integer, intent(in) :: u
+    character(len=*), intent(in) :: text
+    type(group_scan_t), intent(in) :: scan
     type(deck_t), intent(inout) :: deck
     character(len=*), intent(out) :: message
     character(len=32) :: normal_control, tangential_control
@@ -667,7 +786,9 @@ contains
     integer, allocatable :: steps(:)
     integer :: cycles, ios, n, ns, i, c, m, k
     integer(kind=8) :: total
-    character(len=512) :: iomsg
+    character(len=512) :: iomsg, iomsg2
+    character(len=:), allocatable :: probe
+    integer :: kp
     real(dp) :: period
     namelist /loading/ normal_control, tangential_control, times, normal, tangential, steps, cycles
     allocate (times(max_points), normal(max_points), tangential(max_points), steps(max_points))
@@ -681,7 +802,12 @@ contains
     message = ''
     read (u, nml=loading, iostat=ios, iomsg=iomsg)
     if (ios /= 0) then
-      call nml_error(ios, iomsg, vars_loading, message)
+      do kp = 1, scan%n
+        probe = probe_text(text, 'loading', scan%a(kp))
+        read (probe, nml=loading, iostat=ios, iomsg=iomsg2)
+        if (ios /= 0) exit
+      end do
+      call nml_error(4, text, scan, kp, iomsg, iomsg2, message)
       return
     end if
     call parse_control(normal_control, 'normal_control', deck%control%traction(1), message)
@@ -720,8 +846,8 @@ contains
       if (i > 1) then
         if (.not. (times(i) > times(i - 1))) then
           message = 'times must be strictly increasing: times(' // int_text(i) // ') = ' // &
-                    format_real(times(i)) // ' <= times(' // int_text(i - 1) // ') = ' // &
-                    format_real(times(i - 1))
+                    value_str(times(i)) // ' <= times(' // int_text(i - 1) // ') = ' // &
+                    value_str(times(i - 1))
           return
         end if
       end if
@@ -797,15 +923,19 @@ contains
     end select
   end subroutine parse_control
 
-  subroutine read_solver(u, deck, message)
+  subroutine read_solver(u, text, scan, deck, message)
     integer, intent(in) :: u
+    character(len=*), intent(in) :: text
+    type(group_scan_t), intent(in) :: scan
     type(deck_t), intent(inout) :: deck
     character(len=*), intent(out) :: message
     character(len=32) :: scheme
     real(dp) :: substep_tol, newton_tol
     integer :: newton_max_iterations, max_cuts, ios
     logical :: ok
-    character(len=512) :: iomsg
+    character(len=512) :: iomsg, iomsg2
+    character(len=:), allocatable :: probe
+    integer :: kp
     namelist /solver/ scheme, substep_tol, newton_tol, newton_max_iterations, max_cuts
     scheme = 'explicit'
     substep_tol = 0.0_dp
@@ -815,7 +945,12 @@ contains
     message = ''
     read (u, nml=solver, iostat=ios, iomsg=iomsg)
     if (ios /= 0) then
-      call nml_error(ios, iomsg, vars_solver, message)
+      do kp = 1, scan%n
+        probe = probe_text(text, 'solver', scan%a(kp))
+        read (probe, nml=solver, iostat=ios, iomsg=iomsg2)
+        if (ios /= 0) exit
+      end do
+      call nml_error(5, text, scan, kp, iomsg, iomsg2, message)
       return
     end if
     select case (lower(trim(adjustl(scheme))))
@@ -827,14 +962,13 @@ contains
       message = "scheme = '" // trim(scheme) // "' is inadmissible: admissible 'explicit' or 'implicit'"
       return
     end select
-    call check_property(prop_substep_tol, substep_tol, ok, message)
-    if (.not. ok) return
-    message = ''
+    call check_value(prop_substep_tol, substep_tol, message)
+    if (len_trim(message) > 0) return
     deck%solver%substep_tol = substep_tol
     ok = .false.
     if (.not. is_nan_value(newton_tol)) ok = newton_tol >= 1.0e-16_dp .and. newton_tol <= 1.0e-2_dp
     if (.not. ok) then
-      message = 'newton_tol = ' // format_real(newton_tol) // &
+      message = 'newton_tol = ' // value_str(newton_tol) // &
                 ' is inadmissible: admissible 1e-16 <= newton_tol <= 1e-2 [-]'
       return
     end if
@@ -852,15 +986,18 @@ contains
     deck%control%max_cuts = max_cuts
   end subroutine read_solver
 
-  subroutine read_sweep(u, deck, message)
+  subroutine read_sweep(u, text, scan, deck, message)
     integer, intent(in) :: u
+    character(len=*), intent(in) :: text
+    type(group_scan_t), intent(in) :: scan
     type(deck_t), intent(inout) :: deck
     character(len=*), intent(out) :: message
     character(len=name_len) :: parameter
     real(dp), allocatable :: values(:)
     integer :: ios, n, ip, i
-    logical :: ok
-    character(len=512) :: iomsg
+    character(len=512) :: iomsg, iomsg2
+    character(len=:), allocatable :: probe
+    integer :: kp
     namelist /sweep/ parameter, values
     allocate (values(max_sweep_values))
     parameter = ''
@@ -868,7 +1005,12 @@ contains
     message = ''
     read (u, nml=sweep, iostat=ios, iomsg=iomsg)
     if (ios /= 0) then
-      call nml_error(ios, iomsg, vars_sweep, message)
+      do kp = 1, scan%n
+        probe = probe_text(text, 'sweep', scan%a(kp))
+        read (probe, nml=sweep, iostat=ios, iomsg=iomsg2)
+        if (ios /= 0) exit
+      end do
+      call nml_error(6, text, scan, kp, iomsg, iomsg2, message)
       return
     end if
     if (len_trim(parameter) == 0) then
@@ -904,8 +1046,8 @@ contains
       return
     end if
     do i = 1, n
-      call check_property(ip, values(i), ok, message)
-      if (.not. ok) then
+      call check_value(ip, values(i), message)
+      if (len_trim(message) > 0) then
         message = 'values(' // int_text(i) // '): ' // trim(message)
         return
       end if
@@ -916,14 +1058,18 @@ contains
     deck%sweep_values = values(1:n)
   end subroutine read_sweep
 
-  subroutine read_initial_state(u, deck, message)
+  subroutine read_initial_state(u, text, scan, deck, message)
     integer, intent(in) :: u
+    character(len=*), intent(in) :: text
+    type(group_scan_t), intent(in) :: scan
     type(deck_t), intent(inout) :: deck
     character(len=*), intent(out) :: message
     real(dp), dimension(max_planes) :: damage, beta, frictional_slip, zeta, theta, friction_traction
     real(dp) :: separation(2), traction(2)
     integer :: ios, k
-    character(len=512) :: iomsg
+    character(len=512) :: iomsg, iomsg2
+    character(len=:), allocatable :: probe
+    integer :: kp
     namelist /initial_state/ damage, beta, frictional_slip, zeta, theta, friction_traction, &
       separation, traction
     damage = unset
@@ -937,7 +1083,12 @@ contains
     message = ''
     read (u, nml=initial_state, iostat=ios, iomsg=iomsg)
     if (ios /= 0) then
-      call nml_error(ios, iomsg, vars_initial, message)
+      do kp = 1, scan%n
+        probe = probe_text(text, 'initial_state', scan%a(kp))
+        read (probe, nml=initial_state, iostat=ios, iomsg=iomsg2)
+        if (ios /= 0) exit
+      end do
+      call nml_error(7, text, scan, kp, iomsg, iomsg2, message)
       return
     end if
     if (has_gaps(damage) .or. has_gaps(beta) .or. has_gaps(frictional_slip) .or. has_gaps(zeta) &
@@ -951,21 +1102,21 @@ contains
     end if
     do k = 1, count_given(damage)
       if (.not. in_range(damage(k), 0.0_dp, 1.0_dp)) then
-        message = 'damage(' // int_text(k) // ') = ' // format_real(damage(k)) // &
+        message = 'damage(' // int_text(k) // ') = ' // value_str(damage(k)) // &
                   ' is inadmissible: admissible 0 <= damage <= 1'
         return
       end if
     end do
     do k = 1, count_given(beta)
       if (.not. in_range(beta(k), 0.0_dp, 1.0e12_dp)) then
-        message = 'beta(' // int_text(k) // ') = ' // format_real(beta(k)) // &
+        message = 'beta(' // int_text(k) // ') = ' // value_str(beta(k)) // &
                   ' is inadmissible: admissible 0 <= beta <= 1e12'
         return
       end if
     end do
     do k = 1, count_given(zeta)
       if (.not. in_range(zeta(k), 0.0_dp, 1.0e30_dp)) then
-        message = 'zeta(' // int_text(k) // ') = ' // format_real(zeta(k)) // &
+        message = 'zeta(' // int_text(k) // ') = ' // value_str(zeta(k)) // &
                   ' is inadmissible: admissible 0 <= zeta < 1e30 [N/mm]'
         return
       end if
@@ -973,7 +1124,7 @@ contains
     do k = 1, count_given(theta)
       if (.not. in_range(theta(k), -0.5_dp * pi, 0.5_dp * pi) .or. &
           same_value(abs(theta(k)), 0.5_dp * pi)) then
-        message = 'theta(' // int_text(k) // ') = ' // format_real(theta(k)) // &
+        message = 'theta(' // int_text(k) // ') = ' // value_str(theta(k)) // &
                   ' is inadmissible: admissible -pi/2 < theta < pi/2 [rad]'
         return
       end if
@@ -1013,28 +1164,152 @@ contains
     deck%init_sigma = traction
   end subroutine read_initial_state
 
-  subroutine read_output(u, deck, message)
+  subroutine read_output(u, text, scan, deck, message)
     integer, intent(in) :: u
+    character(len=*), intent(in) :: text
+    type(group_scan_t), intent(in) :: scan
     type(deck_t), intent(inout) :: deck
     character(len=*), intent(out) :: message
-    character(len=path_len) :: file
-    character(len=1024) :: title
+    character(len=path_len + 1) :: file
+    character(len=title_len + 1) :: title
     integer :: ios
-    character(len=512) :: iomsg
+    character(len=512) :: iomsg, iomsg2
+    character(len=:), allocatable :: probe
+    integer :: kp
     namelist /output/ file, title
     file = ''
     title = ''
     message = ''
     read (u, nml=output, iostat=ios, iomsg=iomsg)
     if (ios /= 0) then
-      call nml_error(ios, iomsg, vars_output, message)
+      do kp = 1, scan%n
+        probe = probe_text(text, 'output', scan%a(kp))
+        read (probe, nml=output, iostat=ios, iomsg=iomsg2)
+        if (ios /= 0) exit
+      end do
+      call nml_error(8, text, scan, kp, iomsg, iomsg2, message)
       return
     end if
-    if (len_trim(file) > 0) deck%output_file = trim(adjustl(file))
+    if (len_trim(file) > path_len) then
+      message = 'file is longer than ' // int_text(path_len) // ' characters: admissible at most ' // &
+                int_text(path_len) // ' characters'
+      return
+    end if
+    if (len_trim(title) > title_len) then
+      message = 'title is longer than ' // int_text(title_len) // ' characters: admissible at most ' // &
+                int_text(title_len) // ' characters'
+      return
+    end if
+    file = adjustl(file)
+    if (len_trim(file) > 0) then
+      if (file(len_trim(file):len_trim(file)) == '/' .or. trim(file) == '.' .or. &
+          trim(file) == '..') then
+        message = "file = '" // trim(file) // "' is a folder: give a file name (e.g. 'out/" // &
+                  "result.h5'; the folder must exist)"
+        return
+      end if
+      deck%output_file = trim(file)
+      deck%output_given = .true.
+    end if
     deck%title = trim(title)
   end subroutine read_output
 
   ! ------------------------------------------------------------------- helpers
+
+  !> A real for messages: 'NaN', '+Inf', '-Inf', or the shortest text that reads back as x.
+  function value_str(x) result(text)
+    real(dp), intent(in) :: x
+    character(len=:), allocatable :: text
+    if (is_nan_value(x)) then
+      text = 'NaN'
+    else if (abs(x) > huge(1.0_dp)) then
+      text = merge('+Inf', '-Inf', x > 0.0_dp)
+    else if (abs(x) >= 1.0e30_dp) then
+      text = finite_text(x)
+    else
+      text = short_real(x)
+    end if
+  end function value_str
+
+  !> x (finite, nonzero) in the shortest scientific notation that reads back as x: '1e+200',
+  !> '2.5e-07'.
+  function finite_text(x) result(text)
+    real(dp), intent(in) :: x
+    character(len=:), allocatable :: text
+    character(len=40) :: buf
+    real(dp) :: back
+    integer :: digits, ios, e
+    character(len=:), allocatable :: mantissa, exponent
+    do digits = 1, 17
+      write (buf, '(es30.' // int_text(max(digits - 1, 1)) // 'e3)') x
+      read (buf, *, iostat=ios) back
+      if (ios == 0) then
+        if (same_value(back, x)) exit
+      end if
+    end do
+    buf = adjustl(buf)
+    e = index(buf, 'E')
+    mantissa = buf(1:e - 1)
+    exponent = trim(buf(e + 1:))
+    if (index(mantissa, '.') > 0) then
+      do while (mantissa(len(mantissa):len(mantissa)) == '0')
+        mantissa = mantissa(1:len(mantissa) - 1)
+      end do
+      if (mantissa(len(mantissa):len(mantissa)) == '.') mantissa = mantissa(1:len(mantissa) - 1)
+    end if
+    do while (len(exponent) > 3 .and. exponent(2:2) == '0')
+      exponent = exponent(1:1) // exponent(3:)
+    end do
+    text = mantissa // 'e' // exponent
+  end function finite_text
+
+  !> '' if `value` is admissible for property ip, else the message (the value as written).
+  subroutine check_value(ip, value, message)
+    integer, intent(in) :: ip
+    real(dp), intent(in) :: value
+    character(len=*), intent(out) :: message
+    logical :: ok
+    call check_property(ip, value, ok, message)
+    message = ''
+    if (ok) return
+    message = "property '" // trim(properties(ip)%name) // "' = " // value_str(value) // &
+              ' is inadmissible: admissible ' // format_range(ip)
+    if (.not. properties(ip)%infinite_ok .and. is_infinite_value(value) .and. &
+        abs(value) <= huge(1.0_dp)) then
+      message = trim(message) // ' (values >= 1e30 mean infinity, which ' // &
+                trim(properties(ip)%name) // ' does not admit)'
+    end if
+  end subroutine check_value
+
+  !> '' if the derived scales of the material are representable, else why not: the opening
+  !> lengths s_c = 2 Gc / sigma0, s_0 = (1 - eta) s_c [mm] and the stiffnesses K = sigma0 / s_0
+  !> [MPa/mm] must lie in [1e-100, 1e100] (computed in logarithms, so nothing overflows here;
+  !> the library itself would divide by an underflowed s_0).
+  function scale_check(mat) result(why)
+    type(interlock_material_t), intent(in) :: mat
+    character(len=256) :: why
+    real(dp), parameter :: lim = 100.0_dp * log(10.0_dp)
+    real(dp) :: ln_sc, ln_s0, ln_k
+    integer :: i
+    real(dp) :: sigma0
+    character(len=1) :: c
+    why = ''
+    do i = 1, 2
+      sigma0 = merge(mat%sigma0_n, mat%sigma0_t, i == 1)
+      c = merge('n', 't', i == 1)
+      ln_sc = log(2.0_dp) + log(mat%gc) - log(sigma0)
+      ln_s0 = log(1.0_dp - mat%eta) + ln_sc
+      ln_k = log(sigma0) - ln_s0
+      if (abs(ln_sc) > lim .or. abs(ln_s0) > lim .or. abs(ln_k) > lim) then
+        why = 'sigma0_' // c // ' = ' // value_str(sigma0) // ', gc = ' // value_str(mat%gc) // &
+              ' and eta = ' // value_str(mat%eta) // ' give s_0' // c // ' = 10^' // &
+              short_real(anint(ln_s0 / log(10.0_dp))) // ' mm and K_' // c // ' = 10^' // &
+              short_real(anint(ln_k / log(10.0_dp))) // ' MPa/mm: admissible 1e-100 <= s_c' // &
+              c // ', s_0' // c // ' <= 1e100 mm and 1e-100 <= K_' // c // ' <= 1e100 MPa/mm'
+        return
+      end if
+    end do
+  end function scale_check
 
   !> The shortest decimal text that reads back as x (labels: '0.5', '1e+04', 'inf').
   function short_real(x) result(text)
@@ -1062,8 +1337,7 @@ contains
         if (same_value(back, x)) exit
       end if
     end do
-    write (buf, '(es30.' // int_text(max(digits - 1, 1)) // ')') x
-    text = trim(adjustl(buf))
+    text = finite_text(x)
     if (abs(x) >= 1.0e-3_dp .and. abs(x) < 1.0e5_dp) then
       write (buf, '(f0.' // int_text(max(digits - 1 - floor(log10(abs(x))), 0)) // ')') x
       text = trim(adjustl(buf))
@@ -1123,14 +1397,6 @@ contains
     real(dp), intent(in) :: a(:)
     has_gaps = .not. all(is_given(a(1:count_given(a))))
   end function has_gaps
-
-  pure function int_text(i) result(text)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: text
-    character(len=16) :: buf
-    write (buf, '(i0)') i
-    text = trim(buf)
-  end function int_text
 
   pure function int8_text(i) result(text)
     integer(kind=8), intent(in) :: i

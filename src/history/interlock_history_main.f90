@@ -12,6 +12,7 @@ program interlock_history
   use interlock_history_output, only: output_t, output_open, output_write_case, output_close, &
       output_abort
   use interlock_h5, only: h5_open_library, h5_close_library
+  use interlock_deck_text, only: is_folder
   implicit none
 
   interface
@@ -73,6 +74,13 @@ program interlock_history
     call usage(error_unit)
     call finish(1)
   end if
+  if (len(output_dir) > 0) then
+    if (.not. is_folder(output_dir)) then
+      write (error_unit, '(a)') 'interlock-history: error: --output-dir ' // output_dir // &
+        ': no such folder (it must exist)'
+      call finish(1)
+    end if
+  end if
   command = command_line()
 
   call h5_open_library(stat)
@@ -97,7 +105,7 @@ contains
     type(interlock_solver_t) :: solver
     type(interlock_state_t) :: state
     type(history_t) :: hist
-    character(len=:), allocatable :: label, final_name
+    character(len=:), allocatable :: label, final_name, origin, folder
     character(len=1024) :: message
     integer :: stat, icase, slash
     character(len=8) :: cbuf
@@ -113,8 +121,30 @@ contains
       slash = index(final_name, '/', back=.true.)
       final_name = output_dir // '/' // final_name(slash + 1:)
     end if
-    call output_open(final_name, deck, command, out, stat, message)
-    if (stat /= 0) then
+    ! Where the file goes: the &output file (or --output-dir) must name a file in an
+    ! existing folder; checked before anything is computed.
+    origin = ' (the deck''s name with .h5'
+    if (deck%output_given) origin = ' (&output: file = ''' // deck%output_file // ''''
+    if (len(output_dir) > 0) then
+      origin = origin // ' in --output-dir ' // output_dir // ')'
+    else
+      origin = origin // ')'
+    end if
+    slash = index(final_name, '/', back=.true.)
+    folder = '.'
+    if (slash > 1) folder = final_name(1:slash - 1)
+    if (slash == 1) folder = '/'
+    message = ''
+    if (is_folder(final_name)) then
+      message = 'the output file ' // final_name // ' is a folder' // origin
+    else if (.not. is_folder(folder)) then
+      message = 'the output folder ' // folder // ' does not exist' // origin
+    end if
+    if (len_trim(message) == 0) then
+      call output_open(final_name, deck, command, out, stat, message)
+      if (stat /= 0) message = trim(message) // origin
+    end if
+    if (len_trim(message) > 0) then
       write (error_unit, '(a)') 'interlock-history: error: ' // path // ': ' // trim(message)
       rc = max(rc, 1)
       return
@@ -172,12 +202,38 @@ contains
 
   subroutine usage(unit)
     integer, intent(in) :: unit
-    write (unit, '(a)') 'usage: interlock-history [--output-dir DIR] DECK.nml [DECK.nml ...]', &
-      '  Runs each deck (docs/deck-format.md) and writes one HDF5 file per deck', &
-      '  (docs/history-output.md): the &output file, or the deck''s name with .h5 in the', &
-      '  working folder; --output-dir DIR puts the files in DIR.', &
-      '  Exit status: 0 all cases completed; 1 a deck was rejected or a file could not be', &
-      '  written; 2 files written but some case stopped early (see its status attribute).'
+    write (unit, '(a)') &
+      'usage: interlock-history [--output-dir DIR] [--] DECK.nml [DECK.nml ...]', &
+      '', &
+      'Runs the point history of each deck (a Fortran namelist, docs/deck-format.md) and', &
+      'writes one HDF5 file per deck (docs/history-output.md): the &output file, or the', &
+      'deck''s name with .h5 in the working folder. The file is written as NAME.h5.tmp-PID', &
+      'and renamed when complete: a rejected deck or a failed write leaves no file.', &
+      '', &
+      'Options:', &
+      '  -d, --output-dir DIR  write the files into DIR (an existing folder), same base names', &
+      '  -h, --help            print this help and exit (status 0)', &
+      '      --version         print the library version and exit (status 0)', &
+      '  --                    end of options (a deck name may then start with -)', &
+      '', &
+      'Exit status:', &
+      '  0  every case of every deck completed', &
+      '  1  a deck was rejected (the message on stderr names the deck file, the group, the', &
+      '     variable and the admissible range), an option is wrong, or a file could not be', &
+      '     written; nothing is written for that deck (other decks are still run)', &
+      '  2  every file was written but some case stopped early: its status attribute says', &
+      '     at which step and why (the rows up to that step are kept)', &
+      '', &
+      'Per step (datasets iterations and substeps), with A = 4 (max_cuts+1) (max_cuts+2)', &
+      'attempts at most per step (3968 with the default &solver max_cuts = 30):', &
+      '  0 <= iterations <= newton_max_iterations * A   (Newton iterations of the mixed-', &
+      '                                                 control solve, all attempts)', &
+      '  1 <= substeps   <= 100000 * A                  (library sub-increments of the', &
+      '                                                 accepted attempts)', &
+      'A step that still fails after max_cuts halvings in a row stops the case.', &
+      '', &
+      'Limits: decks of at most 4 MiB of text (LF or CR LF line ends), 10001 points,', &
+      '2,000,000 steps per case, 1000 sweep values.'
   end subroutine usage
 
   subroutine finish(code)

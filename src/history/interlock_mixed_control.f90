@@ -6,6 +6,9 @@
 !> from the state at the start of the step (the state is never updated during the iterations);
 !> a step that cannot be solved is cut in halves (and regrown after successes), a bounded number
 !> of times. A history is a sequence of such steps along a piecewise-linear loading path.
+!> Where the relative tolerance is below the floating-point resolution of the separation (a very
+!> stiff interface), a solve is accepted once s is resolved to adjacent floating-point numbers
+!> and the residual is at most |K| 8 eps |s| (docs/history-output.md).
 module interlock_mixed_control
   use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
       interlock_info_t, interlock_update, status_ok, format_real, is_nan_value
@@ -256,7 +259,8 @@ contains
     type(interlock_info_t), intent(out) :: info
     logical, intent(out) :: ok
     character(len=*), intent(out) :: reason
-    real(dp) :: tangent(2, 2), r, d, x, x_new, x_lo, x_hi, r_prev, step, ftol, xscale, r_min, r_max
+    real(dp) :: tangent(2, 2), r, d, x, x_new, x_lo, x_hi, r_prev, step, ftol, xscale, r_min, r_max, &
+                r_lo, r_hi
     logical :: have_lo, have_hi, bisect
 
     ok = .false.
@@ -269,6 +273,8 @@ contains
     have_hi = .false.
     x_lo = 0.0_dp
     x_hi = 0.0_dp
+    r_lo = 0.0_dp
+    r_hi = 0.0_dp
     r_prev = huge(1.0_dp)
     r_min = huge(1.0_dp)
     r_max = -huge(1.0_dp)
@@ -292,9 +298,11 @@ contains
       ! Keep the bracket: x_lo has r < 0, x_hi has r > 0.
       if (r < 0.0_dp) then
         x_lo = x
+        r_lo = r
         have_lo = .true.
       else
         x_hi = x
+        r_hi = r
         have_hi = .true.
       end if
       d = tangent(i, i)
@@ -302,6 +310,17 @@ contains
       if (have_lo .and. have_hi) then
         if (abs(x_hi - x_lo) <= 4.0_dp * epsilon(1.0_dp) * max(abs(x_lo), abs(x_hi)) + &
             tiny(1.0_dp)) then
+          ! The bracket is down to adjacent floating-point numbers: accept its better end if
+          ! its residual is what that resolution allows with this stiffness (a very stiff
+          ! interface: |K| 8 ulp(s) > ftol); otherwise the traction really jumps.
+          x = merge(x_lo, x_hi, abs(r_lo) <= abs(r_hi))
+          if (min(abs(r_lo), abs(r_hi)) <= resolution_floor(x, d)) then
+            s(i) = x
+            call interlock_update(mat, solver, s, old, new, sigma, tangent, info)
+            ok = info%status == status_ok
+            if (.not. ok) reason = info%message
+            return
+          end if
           reason = 'the ' // trim(traction_names(i)) // ' jumps across the prescribed value ' // &
                    format_real(target) // ' MPa at ' // trim(separation_names(i)) // ' = ' // &
                    format_real(x) // ' mm: no solution'
@@ -419,6 +438,13 @@ contains
         if (descent) exit
       end do
       if (.not. descent) then
+        ! No step reduces the residual: accept if it is what the floating-point resolution of
+        ! s allows with this tangent (a very stiff interface).
+        if (all(abs(r) <= resolution_floor(s(1), tangent(:, 1)) + &
+                          resolution_floor(s(2), tangent(:, 2)))) then
+          ok = .true.
+          return
+        end if
         reason = 'no (s_N, s_T) near (' // format_real(s(1)) // ', ' // format_real(s(2)) // &
                  ') mm reduces the residual of (sigma_N, sigma_T) = (' // format_real(target(1)) // &
                  ', ' // format_real(target(2)) // ') MPa: no solution'
@@ -433,6 +459,15 @@ contains
       norm = norm_trial
     end do
   end subroutine newton_2d
+
+  !> The traction residual that the floating-point resolution of a separation x allows with
+  !> stiffness d: |d| 8 eps |x| (0 where d is not finite).
+  elemental real(dp) function resolution_floor(x, d)
+    real(dp), intent(in) :: x, d
+    resolution_floor = 0.0_dp
+    if (ieee_is_finite(d) .and. ieee_is_finite(x)) resolution_floor = abs(d) * 8.0_dp * &
+      epsilon(1.0_dp) * abs(x)
+  end function resolution_floor
 
   pure function int_text(i) result(text)
     integer, intent(in) :: i
