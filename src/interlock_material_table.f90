@@ -10,7 +10,7 @@ module interlock_material_table
   public :: property_t, statevar_t, properties, statevars
   public :: n_properties, n_required_properties, n_statevars_per_plane, n_statevars_global
   public :: umat_planes, umat_nstatv, property_index, statevar_index
-  public :: check_property, format_range, format_real
+  public :: check_property, format_range, format_real, format_integer
   public :: kind_real, kind_flag, kind_choice
   public :: prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
             prop_thetaf, prop_zeta0, prop_prefractured, prop_scheme, prop_substep_tol, &
@@ -261,6 +261,15 @@ contains
       end if
     end if
   end function format_real
+
+  !> An integer as text, without blanks: 42 -> "42".
+  pure function format_integer(i) result(text)
+    integer, intent(in) :: i
+    character(len=:), allocatable :: text
+    character(len=16) :: buf
+    write (buf, '(i0)') i
+    text = trim(buf)
+  end function format_integer
 
   !> "1.500000" -> "1.5", "2.000" -> "2".
   pure function strip_zeros(s) result(r)

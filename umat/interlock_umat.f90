@@ -62,7 +62,7 @@ recursive subroutine UMAT(STRESS, STATEV, DDSDDE, SSE, SPD, SCD, RPL, DDSDDT, DR
   use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
       interlock_info_t, interlock_update, umat_controls_t, props_to_material, statev_to_state, &
       state_to_statev, umat_nstatv, status_ok, status_local_failure, message_len, is_nan_value, &
-      interlock_write_replay_deck
+      interlock_write_replay_deck, format_integer
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   implicit none
   integer, intent(in) :: NDI                 !< direct components (1 for a 2D cohesive element)
@@ -184,7 +184,7 @@ contains
     character(len=64) :: where
     write (where, '(a,i0,a,i0)') 'element ', NOEL, ', point ', NPT
     write (output_unit, '(a)') 'interlock UMAT: ' // trim(where) // " (material '" // &
-      trim(CMNAME) // "', increment " // trim(int_text(KINC)) // '): ' // trim(why)
+      trim(CMNAME) // "', increment " // trim(format_integer(KINC)) // '): ' // trim(why)
     call lower_pnewdt(proposal)
   end subroutine fail
 
@@ -198,8 +198,8 @@ contains
     if (env_stat /= 0 .or. length == 0) return
     write (name, '(a,i0,a,i0,a,i0,a)') 'interlock_replay_e', NOEL, '_p', NPT, '_k', KINC, '.nml'
     call interlock_write_replay_deck(trim(dir) // '/' // trim(name), mat, solver, old, s, &
-      'UMAT element ' // int_text(NOEL) // ', point ' // int_text(NPT) // ', increment ' // &
-      int_text(KINC) // ': ' // why, ios)
+      'UMAT element ' // format_integer(NOEL) // ', point ' // format_integer(NPT) // ', increment ' // &
+      format_integer(KINC) // ': ' // why, ios)
     if (ios /= 0) write (output_unit, '(a)') 'interlock UMAT: could not write the replay deck ' &
       // trim(dir) // '/' // trim(name)
   end subroutine write_replay
@@ -214,13 +214,6 @@ contains
     end if
   end subroutine lower_pnewdt
 
-  pure function int_text(i) result(text)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: text
-    character(len=16) :: b
-    write (b, '(i0)') i
-    text = trim(b)
-  end function int_text
 
   !> Fraction f of the increment old -> new that meets the damage and angle bounds (1 when
   !> both hold), interpolating the drivers beta and zeta linearly between `zero` (the state a

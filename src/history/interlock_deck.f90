@@ -11,14 +11,14 @@ module interlock_deck
   use interlock, only: dp, deg_to_rad, pi, max_planes, n_effects, &
       interlock_material_t, interlock_solver_t, interlock_state_t, interlock_state_init, &
       interlock_material_prepare, interlock_paper_ria, scheme_explicit, scheme_implicit, &
-      properties, property_index, check_property, format_range, &
+      properties, property_index, check_property, format_range, format_integer, &
       prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
       prop_thetaf, prop_zeta0, prop_prefractured, prop_scheme, prop_substep_tol, prop_max_dd, &
       prop_max_dtheta, prop_effect_damage, prop_effect_wear, is_nan_value, same_value, &
       is_infinite_value, &
       status_ok, status_bad_input
   use interlock_mixed_control, only: control_t
-  use interlock_deck_text, only: group_scan_t, scan_deck, probe_text, value_text, lower, int_text, &
+  use interlock_deck_text, only: group_scan_t, scan_deck, probe_text, value_text, lower, &
       is_folder
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_get_halting_mode, &
       ieee_set_halting_mode, ieee_overflow, ieee_invalid, ieee_divide_by_zero
@@ -372,8 +372,8 @@ contains
       m = count_given(given)
       if (m == 0) return
       if (m /= n) then
-        why = name // ' has ' // int_text(m) // ' values: give one per microplane (' // &
-              int_text(n) // ')'
+        why = name // ' has ' // format_integer(m) // ' values: give one per microplane (' // &
+              format_integer(n) // ')'
         return
       end if
       field(1:n) = given(1:n)
@@ -387,7 +387,7 @@ contains
     integer, intent(in) :: icase
     character(len=:), allocatable :: text
     text = ''
-    if (deck%sweep_property > 0) text = '&sweep case ' // int_text(icase) // ' (' // &
+    if (deck%sweep_property > 0) text = '&sweep case ' // format_integer(icase) // ' (' // &
       trim(deck%sweep_parameter) // ' = ' // value_str(deck%sweep_values(icase)) // '): '
   end function case_text
 
@@ -428,7 +428,7 @@ contains
     end if
     if (nbytes > max_deck_bytes) then
       message = path // ': the deck has ' // trim(int8_text(nbytes)) // ' bytes: admissible ' // &
-                'at most ' // int_text(max_deck_bytes) // ' bytes (4 MiB)'
+                'at most ' // format_integer(max_deck_bytes) // ' bytes (4 MiB)'
       return
     end if
     deallocate (text)
@@ -461,14 +461,14 @@ contains
         ok_cr = i < len(text)
         if (ok_cr) ok_cr = text(i + 1:i + 1) == achar(10)
         if (.not. ok_cr) then
-          message = path // ': line ' // int_text(line) // ': a carriage return (code 13) ' // &
+          message = path // ': line ' // format_integer(line) // ': a carriage return (code 13) ' // &
                     'without a line feed: line ends must be LF (Unix) or CR LF (Windows)'
           return
         end if
       end if
       if (c < 32 .and. c /= 9 .and. c /= 10 .and. c /= 13 .and. c /= 12 .or. c == 127) then
-        message = path // ': line ' // int_text(line) // ': byte ' // int_text(i) // &
-                  ' is a control character (code ' // int_text(c) // &
+        message = path // ': line ' // format_integer(line) // ': byte ' // format_integer(i) // &
+                  ' is a control character (code ' // format_integer(c) // &
                   '): the deck must be a text file (a Fortran namelist)'
         return
       end if
@@ -489,7 +489,7 @@ contains
     if (k >= 1 .and. k <= scan%n) then
       v = var_index(g, scan%a(k)%name)
       message = trim(scan%a(k)%name) // trim(scan%a(k)%subscript) // ' = ' // &
-                value_text(text, scan%a(k)) // ' cannot be read (line ' // int_text(scan%a(k)%line) // &
+                value_text(text, scan%a(k)) // ' cannot be read (line ' // format_integer(scan%a(k)%line) // &
                 '): ' // trim(scan%a(k)%name)
       if (v > 0) then
         message = trim(message) // ' takes ' // trim(deck_vars(v)%what)
@@ -537,7 +537,7 @@ contains
     do k = 1, scan%n
       if (var_index(g, scan%a(k)%name) == 0) then
         message = 'unknown variable ' // trim(scan%a(k)%name) // ' (line ' // &
-                  int_text(scan%a(k)%line) // '; the variables of this group are: ' // &
+                  format_integer(scan%a(k)%line) // '; the variables of this group are: ' // &
                   group_vars(g) // ')'
         return
       end if
@@ -546,8 +546,8 @@ contains
         if (len_trim(scan%a(j)%subscript) > 0 .and. len_trim(scan%a(k)%subscript) > 0 .and. &
             scan%a(j)%subscript /= scan%a(k)%subscript) cycle
         message = trim(scan%a(k)%name) // trim(scan%a(k)%subscript) // &
-                  ' is given more than once (lines ' // int_text(scan%a(j)%line) // ' and ' // &
-                  int_text(scan%a(k)%line) // '): give each variable once'
+                  ' is given more than once (lines ' // format_integer(scan%a(j)%line) // ' and ' // &
+                  format_integer(scan%a(k)%line) // '): give each variable once'
         return
       end do
     end do
@@ -682,45 +682,45 @@ contains
     else
       deck%paper_ria = .false.
       if (n_planes < 1 .or. n_planes > max_planes) then
-        message = 'n_planes = ' // int_text(n_planes) // ' is inadmissible: admissible 1 <= ' // &
-                  'n_planes <= ' // int_text(max_planes)
+        message = 'n_planes = ' // format_integer(n_planes) // ' is inadmissible: admissible 1 <= ' // &
+                  'n_planes <= ' // format_integer(max_planes)
         return
       end if
       n = n_planes
       if (count_given(theta0_deg) /= n .or. count_given(gamma_hat) /= n) then
-        message = 'with n_planes = ' // int_text(n) // ' give ' // int_text(n) // &
+        message = 'with n_planes = ' // format_integer(n) // ' give ' // format_integer(n) // &
                   ' values of gamma_hat and of theta0_deg (given: ' // &
-                  int_text(count_given(gamma_hat)) // ' and ' // int_text(count_given(theta0_deg)) // ')'
+                  format_integer(count_given(gamma_hat)) // ' and ' // format_integer(count_given(theta0_deg)) // ')'
         return
       end if
       deck%thetaf_given = count_given(thetaf_deg) > 0
       if (count_given(thetaf_deg) == 0) thetaf_deg(1:n) = theta0_deg(1:n)
       if (count_given(zeta0) == 0) zeta0(1:n) = huge(1.0_dp)
       if (count_given(thetaf_deg) /= n .or. count_given(zeta0) /= n) then
-        message = 'with n_planes = ' // int_text(n) // ' give ' // int_text(n) // &
+        message = 'with n_planes = ' // format_integer(n) // ' give ' // format_integer(n) // &
                   ' values of thetaf_deg and of zeta0, or none'
         return
       end if
       do k = 1, n
         call check_required(prop_theta0, abs(theta0_deg(k)), message)
         if (len_trim(message) > 0) then
-          message = 'plane ' // int_text(k) // ': ' // trim(message) // ' (in absolute value)'
+          message = 'plane ' // format_integer(k) // ': ' // trim(message) // ' (in absolute value)'
           return
         end if
         call check_required(prop_zeta0, zeta0(k), message)
         if (len_trim(message) > 0) then
-          message = 'plane ' // int_text(k) // ': ' // trim(message)
+          message = 'plane ' // format_integer(k) // ': ' // trim(message)
           return
         end if
         if (.not. (in_range(gamma_hat(k), 0.0_dp, 1.0_dp) .and. gamma_hat(k) > 0.0_dp)) then
-          message = 'plane ' // int_text(k) // ': gamma_hat(' // int_text(k) // ') = ' // &
+          message = 'plane ' // format_integer(k) // ': gamma_hat(' // format_integer(k) // ') = ' // &
                     value_str(gamma_hat(k)) // ' is inadmissible: admissible 0 < gamma_hat <= 1 [-]'
           return
         end if
         ok = in_range(abs(thetaf_deg(k)), 0.0_dp, abs(theta0_deg(k)))
         if (ok) ok = .not. (thetaf_deg(k) * theta0_deg(k) < 0.0_dp)
         if (.not. ok) then
-          message = 'plane ' // int_text(k) // ': thetaf_deg(' // int_text(k) // ') = ' // &
+          message = 'plane ' // format_integer(k) // ': thetaf_deg(' // format_integer(k) // ') = ' // &
                     value_str(thetaf_deg(k)) // ' is inadmissible: admissible 0 <= |thetaf_deg| ' // &
                     '<= |theta0_deg| = ' // value_str(abs(theta0_deg(k))) // &
                     ' [deg], of the same sign as theta0_deg = ' // value_str(theta0_deg(k))
@@ -820,33 +820,33 @@ contains
     end if
     n = count_given(times)
     if (n < 2) then
-      message = 'times has ' // int_text(n) // ' values: a history needs at least 2 points ' // &
+      message = 'times has ' // format_integer(n) // ' values: a history needs at least 2 points ' // &
                 '(an empty history has nothing to compute)'
       return
     end if
     if (count_given(normal) /= n .or. count_given(tangential) /= n) then
       message = 'times, normal and tangential must have the same number of values (given: ' // &
-                int_text(n) // ', ' // int_text(count_given(normal)) // ', ' // &
-                int_text(count_given(tangential)) // ')'
+                format_integer(n) // ', ' // format_integer(count_given(normal)) // ', ' // &
+                format_integer(count_given(tangential)) // ')'
       return
     end if
     do i = 1, n
       if (.not. (ieee_is_finite(times(i)) .and. ieee_is_finite(normal(i)) .and. &
                  ieee_is_finite(tangential(i)))) then
-        message = 'point ' // int_text(i) // ': times, normal and tangential must be finite ' // &
+        message = 'point ' // format_integer(i) // ': times, normal and tangential must be finite ' // &
                   'numbers (NaN or Inf given)'
         return
       end if
       if (abs(normal(i)) > 1.0e12_dp .or. abs(tangential(i)) > 1.0e12_dp .or. &
           abs(times(i)) > 1.0e12_dp) then
-        message = 'point ' // int_text(i) // ': admissible |times|, |normal|, |tangential| ' // &
+        message = 'point ' // format_integer(i) // ': admissible |times|, |normal|, |tangential| ' // &
                   '<= 1e12 [mm or MPa]'
         return
       end if
       if (i > 1) then
         if (.not. (times(i) > times(i - 1))) then
-          message = 'times must be strictly increasing: times(' // int_text(i) // ') = ' // &
-                    value_str(times(i)) // ' <= times(' // int_text(i - 1) // ') = ' // &
+          message = 'times must be strictly increasing: times(' // format_integer(i) // ') = ' // &
+                    value_str(times(i)) // ' <= times(' // format_integer(i - 1) // ') = ' // &
                     value_str(times(i - 1))
           return
         end if
@@ -854,26 +854,26 @@ contains
     end do
     ns = count(steps /= unset_int)
     if (ns /= n - 1 .or. any(steps(1:max(ns, 0)) == unset_int)) then
-      message = 'steps must give one value per segment: ' // int_text(n - 1) // ' values for ' // &
-                int_text(n) // ' points (given: ' // int_text(ns) // ')'
+      message = 'steps must give one value per segment: ' // format_integer(n - 1) // ' values for ' // &
+                format_integer(n) // ' points (given: ' // format_integer(ns) // ')'
       return
     end if
     do i = 1, n - 1
       if (steps(i) < 1) then
-        message = 'steps(' // int_text(i) // ') = ' // int_text(steps(i)) // &
+        message = 'steps(' // format_integer(i) // ') = ' // format_integer(steps(i)) // &
                   ' is inadmissible: admissible steps >= 1'
         return
       end if
     end do
     if (cycles < 1 .or. cycles > max_cycles) then
-      message = 'cycles = ' // int_text(cycles) // ' is inadmissible: admissible 1 <= cycles <= ' // &
-                int_text(max_cycles)
+      message = 'cycles = ' // format_integer(cycles) // ' is inadmissible: admissible 1 <= cycles <= ' // &
+                format_integer(max_cycles)
       return
     end if
     total = int(cycles, 8) * sum(int(steps(1:n - 1), 8))
     if (total > max_total_steps) then
       message = 'the history has ' // trim(int8_text(total)) // ' steps: admissible at most ' // &
-                int_text(max_total_steps) // ' (steps summed over the segments, times cycles)'
+                format_integer(max_total_steps) // ' (steps summed over the segments, times cycles)'
       return
     end if
     ! Expand the cycles: cycle c > 1 goes on from the block's last point through points 2..n.
@@ -973,12 +973,12 @@ contains
       return
     end if
     if (newton_max_iterations < 1 .or. newton_max_iterations > 1000) then
-      message = 'newton_max_iterations = ' // int_text(newton_max_iterations) // &
+      message = 'newton_max_iterations = ' // format_integer(newton_max_iterations) // &
                 ' is inadmissible: admissible 1 <= newton_max_iterations <= 1000'
       return
     end if
     if (max_cuts < 0 .or. max_cuts > 50) then
-      message = 'max_cuts = ' // int_text(max_cuts) // ' is inadmissible: admissible 0 <= max_cuts <= 50'
+      message = 'max_cuts = ' // format_integer(max_cuts) // ' is inadmissible: admissible 0 <= max_cuts <= 50'
       return
     end if
     deck%control%tol = newton_tol
@@ -1042,13 +1042,13 @@ contains
     n = count_given(values)
     if (n < 1) then
       message = 'values is required: one value per case (at most ' // &
-                int_text(max_sweep_values) // ')'
+                format_integer(max_sweep_values) // ')'
       return
     end if
     do i = 1, n
       call check_value(ip, values(i), message)
       if (len_trim(message) > 0) then
-        message = 'values(' // int_text(i) // '): ' // trim(message)
+        message = 'values(' // format_integer(i) // '): ' // trim(message)
         return
       end if
     end do
@@ -1102,21 +1102,21 @@ contains
     end if
     do k = 1, count_given(damage)
       if (.not. in_range(damage(k), 0.0_dp, 1.0_dp)) then
-        message = 'damage(' // int_text(k) // ') = ' // value_str(damage(k)) // &
+        message = 'damage(' // format_integer(k) // ') = ' // value_str(damage(k)) // &
                   ' is inadmissible: admissible 0 <= damage <= 1'
         return
       end if
     end do
     do k = 1, count_given(beta)
       if (.not. in_range(beta(k), 0.0_dp, 1.0e12_dp)) then
-        message = 'beta(' // int_text(k) // ') = ' // value_str(beta(k)) // &
+        message = 'beta(' // format_integer(k) // ') = ' // value_str(beta(k)) // &
                   ' is inadmissible: admissible 0 <= beta <= 1e12'
         return
       end if
     end do
     do k = 1, count_given(zeta)
       if (.not. in_range(zeta(k), 0.0_dp, 1.0e30_dp)) then
-        message = 'zeta(' // int_text(k) // ') = ' // value_str(zeta(k)) // &
+        message = 'zeta(' // format_integer(k) // ') = ' // value_str(zeta(k)) // &
                   ' is inadmissible: admissible 0 <= zeta < 1e30 [N/mm]'
         return
       end if
@@ -1124,32 +1124,32 @@ contains
     do k = 1, count_given(theta)
       if (.not. in_range(theta(k), -0.5_dp * pi, 0.5_dp * pi) .or. &
           same_value(abs(theta(k)), 0.5_dp * pi)) then
-        message = 'theta(' // int_text(k) // ') = ' // value_str(theta(k)) // &
+        message = 'theta(' // format_integer(k) // ') = ' // value_str(theta(k)) // &
                   ' is inadmissible: admissible -pi/2 < theta < pi/2 [rad]'
         return
       end if
     end do
     do k = 1, count_given(frictional_slip)
       if (.not. in_range(frictional_slip(k), -1.0e12_dp, 1.0e12_dp)) then
-        message = 'frictional_slip(' // int_text(k) // ') is not a finite number [mm]'
+        message = 'frictional_slip(' // format_integer(k) // ') is not a finite number [mm]'
         return
       end if
     end do
     do k = 1, count_given(friction_traction)
       if (.not. in_range(friction_traction(k), -1.0e12_dp, 1.0e12_dp)) then
-        message = 'friction_traction(' // int_text(k) // ') is not a finite number [MPa]'
+        message = 'friction_traction(' // format_integer(k) // ') is not a finite number [MPa]'
         return
       end if
     end do
     do k = 1, count_given(separation)
       if (.not. in_range(separation(k), -1.0e12_dp, 1.0e12_dp)) then
-        message = 'separation(' // int_text(k) // ') is not a finite number [mm]'
+        message = 'separation(' // format_integer(k) // ') is not a finite number [mm]'
         return
       end if
     end do
     do k = 1, count_given(traction)
       if (.not. in_range(traction(k), -1.0e12_dp, 1.0e12_dp)) then
-        message = 'traction(' // int_text(k) // ') is not a finite number [MPa]'
+        message = 'traction(' // format_integer(k) // ') is not a finite number [MPa]'
         return
       end if
     end do
@@ -1191,13 +1191,13 @@ contains
       return
     end if
     if (len_trim(file) > path_len) then
-      message = 'file is longer than ' // int_text(path_len) // ' characters: admissible at most ' // &
-                int_text(path_len) // ' characters'
+      message = 'file is longer than ' // format_integer(path_len) // ' characters: admissible at most ' // &
+                format_integer(path_len) // ' characters'
       return
     end if
     if (len_trim(title) > title_len) then
-      message = 'title is longer than ' // int_text(title_len) // ' characters: admissible at most ' // &
-                int_text(title_len) // ' characters'
+      message = 'title is longer than ' // format_integer(title_len) // ' characters: admissible at most ' // &
+                format_integer(title_len) // ' characters'
       return
     end if
     file = adjustl(file)
@@ -1241,7 +1241,7 @@ contains
     integer :: digits, ios, e
     character(len=:), allocatable :: mantissa, exponent
     do digits = 1, 17
-      write (buf, '(es30.' // int_text(max(digits - 1, 1)) // 'e3)') x
+      write (buf, '(es30.' // format_integer(max(digits - 1, 1)) // 'e3)') x
       read (buf, *, iostat=ios) back
       if (ios == 0) then
         if (same_value(back, x)) exit
@@ -1331,7 +1331,7 @@ contains
       return
     end if
     do digits = 1, 17
-      write (buf, '(g0.' // int_text(digits) // ')') x
+      write (buf, '(g0.' // format_integer(digits) // ')') x
       read (buf, *, iostat=ios) back
       if (ios == 0) then
         if (same_value(back, x)) exit
@@ -1339,7 +1339,7 @@ contains
     end do
     text = finite_text(x)
     if (abs(x) >= 1.0e-3_dp .and. abs(x) < 1.0e5_dp) then
-      write (buf, '(f0.' // int_text(max(digits - 1 - floor(log10(abs(x))), 0)) // ')') x
+      write (buf, '(f0.' // format_integer(max(digits - 1 - floor(log10(abs(x))), 0)) // ')') x
       text = trim(adjustl(buf))
       if (index(text, '.') > 0) then
         do while (text(len(text):len(text)) == '0')

@@ -6,10 +6,11 @@
 !> cannot be read, by re-reading each assignment alone (`probe_text`).
 module interlock_deck_text
   use, intrinsic :: iso_c_binding, only: c_ptr, c_char, c_int, c_null_char, c_associated
+  use interlock, only: format_integer
   implicit none
   private
   public :: group_scan_t, assignment_t, scan_deck, probe_text, value_text, is_folder, &
-            is_name_char, lower, int_text
+            is_name_char, lower
 
   integer, parameter :: name_len = 64
 
@@ -75,24 +76,24 @@ contains
         end do
         name = lower(text(i + 1:min(j - 1, i + name_len)))
         if (j == i + 1) then
-          message = 'line ' // int_text(line) // ': a ''' // ch // ''' that does not start a ' // &
+          message = 'line ' // format_integer(line) // ': a ''' // ch // ''' that does not start a ' // &
                     'group name'
           return
         end if
         if (name == 'end') then
-          message = 'line ' // int_text(line) // ': ' // ch // 'end outside a group'
+          message = 'line ' // format_integer(line) // ': ' // ch // 'end outside a group'
           return
         end if
         do g = 1, size(names)
           if (trim(names(g)) == trim(name)) exit
         end do
         if (g > size(names)) then
-          message = 'line ' // int_text(line) // ': unknown group &' // trim(name) // &
+          message = 'line ' // format_integer(line) // ': unknown group &' // trim(name) // &
                     ' (the groups are &' // join(names, ', &') // ')'
           return
         end if
         if (groups(g)%present) then
-          message = 'line ' // int_text(line) // ': the group &' // trim(names(g)) // &
+          message = 'line ' // format_integer(line) // ': the group &' // trim(names(g)) // &
                     ' appears more than once'
           return
         end if
@@ -101,7 +102,7 @@ contains
         call scan_group(text, j, line, trim(names(g)), groups(g), i, message)
         if (len_trim(message) > 0) return
       else
-        message = 'line ' // int_text(line) // ': text outside a group: ''' // &
+        message = 'line ' // format_integer(line) // ': text outside a group: ''' // &
                   snippet(text(i:min(len(text), i + 200))) // ''' (everything but comments ' // &
                   'must be inside a group &name ... /; comments start with !)'
         return
@@ -158,8 +159,8 @@ contains
           i = j - 1
           return
         end if
-        message = '&' // gname // ' (line ' // int_text(group%line) // ') is not closed by ''/'' ' // &
-                  'before line ' // int_text(line) // ': ''' // snippet(text(i:min(len(text), i + 40))) // ''''
+        message = '&' // gname // ' (line ' // format_integer(group%line) // ') is not closed by ''/'' ' // &
+                  'before line ' // format_integer(line) // ': ''' // snippet(text(i:min(len(text), i + 40))) // ''''
         return
       else if (is_letter(ch) .and. starts_name(i)) then
         ! A name; an assignment if '=' follows (after blanks and one subscript).
@@ -191,7 +192,7 @@ contains
             group%a(group%n)%last = i - 1
           else if (len_trim(strip(text(first:i - 1))) > 0) then
             message = '&' // gname // ': unexpected text before the first variable: ''' // &
-                      snippet(strip(text(first:i - 1))) // ''' (line ' // int_text(line) // ')'
+                      snippet(strip(text(first:i - 1))) // ''' (line ' // format_integer(line) // ')'
             return
           end if
           if (group%n == n_cap) then
@@ -216,7 +217,7 @@ contains
       end if
       i = i + 1
     end do
-    message = '&' // gname // ' (line ' // int_text(group%line) // ') is not closed: the ' // &
+    message = '&' // gname // ' (line ' // format_integer(group%line) // ') is not closed: the ' // &
               'deck ends before its closing ''/'''
     if (quote /= ' ') message = trim(message) // ' (a string opened with ' // quote // &
                                 ' is not closed)'
@@ -385,12 +386,5 @@ contains
     end do
   end function lower
 
-  pure function int_text(i) result(text)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: text
-    character(len=16) :: buf
-    write (buf, '(i0)') i
-    text = trim(buf)
-  end function int_text
 
 end module interlock_deck_text

@@ -11,7 +11,7 @@
 !> and the residual is at most |K| 8 eps |s| (docs/history-output.md).
 module interlock_mixed_control
   use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
-      interlock_info_t, interlock_update, status_ok, format_real, is_nan_value
+      interlock_info_t, interlock_update, status_ok, format_real, format_integer, is_nan_value
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   implicit none
   private
@@ -96,7 +96,7 @@ contains
         call solve_step(mat, solver, ctl, old, t_start, t_end, new, sigma, iterations, substeps, &
                         stat, message)
         if (stat /= status_ok) then
-          hist%status = 'stopped at step ' // int_text(row + 1) // ' (time ' // &
+          hist%status = 'stopped at step ' // format_integer(row + 1) // ' (time ' // &
                         format_real(time) // '): ' // trim(message)
           hist%n_rows = row
           return
@@ -160,7 +160,7 @@ contains
       attempts = attempts + 1
       if (attempts > max_attempts) then
         stat = 2
-        message = 'the step needed more than ' // int_text(max_attempts) // ' attempts'
+        message = 'the step needed more than ' // format_integer(max_attempts) // ' attempts'
         exit
       end if
       f_next = min(1.0_dp, f + h)
@@ -180,7 +180,7 @@ contains
         h = 0.5_dp * h
         if (h < h_min) then
           stat = 2
-          message = trim(message) // ' (after cutting the step ' // int_text(ctl%max_cuts) // &
+          message = trim(message) // ' (after cutting the step ' // format_integer(ctl%max_cuts) // &
                     ' times)'
           exit
         end if
@@ -359,7 +359,7 @@ contains
       end if
     else
       reason = 'the ' // trim(traction_names(i)) // ' Newton iteration did not converge in ' // &
-               int_text(ctl%max_iterations) // ' iterations'
+               format_integer(ctl%max_iterations) // ' iterations'
     end if
   end subroutine newton_1d
 
@@ -403,7 +403,7 @@ contains
       end if
       if (iterations >= ctl%max_iterations) then
         reason = 'the (sigma_N, sigma_T) Newton iteration did not converge in ' // &
-                 int_text(ctl%max_iterations) // ' iterations'
+                 format_integer(ctl%max_iterations) // ' iterations'
         return
       end if
       iterations = iterations + 1
@@ -469,12 +469,5 @@ contains
       epsilon(1.0_dp) * abs(x)
   end function resolution_floor
 
-  pure function int_text(i) result(text)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: text
-    character(len=16) :: buf
-    write (buf, '(i0)') i
-    text = trim(buf)
-  end function int_text
 
 end module interlock_mixed_control

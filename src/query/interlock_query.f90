@@ -6,7 +6,7 @@ program interlock_query
   use interlock, only: properties, statevars, n_properties, n_required_properties, &
       n_statevars_per_plane, n_statevars_global, umat_planes, umat_nstatv, statevar_index, &
       format_range, format_real, property_t, statevar_t, kind_real, kind_flag, kind_choice, &
-      interlock_version_string
+      interlock_version_string, format_integer
   implicit none
   character(len=64) :: arg
   integer :: iarg, n
@@ -66,13 +66,6 @@ contains
     out = text
   end function pad
 
-  pure function itoa(i) result(text)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: text
-    character(len=16) :: b
-    write (b, '(i0)') i
-    text = trim(b)
-  end function itoa
 
   pure function default_text(i) result(text)
     integer, intent(in) :: i
@@ -110,7 +103,7 @@ contains
     case (3)
       text = '3 (+theta_0)'
     case default
-      text = itoa(k)
+      text = format_integer(k)
     end select
   end function plane_text
 
@@ -146,11 +139,11 @@ contains
       pad('default', 10) // pad('admissible', 58) // 'description'
     do i = 1, n_properties
       p = properties(i)
-      write (output_unit, '(a)') pad(itoa(i), 6) // pad(p%name, 25) // pad(p%unit, 6) // &
+      write (output_unit, '(a)') pad(format_integer(i), 6) // pad(p%name, 25) // pad(p%unit, 6) // &
         pad(default_text(i), 10) // pad(format_range(i), 58) // trim(p%description)
     end do
-    write (output_unit, '(a)') 'NPROPS from ' // itoa(n_required_properties) // ' to ' // &
-      itoa(n_properties) // '; properties after NPROPS take their defaults.'
+    write (output_unit, '(a)') 'NPROPS from ' // format_integer(n_required_properties) // ' to ' // &
+      format_integer(n_properties) // '; properties after NPROPS take their defaults.'
   end subroutine print_props
 
   subroutine print_state_variables()
@@ -173,12 +166,12 @@ contains
     do slot = 1, umat_nstatv
       call locate(slot, i, k)
       v = statevars(i)
-      write (output_unit, '(a)') pad(itoa(slot), 8) // pad(v%name, 25) // &
+      write (output_unit, '(a)') pad(format_integer(slot), 8) // pad(v%name, 25) // &
         pad(plane_column(v%per_plane, k), 14) // pad(v%unit, 6) // &
         trim(v%description)
     end do
-    write (output_unit, '(a)') 'NSTATV >= ' // itoa(umat_nstatv) // ' (*DEPVAR ' // &
-      itoa(umat_nstatv) // '); all zero before the first increment.'
+    write (output_unit, '(a)') 'NSTATV >= ' // format_integer(umat_nstatv) // ' (*DEPVAR ' // &
+      format_integer(umat_nstatv) // '); all zero before the first increment.'
   end subroutine print_statev
 
   !> Which state variable (ivar) and plane (k, 0 for global ones) STATEV(slot) holds.
@@ -198,7 +191,7 @@ contains
     end do
     ivar = 1
     k = 0
-    write (error_unit, '(a)') 'interlock-query: STATEV(' // itoa(slot) // ') is not in the table'
+    write (error_unit, '(a)') 'interlock-query: STATEV(' // format_integer(slot) // ') is not in the table'
     error stop 3
   end subroutine locate
 
@@ -253,14 +246,14 @@ contains
       '', &
       '### PROPS', &
       '', &
-      'NPROPS from ' // itoa(n_required_properties) // ' to ' // itoa(n_properties) // &
+      'NPROPS from ' // format_integer(n_required_properties) // ' to ' // format_integer(n_properties) // &
       '; properties after NPROPS take their defaults.', &
       '', &
       '| PROPS | name | unit | default | admissible | description |', &
       '|---|---|---|---|---|---|'
     do i = 1, n_properties
       p = properties(i)
-      write (output_unit, '(a)') '| ' // itoa(i) // ' | `' // trim(p%name) // '` | ' // &
+      write (output_unit, '(a)') '| ' // format_integer(i) // ' | `' // trim(p%name) // '` | ' // &
         trim(p%unit) // ' | ' // default_text(i) // ' | ' // format_range(i) // ' | ' // &
         trim(p%description) // ' |'
     end do
@@ -268,7 +261,7 @@ contains
       '', &
       '### STATEV', &
       '', &
-      'NSTATV >= ' // itoa(umat_nstatv) // ' (`*DEPVAR` ' // itoa(umat_nstatv) // &
+      'NSTATV >= ' // format_integer(umat_nstatv) // ' (`*DEPVAR` ' // format_integer(umat_nstatv) // &
       '); all zero before the first increment.', &
       '', &
       '| STATEV | name | plane | unit | description |', &
@@ -276,7 +269,7 @@ contains
     do slot = 1, umat_nstatv
       call locate(slot, i, k)
       v = statevars(i)
-      write (output_unit, '(a)') '| ' // itoa(slot) // ' | `' // trim(v%name) // '` | ' // &
+      write (output_unit, '(a)') '| ' // format_integer(slot) // ' | `' // trim(v%name) // '` | ' // &
         plane_column(v%per_plane, k) // ' | ' // trim(v%unit) // &
         ' | ' // trim(v%description) // ' |'
     end do
