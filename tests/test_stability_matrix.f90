@@ -2,7 +2,8 @@
 !> the material factors (every pair of levels, plus every one-factor extreme around a Table 1
 !> baseline), crossed with every loading and every scheme. Each cell must end 'completed' with
 !> finite, bounded outputs or with a stated, legitimate failure reason; never NaN/Inf, never an
-!> unbounded iteration count. `--doc FILE` also writes the summary table (docs/stability.md).
+!> unbounded iteration count. `--doc FILE` also writes the summary table (docs/stability.md);
+!> `--verbose` prints the cells that ended with a stated reason too.
 module test_stability_matrix_suite
   use, intrinsic :: iso_fortran_env, only: output_unit
   use interlock
@@ -10,7 +11,7 @@ module test_stability_matrix_suite
   use test_stability_tools
   implicit none
   private
-  public :: collect_stability_matrix, doc_path
+  public :: collect_stability_matrix, doc_path, verbose
 
   integer, parameter :: n_factors = 9, max_levels = 6
   integer, parameter :: f_hn = 1, f_eta = 2, f_scale = 3, f_theta0 = 4, f_thetaf = 5, &
@@ -65,6 +66,7 @@ module test_stability_matrix_suite
   integer :: n_pairwise = 0
   type(cell_t), allocatable :: cells(:)
   character(len=256) :: doc_path = ''
+  logical :: verbose = .false.   !< --verbose: print the cells with stated failures too
 
 contains
 
@@ -410,6 +412,7 @@ contains
       if (stat /= 0) then
         if (is_legitimate(stat, message)) then
           c%outcome = 1
+          if (verbose) call print_defect(c, mat, old, i, steps(i), 'stated: ' // message)
         else
           c%outcome = 2
           call print_defect(c, mat, old, i, steps(i), message)
@@ -686,7 +689,7 @@ contains
 end module test_stability_matrix_suite
 
 program test_stability_matrix
-  use test_stability_matrix_suite, only: collect_stability_matrix, doc_path
+  use test_stability_matrix_suite, only: collect_stability_matrix, doc_path, verbose
   use interlock_assert, only: suite_summary
   implicit none
   integer :: i, n
@@ -699,6 +702,7 @@ program test_stability_matrix
       call get_command_argument(i + 1, doc_path)
       i = i + 1
     end if
+    if (arg == '--verbose') verbose = .true.
     i = i + 1
   end do
   call collect_stability_matrix()
