@@ -79,3 +79,23 @@ add_test(NAME test_umat_install_consumer
     -DGENERATOR=${CMAKE_GENERATOR} -DFC=${CMAKE_Fortran_COMPILER}
     -P ${CMAKE_CURRENT_SOURCE_DIR}/test_umat_install.cmake)
 set_tests_properties(test_umat_install_consumer PROPERTIES TIMEOUT 300)
+
+# --- A local failure writes a replay deck (INTERLOCK_REPLAY_DIR); interlock-history replays it
+#     and stops with the same reason.
+interlock_add_suite(test_umat_replay test_umat_interface.f90 test_umat_replay.f90)
+target_link_libraries(test_umat_replay PRIVATE interlock_umat)
+set(umat_replay_dir ${CMAKE_CURRENT_BINARY_DIR}/umat_replay)
+file(MAKE_DIRECTORY ${umat_replay_dir})
+set_tests_properties(test_umat_replay PROPERTIES
+  ENVIRONMENT "INTERLOCK_REPLAY_DIR=${umat_replay_dir}"
+  FIXTURES_SETUP umat_replay_deck
+  PASS_REGULAR_EXPRESSION "unstable on small sub-increments.*test_umat_replay: [0-9]+ checks, 0 failed")
+if(TARGET interlock-history)
+  add_test(NAME test_umat_replay_history
+    COMMAND interlock-history --output-dir ${umat_replay_dir}
+            ${umat_replay_dir}/interlock_replay_e5_p2_k3.nml)
+  set_tests_properties(test_umat_replay_history PROPERTIES
+    FIXTURES_REQUIRED umat_replay_deck
+    PASS_REGULAR_EXPRESSION "unstable on small sub-increments"
+    FAIL_REGULAR_EXPRESSION "completed")
+endif()
