@@ -12,7 +12,7 @@ import numpy as np
 FILE_ATTRS = ["program", "version", "command_line", "deck", "deck_file", "title", "n_cases",
               "sweep_parameter"]
 CASE_TEXT_ATTRS = ["status", "label", "sweep_parameter", "effects", "scheme", "normal_control",
-                   "tangential_control"]
+                   "tangential_control", "extrapolation"]
 PROPERTIES = {"sigma0_n": "MPa", "sigma0_t": "MPa", "gc": "N/mm", "eta": "-", "mu": "-",
               "h_n": "mm", "theta0_deg": "deg", "thetaf_deg": "deg", "zeta0": "N/mm",
               "prefractured": "-", "substep_tol": "-", "gamma_hat": "-"}
@@ -66,6 +66,14 @@ def check_file(path, allow_stopped):
             for e in EFFECTS:
                 if "effect_" + e not in g.attrs:
                     errors.append(f"{where}: attribute 'effect_{e}' missing")
+            extrapolated = g.attrs.get("extrapolated", None)
+            if extrapolated is None:
+                errors.append(f"{where}: attribute 'extrapolated' missing")
+            elif int(extrapolated) not in (0, 1):
+                errors.append(f"{where}: extrapolated = {extrapolated}, not 0 or 1")
+            elif (int(extrapolated) == 1) != (len(text(g.attrs.get("extrapolation", ""))) > 0):
+                errors.append(f"{where}: extrapolated = {int(extrapolated)} but the 'extrapolation' "
+                              "description is " + ("empty" if int(extrapolated) else "not empty"))
             if text(g.attrs.get("sweep_parameter", "")) and "sweep_value" not in g.attrs:
                 errors.append(f"{where}: a sweep without 'sweep_value'")
             n_planes = int(g.attrs.get("n_planes", 0))

@@ -67,10 +67,33 @@ add_test(NAME history_stress
           $<TARGET_FILE:interlock-history> ${CMAKE_CURRENT_BINARY_DIR}/history_stress)
 set_tests_properties(history_stress PROPERTIES LABELS history TIMEOUT 300)
 
+# Global Richardson extrapolation (&solver extrapolate = .true.): (a) on the Fig. 10 wear scene
+# the extrapolated history converges at order > 1.7 and the plain one at ~1, and it is exactly
+# composed of the two runs; (b) without wear (Fig. 5) it equals the plain history to round-off;
+# a case that stops names the run that failed; (c) a deck with extrapolated cases (Fig. 12
+# scene, zeta_0 sweep) follows the layout contract.
+foreach(mode wear nowear stopped)
+  add_test(NAME history_extrapolate_${mode}
+    COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_extrapolate.py
+            $<TARGET_FILE:interlock-history> ${INTERLOCK_TEST_DATA}
+            ${CMAKE_CURRENT_BINARY_DIR}/history_extrapolate_${mode} ${mode})
+  set_tests_properties(history_extrapolate_${mode} PROPERTIES LABELS history TIMEOUT 300)
+endforeach()
+add_test(NAME history_run_fig12_extrapolated
+  COMMAND interlock-history --output-dir ${history_out}
+          ${INTERLOCK_TEST_DATA}/history/fig12_extrapolated.nml)
+set_tests_properties(history_run_fig12_extrapolated PROPERTIES
+  FIXTURES_SETUP history_fig12_extrapolated LABELS history)
+add_test(NAME history_check_fig12_extrapolated
+  COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_history_h5.py
+          ${history_out}/fig12_extrapolated.h5)
+set_tests_properties(history_check_fig12_extrapolated PROPERTIES
+  FIXTURES_REQUIRED history_fig12_extrapolated LABELS history)
+
 # --help documents the options and the exit status.
 add_test(NAME history_help COMMAND interlock-history --help)
 set_tests_properties(history_help PROPERTIES LABELS history
-  PASS_REGULAR_EXPRESSION "--output-dir DIR.*--version.*Exit status:.*0  every case.*1  a deck was rejected.*2  every file was written.*iterations <= newton_max_iterations")
+  PASS_REGULAR_EXPRESSION "--output-dir DIR.*--version.*Exit status:.*0  every case.*1  a deck was rejected.*2  every file was written.*iterations <= newton_max_iterations.*extrapolate = .true.*2 u\\(2n\\) - u\\(n\\)")
 
 interlock_add_suite(test_history_mixed_control test_history_mixed_control.f90)
 target_link_libraries(test_history_mixed_control PRIVATE interlock_history_core)

@@ -2,8 +2,10 @@
 !> interlock_mixed_control.f90) against closed forms of SPEC section 8 on a flat interface.
 module test_history_mixed_control_cases
   use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
-      interlock_state_init, interlock_material_prepare, interlock_paper_ria, status_ok
-  use interlock_mixed_control, only: control_t, history_t, solve_step, run_history
+      interlock_state_init, interlock_material_prepare, interlock_paper_ria, status_ok, &
+      scheme_implicit, same_value
+  use interlock_mixed_control, only: control_t, history_t, solve_step, run_history, &
+      run_history_extrapolated
   use interlock_assert, only: assert_equal, assert_true
   implicit none
   private
@@ -19,6 +21,10 @@ contains
     call run_case('tangential_traction_above_friction_limit_fails', &
                   tangential_traction_above_friction_limit_fails)
     call run_case('separated_interface_stops_history', separated_interface_stops_history)
+    call run_case('extrapolated_history_is_composed_of_both_runs', &
+                  extrapolated_history_is_composed_of_both_runs)
+    call run_case('extrapolated_history_stops_naming_the_run', &
+                  extrapolated_history_stops_naming_the_run)
   end subroutine collect_history_mixed_control
 
   !> Table 1 parameters, a flat RIA (theta = 0): K_n = K_t = 150 MPa/mm.
@@ -154,6 +160,92 @@ contains
     call assert_true(stat /= status_ok, 'no shear beyond H_N')
     call assert_true(index(message, 'separated') > 0, 'reason: ' // trim(message))
   end subroutine separated_interface_stops_history
+
+  !> Richardson extrapolation on a wearing RIA (Table 2, theta_0 = 30, theta_f = 7 deg,
+  !> zeta_0 = 1 N/mm, H_N = 1 mm; implicit): row i is built from row i of the run with the path's
+  !> steps (n) and row 2i of the run with every segment's steps doubled (2n), each computed here
+  !> by run_history: separation and traction 2 u(2n) - u(n), the 2n run's state variables and
+  !> energies bit for bit, iterations and substeps summed over the three steps; sigma_N
+  !> (traction-driven) within 3 newton_tol of its target; and the extrapolation changes the
+  !> result (wear makes it depend on the step).
+  subroutine extrapolated_history_is_composed_of_both_runs()
+    type(interlock_material_t) :: mat
+    type(interlock_solver_t) :: solver
+    type(interlock_state_t) :: initial
+    type(control_t) :: ctl
+    type(history_t) :: coarse, fine, extra
+    real(dp), parameter :: times(3) = [0.0_dp, 1.0_dp, 3.0_dp]
+    real(dp), parameter :: values(2, 3) = reshape([0.0_dp, 0.0_dp, -2.0_dp, 0.0_dp, -2.0_dp, &
+                                                   2.0_dp], [2, 3])
+    integer :: i, stat
+    character(len=256) :: message
+    logical :: same
+    mat%sigma0_n = 0.025_dp
+    mat%sigma0_t = 0.025_dp
+    mat%gc = 0.0005_dp
+    mat%eta = 0.99_dp
+    mat%mu = 0.5_dp
+    mat%h_n = 1.0_dp
+    call interlock_paper_ria(mat, 30.0_dp * acos(-1.0_dp) / 180.0_dp, &
+                             7.0_dp * acos(-1.0_dp) / 180.0_dp, 1.0_dp)
+    call interlock_material_prepare(mat, stat, message)
+    call assert_true(stat == status_ok, 'material prepared: ' // trim(message))
+    solver%scheme = scheme_implicit
+    call interlock_state_init(mat, initial)
+    ctl%traction = [.true., .false.]
+    call run_history(mat, solver, ctl, times, values, [1, 20], initial, coarse)
+    call run_history(mat, solver, ctl, times, values, [2, 40], initial, fine)
+    call run_history_extrapolated(mat, solver, ctl, times, values, [1, 20], initial, extra)
+    call assert_true(extra%status == 'completed' .and. extra%n_rows == 21 .and. extra%extrapolated, &
+                     'extrapolated history completed, 21 rows: ' // extra%status)
+    call assert_true(.not. (coarse%extrapolated .or. fine%extrapolated), 'plain runs not marked')
+    if (extra%n_rows /= 21 .or. coarse%n_rows /= 21 .or. fine%n_rows /= 42) return
+    same = .true.
+    do i = 1, 21
+      same = same .and. same_value(extra%time(i), coarse%time(i)) .and. &
+             all(same_value(extra%separation(:, i), &
+                            2.0_dp * fine%separation(:, 2 * i) - coarse%separation(:, i))) .and. &
+             all(same_value(extra%traction(:, i), &
+                            2.0_dp * fine%traction(:, 2 * i) - coarse%traction(:, i))) .and. &
+             all(same_value(extra%damage(:, i), fine%damage(:, 2 * i))) .and. &
+             all(same_value(extra%beta(:, i), fine%beta(:, 2 * i))) .and. &
+             all(same_value(extra%theta(:, i), fine%theta(:, 2 * i))) .and. &
+             all(same_value(extra%zeta(:, i), fine%zeta(:, 2 * i))) .and. &
+             all(same_value(extra%frictional_slip(:, i), fine%frictional_slip(:, 2 * i))) .and. &
+             all(same_value(extra%friction_traction(:, i), fine%friction_traction(:, 2 * i))) .and. &
+             same_value(extra%work(i), fine%work(2 * i)) .and. &
+             same_value(extra%diss_friction(i), fine%diss_friction(2 * i)) .and. &
+             extra%iterations(i) == coarse%iterations(i) + fine%iterations(2 * i - 1) + &
+                                    fine%iterations(2 * i) .and. &
+             extra%substeps(i) == coarse%substeps(i) + fine%substeps(2 * i - 1) + fine%substeps(2 * i)
+      call assert_equal(-2.0_dp, extra%traction(1, i), 3.0_dp * ctl%tol * 2.0_dp, &
+                        'sigma_N extrapolates to its target')
+    end do
+    call assert_true(same, 'rows composed of the coarse row i and the fine row 2i')
+    call assert_true(abs(extra%traction(2, 21) - coarse%traction(2, 21)) > 1.0e-6_dp, &
+                     'with wear the extrapolation changes sigma_T')
+  end subroutine extrapolated_history_is_composed_of_both_runs
+
+  !> The history of separated_interface_stops_history, extrapolated: it stops at the same step,
+  !> keeps the rows before it, and the status names the run that failed.
+  subroutine extrapolated_history_stops_naming_the_run()
+    type(interlock_material_t) :: mat
+    type(interlock_solver_t) :: solver
+    type(interlock_state_t) :: initial
+    type(control_t) :: ctl
+    type(history_t) :: hist
+    call flat_material(mat, 1.0_dp, .false.)
+    call interlock_state_init(mat, initial)
+    ctl%traction = [.false., .true.]
+    call run_history_extrapolated(mat, solver, ctl, [0.0_dp, 1.0_dp, 2.0_dp], &
+                     reshape([0.0_dp, 0.0_dp, -0.001_dp, 0.01_dp, 2.0_dp, 0.01_dp], [2, 3]), &
+                     [2, 2], initial, hist)
+    call assert_true(hist%n_rows == 2, 'two rows kept')
+    call assert_true(index(hist%status, 'stopped at step 3 ') == 1, 'status: ' // hist%status)
+    call assert_true(index(hist%status, 'the run with the deck''s steps: no s_T carries sigma_T') > 0, &
+                     'reason: ' // hist%status)
+    call assert_equal(0.01_dp, hist%traction(2, 2), 3.0e-13_dp, 'row 2 carries sigma_T')
+  end subroutine extrapolated_history_stops_naming_the_run
 
 end module test_history_mixed_control_cases
 

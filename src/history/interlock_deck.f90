@@ -73,6 +73,7 @@ module interlock_deck
     var_t(5, 'substep_tol', 'a real number [-]'), var_t(5, 'newton_tol', 'a real number [-]'), &
     var_t(5, 'newton_max_iterations', 'an integer (1 to 1000)'), &
     var_t(5, 'max_cuts', 'an integer (0 to 50)'), &
+    var_t(5, 'extrapolate', 'a logical (.true. or .false.)'), &
     var_t(6, 'parameter', 'a quoted string: a property name of the material table'), &
     var_t(6, 'values', 'real numbers, one per case (at most 1000)'), &
     var_t(7, 'damage', real_list), var_t(7, 'beta', real_list), &
@@ -109,6 +110,9 @@ module interlock_deck
     integer :: n_steps = 0
     ! &solver
     type(interlock_solver_t) :: solver
+    !> Global Richardson extrapolation: run each case with the deck's steps and with every
+    !> segment's step count doubled; separation and traction = 2 u(2n) - u(n)
+    logical :: extrapolate = .false.
     ! &sweep
     character(len=name_len) :: sweep_parameter = ''
     integer :: sweep_property = 0
@@ -932,16 +936,17 @@ contains
     character(len=32) :: scheme
     real(dp) :: substep_tol, newton_tol
     integer :: newton_max_iterations, max_cuts, ios
-    logical :: ok
+    logical :: ok, extrapolate
     character(len=512) :: iomsg, iomsg2
     character(len=:), allocatable :: probe
     integer :: kp
-    namelist /solver/ scheme, substep_tol, newton_tol, newton_max_iterations, max_cuts
+    namelist /solver/ scheme, substep_tol, newton_tol, newton_max_iterations, max_cuts, extrapolate
     scheme = 'explicit'
     substep_tol = 0.0_dp
     newton_tol = deck%control%tol
     newton_max_iterations = deck%control%max_iterations
     max_cuts = deck%control%max_cuts
+    extrapolate = .false.
     message = ''
     read (u, nml=solver, iostat=ios, iomsg=iomsg)
     if (ios /= 0) then
@@ -984,6 +989,7 @@ contains
     deck%control%tol = newton_tol
     deck%control%max_iterations = newton_max_iterations
     deck%control%max_cuts = max_cuts
+    deck%extrapolate = extrapolate
   end subroutine read_solver
 
   subroutine read_sweep(u, text, scan, deck, message)

@@ -90,7 +90,7 @@ contains
     character(len=*), intent(out) :: message
     type(h5_file_t) :: g
     character(len=4) :: name
-    character(len=:), allocatable :: effects
+    character(len=:), allocatable :: effects, how, state_note, count_note
     integer :: n, np, k, ignore
 
     message = ''
@@ -139,39 +139,62 @@ contains
     call ok(h5_real(g, 'newton_tol', deck%control%tol))
     call ok(h5_int(g, 'n_steps', deck%n_steps))
     call ok(h5_int(g, 'n_rows', n))
+    ! Richardson extrapolation (&solver extrapolate): what was extrapolated.
+    how = ''
+    state_note = ''
+    count_note = ''
+    if (hist%extrapolated) then
+      how = 'global Richardson extrapolation of two runs from the same initial state, one ' // &
+        'with the deck''s steps (n) and one with every segment''s step count doubled (2n): ' // &
+        'separation and traction are 2 u(2n) - u(n) at the steps of the n run; damage, ' // &
+        'beta, theta, zeta, frictional_slip, friction_traction and the energies are those ' // &
+        'of the 2n run at the same steps (not extrapolated: extrapolated values could leave ' // &
+        'their admissible ranges); iterations and substeps are the sums of both runs (one ' // &
+        'step of the n run and two of the 2n run per row)'
+      state_note = ' (of the run with doubled steps)'
+      count_note = ' (summed over the step of the run with the deck''s steps and the two ' // &
+        'steps of the run with doubled steps)'
+    end if
+    call ok(h5_int(g, 'extrapolated', merge(1, 0, hist%extrapolated)))
+    call ok(h5_text(g, 'extrapolation', how))
     ! The history.
     if (stat == 0) call h5_write(g, 'time', hist%time(1:n), '-', &
       'pseudo-time at the end of each step (row 0: after the first step)', stat)
     if (stat == 0) call h5_write(g, 'separation', hist%separation(:, 1:n), 'mm', &
-      'relative displacement (s_N, s_T): column 0 normal (> 0 opening), 1 tangential', stat)
+      'relative displacement (s_N, s_T): column 0 normal (> 0 opening), 1 tangential' // &
+      extrapolated_note(hist%extrapolated), stat)
     if (stat == 0) call h5_write(g, 'traction', hist%traction(:, 1:n), 'MPa', &
-      'traction (sigma_N, sigma_T): column 0 normal (< 0 compression), 1 tangential', stat)
+      'traction (sigma_N, sigma_T): column 0 normal (< 0 compression), 1 tangential' // &
+      extrapolated_note(hist%extrapolated), stat)
     if (stat == 0) call h5_write(g, 'damage', hist%damage(:, 1:n), '-', &
-      'damage D_k of each microplane (column k-1 = plane k)', stat)
+      'damage D_k of each microplane (column k-1 = plane k)' // state_note, stat)
     if (stat == 0) call h5_write(g, 'beta', hist%beta(:, 1:n), '-', &
-      'history maximum of the equivalent relative displacement of each microplane', stat)
+      'history maximum of the equivalent relative displacement of each microplane' // &
+      state_note, stat)
     if (stat == 0) call h5_write(g, 'theta', hist%theta(:, 1:n), 'rad', &
-      'current inclination theta_k of each microplane', stat)
+      'current inclination theta_k of each microplane' // state_note, stat)
     if (stat == 0) call h5_write(g, 'zeta', hist%zeta(:, 1:n), 'N/mm', &
-      'accumulated frictional work zeta_k of each microplane (drives wear)', stat)
+      'accumulated frictional work zeta_k of each microplane (drives wear)' // state_note, stat)
     if (stat == 0) call h5_write(g, 'frictional_slip', hist%frictional_slip(:, 1:n), 'mm', &
-      'frictional slip sf_k along each microplane', stat)
+      'frictional slip sf_k along each microplane' // state_note, stat)
     if (stat == 0) call h5_write(g, 'friction_traction', hist%friction_traction(:, 1:n), 'MPa', &
-      'friction traction K_t (s_kt - sf_k) of each microplane at the end of the step', stat)
+      'friction traction K_t (s_kt - sf_k) of each microplane at the end of the step' // &
+      state_note, stat)
     if (stat == 0) call h5_write(g, 'work', hist%work(1:n), 'N/mm', &
-      'work done on the interface since the initial state, sum of sigma . ds', stat)
+      'work done on the interface since the initial state, sum of sigma . ds' // state_note, &
+      stat)
     if (stat == 0) call h5_write(g, 'stored_energy', hist%stored(1:n), 'N/mm', &
-      'stored (free) energy of the interface', stat)
+      'stored (free) energy of the interface' // state_note, stat)
     if (stat == 0) call h5_write(g, 'damage_dissipation', hist%diss_damage(1:n), 'N/mm', &
-      'energy dissipated by damage since the initial state', stat)
+      'energy dissipated by damage since the initial state' // state_note, stat)
     if (stat == 0) call h5_write(g, 'friction_dissipation', hist%diss_friction(1:n), 'N/mm', &
-      'energy dissipated by friction since the initial state', stat)
+      'energy dissipated by friction since the initial state' // state_note, stat)
     if (stat == 0) call h5_write(g, 'iterations', hist%iterations(1:n), '-', &
       'Newton iterations of the mixed-control solve of each step (all attempts; 0 when ' // &
-      'every component is separation-driven)', stat)
+      'every component is separation-driven)' // count_note, stat)
     if (stat == 0) call h5_write(g, 'substeps', hist%substeps(1:n), '-', &
       'sub-increments of each step: the library''s sub-increments summed over the accepted ' // &
-      'step cuts (1: the step was neither cut nor substepped)', stat)
+      'step cuts (1: the step was neither cut nor substepped)' // count_note, stat)
     if (stat /= 0) message = 'cannot write the case /cases/' // name // ' to ' // out%temp_name
     call h5_close_group(g, ignore)
 
@@ -276,6 +299,15 @@ contains
       text = 'separation'
     end if
   end function control_name
+
+  !> The note on an extrapolated dataset's description ('' when not extrapolated).
+  pure function extrapolated_note(extrapolated) result(text)
+    logical, intent(in) :: extrapolated
+    character(len=:), allocatable :: text
+    text = ''
+    if (extrapolated) text = ' (Richardson-extrapolated: 2 u(2n) - u(n), u(n) with the ' // &
+      'deck''s steps, u(2n) with every segment''s step count doubled)'
+  end function extrapolated_note
 
   !> +Inf for the "infinite" convention (>= 1e30), the value otherwise.
   elemental real(dp) function infinite(x)

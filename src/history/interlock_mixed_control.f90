@@ -9,13 +9,17 @@
 !> Where the relative tolerance is below the floating-point resolution of the separation (a very
 !> stiff interface), a solve is accepted once s is resolved to adjacent floating-point numbers
 !> and the residual is at most |K| 8 eps |s| (docs/history-output.md).
+!> Global Richardson extrapolation (run_history_extrapolated): the history is run twice in
+!> lockstep from the same initial state, with the path's steps (n) and with every segment's
+!> step count doubled (2n); separation and traction are 2 u(2n) - u(n) at the n run's steps.
 module interlock_mixed_control
   use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
       interlock_info_t, interlock_update, status_ok, format_real, format_integer, is_nan_value
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   implicit none
   private
-  public :: control_t, history_t, solve_step, run_history, component_names
+  public :: control_t, history_t, solve_step, run_history, run_history_extrapolated, &
+            component_names
 
   character(len=10), parameter :: component_names(2) = [character(len=10) :: 'normal', 'tangential']
   character(len=7), parameter :: traction_names(2) = [character(len=7) :: 'sigma_N', 'sigma_T']
@@ -34,6 +38,10 @@ module interlock_mixed_control
     integer :: n_rows = 0
     integer :: n_planes = 0
     character(len=:), allocatable :: status       !< 'completed' or why the case stopped
+    !> .true.: separation and traction are Richardson-extrapolated, 2 u(2n) - u(n); the state
+    !> variables and energies are those of the run with doubled steps, iterations and substeps
+    !> the sums of both runs (run_history_extrapolated)
+    logical :: extrapolated = .false.
     real(dp), allocatable :: time(:)
     real(dp), allocatable :: separation(:, :), traction(:, :)         ! (2, n)
     real(dp), allocatable :: damage(:, :), beta(:, :), frictional_slip(:, :), zeta(:, :), &
@@ -67,32 +75,17 @@ contains
     type(history_t), intent(out) :: hist
     type(interlock_state_t) :: old, new
     real(dp) :: t_start(2), t_end(2), sigma(2), time
-    integer :: n_total, iseg, j, row, np, iterations, substeps, stat
+    integer :: iseg, j, row, iterations, substeps, stat
     character(len=512) :: message
 
-    np = mat%n_planes
-    n_total = sum(steps)
-    hist%n_planes = np
-    allocate (hist%time(n_total), hist%separation(2, n_total), hist%traction(2, n_total), &
-              hist%damage(np, n_total), hist%beta(np, n_total), hist%frictional_slip(np, n_total), &
-              hist%zeta(np, n_total), hist%theta(np, n_total), hist%friction_traction(np, n_total), &
-              hist%work(n_total), hist%stored(n_total), hist%diss_damage(n_total), &
-              hist%diss_friction(n_total), hist%iterations(n_total), hist%substeps(n_total))
-    hist%status = 'completed'
+    call allocate_history(hist, mat%n_planes, sum(steps))
     old = initial
     row = 0
     t_end = values(:, 1)
     do iseg = 1, size(steps)
       do j = 1, steps(iseg)
         t_start = t_end
-        if (j == steps(iseg)) then
-          t_end = values(:, iseg + 1)
-          time = times(iseg + 1)
-        else
-          t_end = values(:, iseg) + (values(:, iseg + 1) - values(:, iseg)) * &
-                  (real(j, dp) / real(steps(iseg), dp))
-          time = times(iseg) + (times(iseg + 1) - times(iseg)) * (real(j, dp) / real(steps(iseg), dp))
-        end if
+        call path_point(times, values, iseg, j, steps(iseg), t_end, time)
         call solve_step(mat, solver, ctl, old, t_start, t_end, new, sigma, iterations, substeps, &
                         stat, message)
         if (stat /= status_ok) then
@@ -102,26 +95,142 @@ contains
           return
         end if
         row = row + 1
-        hist%time(row) = time
-        hist%separation(:, row) = new%s
-        hist%traction(:, row) = sigma
-        hist%damage(:, row) = new%damage(1:np)
-        hist%beta(:, row) = new%beta(1:np)
-        hist%frictional_slip(:, row) = new%sf(1:np)
-        hist%zeta(:, row) = new%zeta(1:np)
-        hist%theta(:, row) = new%theta(1:np)
-        hist%friction_traction(:, row) = new%tauf(1:np)
-        hist%work(row) = new%work
-        hist%stored(row) = new%stored
-        hist%diss_damage(row) = new%diss_damage
-        hist%diss_friction(row) = new%diss_friction
-        hist%iterations(row) = iterations
-        hist%substeps(row) = substeps
+        call store_row(hist, row, time, new, sigma, iterations, substeps)
         old = new
       end do
     end do
     hist%n_rows = row
   end subroutine run_history
+
+  !> Global Richardson extrapolation of a history: the run with the path's steps (n, the
+  !> "coarse" run) and the run with every segment's step count doubled (2n, the "fine" run) go
+  !> in lockstep from the same initial state (each is step for step what run_history computes).
+  !> Row i is at the coarse run's step i (= the fine run's step 2i, the same time and path
+  !> point): separation and traction are 2 u_fine - u_coarse (second order where both runs are
+  !> first order); the state variables and energies are the fine run's (extrapolating them could
+  !> leave their admissible ranges: D in [0, 1], zeta >= 0, theta between theta_f and theta_0);
+  !> iterations and substeps are the sums of the coarse step and the two fine steps. A
+  !> traction-driven component is solved to its target in both runs, so its extrapolated value is
+  !> the target within 3 ctl%tol times the traction scale. The history stops at the first coarse
+  !> step where either run cannot solve its step(s); the status says which run and why.
+  subroutine run_history_extrapolated(mat, solver, ctl, times, values, steps, initial, hist)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    type(control_t), intent(in) :: ctl
+    real(dp), intent(in) :: times(:), values(:, :)
+    integer, intent(in) :: steps(:)
+    type(interlock_state_t), intent(in) :: initial
+    type(history_t), intent(out) :: hist
+    type(interlock_state_t) :: old_c, new_c, old_f, new_f
+    real(dp) :: tc_start(2), tc_end(2), tf_start(2), tf_end(2), sigma_c(2), sigma_f(2), time, &
+                time_f
+    integer :: iseg, j, k, row, step_f, iterations, substeps, it, sub, stat
+    character(len=512) :: message
+
+    call allocate_history(hist, mat%n_planes, sum(steps))
+    hist%extrapolated = .true.
+    old_c = initial
+    old_f = initial
+    row = 0
+    step_f = 0
+    tc_end = values(:, 1)
+    tf_end = values(:, 1)
+    do iseg = 1, size(steps)
+      do j = 1, steps(iseg)
+        tc_start = tc_end
+        call path_point(times, values, iseg, j, steps(iseg), tc_end, time)
+        call solve_step(mat, solver, ctl, old_c, tc_start, tc_end, new_c, sigma_c, iterations, &
+                        substeps, stat, message)
+        if (stat /= status_ok) then
+          hist%status = 'stopped at step ' // format_integer(row + 1) // ' (time ' // &
+                        format_real(time) // '): the run with the deck''s steps: ' // trim(message)
+          hist%n_rows = row
+          return
+        end if
+        do k = 1, 2
+          tf_start = tf_end
+          step_f = step_f + 1
+          call path_point(times, values, iseg, 2 * (j - 1) + k, 2 * steps(iseg), tf_end, time_f)
+          call solve_step(mat, solver, ctl, old_f, tf_start, tf_end, new_f, sigma_f, it, sub, &
+                          stat, message)
+          if (stat /= status_ok) then
+            hist%status = 'stopped at step ' // format_integer(row + 1) // ' (time ' // &
+                          format_real(time) // '): the run with doubled steps, at its step ' // &
+                          format_integer(step_f) // ' (time ' // format_real(time_f) // '): ' // &
+                          trim(message)
+            hist%n_rows = row
+            return
+          end if
+          iterations = iterations + it
+          substeps = substeps + sub
+          old_f = new_f
+        end do
+        row = row + 1
+        call store_row(hist, row, time, new_f, sigma_f, iterations, substeps)
+        hist%separation(:, row) = 2.0_dp * new_f%s - new_c%s
+        hist%traction(:, row) = 2.0_dp * sigma_f - sigma_c
+        old_c = new_c
+      end do
+    end do
+    hist%n_rows = row
+  end subroutine run_history_extrapolated
+
+  !> The path's values and time at the end of step j of segment iseg, in n uniform steps (the
+  !> segment's end point exactly at j = n). The same expression for every run, so that the
+  !> step 2j of 2n steps lands on the same numbers as the step j of n.
+  pure subroutine path_point(times, values, iseg, j, n, target, time)
+    real(dp), intent(in) :: times(:), values(:, :)
+    integer, intent(in) :: iseg, j, n
+    real(dp), intent(out) :: target(2), time
+    real(dp) :: f
+    if (j == n) then
+      target = values(:, iseg + 1)
+      time = times(iseg + 1)
+    else
+      f = real(j, dp) / real(n, dp)
+      target = values(:, iseg) + (values(:, iseg + 1) - values(:, iseg)) * f
+      time = times(iseg) + (times(iseg + 1) - times(iseg)) * f
+    end if
+  end subroutine path_point
+
+  !> Room for n rows of np planes; status 'completed' until a step fails.
+  pure subroutine allocate_history(hist, np, n)
+    type(history_t), intent(inout) :: hist
+    integer, intent(in) :: np, n
+    hist%n_planes = np
+    hist%n_rows = 0
+    allocate (hist%time(n), hist%separation(2, n), hist%traction(2, n), &
+              hist%damage(np, n), hist%beta(np, n), hist%frictional_slip(np, n), &
+              hist%zeta(np, n), hist%theta(np, n), hist%friction_traction(np, n), &
+              hist%work(n), hist%stored(n), hist%diss_damage(n), &
+              hist%diss_friction(n), hist%iterations(n), hist%substeps(n))
+    hist%status = 'completed'
+  end subroutine allocate_history
+
+  !> Row `row` of the history: the state `new` at the end of a step.
+  pure subroutine store_row(hist, row, time, new, sigma, iterations, substeps)
+    type(history_t), intent(inout) :: hist
+    integer, intent(in) :: row, iterations, substeps
+    real(dp), intent(in) :: time, sigma(2)
+    type(interlock_state_t), intent(in) :: new
+    integer :: np
+    np = hist%n_planes
+    hist%time(row) = time
+    hist%separation(:, row) = new%s
+    hist%traction(:, row) = sigma
+    hist%damage(:, row) = new%damage(1:np)
+    hist%beta(:, row) = new%beta(1:np)
+    hist%frictional_slip(:, row) = new%sf(1:np)
+    hist%zeta(:, row) = new%zeta(1:np)
+    hist%theta(:, row) = new%theta(1:np)
+    hist%friction_traction(:, row) = new%tauf(1:np)
+    hist%work(row) = new%work
+    hist%stored(row) = new%stored
+    hist%diss_damage(row) = new%diss_damage
+    hist%diss_friction(row) = new%diss_friction
+    hist%iterations(row) = iterations
+    hist%substeps(row) = substeps
+  end subroutine store_row
 
   !> One load step from `old`: the driven values go linearly from `target_start` to
   !> `target_end`. On failure the step is cut in halves (at most ctl%max_cuts times in a row),
