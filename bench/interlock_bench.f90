@@ -26,6 +26,7 @@ program interlock_bench
   character(len=16) :: dump_scene, dump_scheme
   real(dp) :: dump_tol
   integer :: dump_steps, profile_set, profile_scheme, profile_passes
+  real(dp) :: profile_tol
   character(len=512) :: out_dir
   real(dp) :: target_error
   integer :: problems
@@ -61,6 +62,7 @@ contains
     target_error = 1.0e-4_dp
     dump_scene = ''
     profile_set = -1
+    profile_tol = 0.0_dp
     n = command_argument_count()
     i = 1
     do while (i <= n)
@@ -95,7 +97,7 @@ contains
         if (ios /= 0 .or. dump_steps < 1) call usage('--history: N must be a positive integer')
         i = i + 4
       case ('--profile')
-        if (i + 3 > n) call usage('--profile takes SET SCHEME PASSES')
+        if (i + 3 > n) call usage('--profile takes SET SCHEME PASSES [TOL]')
         call get_command_argument(i + 1, val)
         read (val, *, iostat=ios) profile_set
         if (ios /= 0 .or. profile_set < 0 .or. profile_set > n_effect_sets) &
@@ -108,6 +110,15 @@ contains
         read (val, *, iostat=ios) profile_passes
         if (ios /= 0 .or. profile_passes < 1) call usage('--profile: PASSES must be positive')
         i = i + 3
+        if (i < n) then             ! optional substepping tolerance
+          call get_command_argument(i + 1, val)
+          if (val(1:2) /= '--') then
+            read (val, *, iostat=ios) profile_tol
+            if (ios /= 0 .or. profile_tol < 0.0_dp) &
+              call usage('--profile: TOL must be a non-negative number (0: no substepping)')
+            i = i + 1
+          end if
+        end if
       case ('-h', '--help')
         call usage('')
       case default
@@ -122,9 +133,10 @@ contains
     if (len_trim(message) > 0) write (error_unit, '(a)') 'interlock-bench: ' // message
     write (error_unit, '(a)') 'usage: interlock-bench [--quick] [--out DIR] ' // &
       '[--only cost|precision] [--target ERR]'
-    write (error_unit, '(a)') '       interlock-bench --profile SET SCHEME PASSES  ' // &
+    write (error_unit, '(a)') '       interlock-bench --profile SET SCHEME PASSES [TOL]  ' // &
       '(one cost configuration only, for valgrind/gprof: SET 0 bilinear, 1..5 effect sets; ' // &
-      'SCHEME 1 explicit, 2 implicit; 4000-point histories)'
+      'SCHEME 1 explicit, 2 implicit; TOL substepping tolerance, default 0; 3 x 4000-point ' // &
+      'histories; see bench/profile_updates.py)'
     write (error_unit, '(a)') '       interlock-bench --history SCENE SCHEME TOL N  ' // &
       '(one run of a scene as CSV on stdout; SCENE fig11|fig12|granite, SCHEME explicit|implicit)'
     write (error_unit, '(a)') '  writes DIR/cost.csv, DIR/work_precision.csv, ' // &
@@ -171,7 +183,7 @@ contains
     integer :: stat, i, updates, max_newton
     logical :: ok
     character(len=256) :: message
-    real(dp) :: t, resid
+    real(dp) :: t, resid, t0, t1
     call make_scene(trim(dump_scene), sc, stat, message)
     if (stat /= status_ok) call usage(trim(message))
     select case (trim(dump_scheme))
@@ -184,14 +196,16 @@ contains
     end select
     solver%substep_tol = dump_tol
     allocate (sn(0:dump_steps), st(0:dump_steps))
+    call cpu_time(t0)
     call run_scene(sc, solver, dump_steps, 1, sn, st, ok, updates, max_newton, resid, message)
+    call cpu_time(t1)
     write (output_unit, '(a)') 'time,s_N,s_T,sigma_T'
     do i = 0, dump_steps
       t = sc%knot_t(sc%n_knots) * real(i, dp) / real(dump_steps, dp)
       write (output_unit, '(es22.14,3(",",es22.14))') t, sn(i), slip_at(sc, t), st(i)
     end do
-    write (error_unit, '(a,i0,a,es9.2)') 'updates: ', updates, '; largest normal-traction ' // &
-      'residual accepted (relative): ', resid
+    write (error_unit, '(a,i0,a,es9.2,a,es10.3)') 'updates: ', updates, '; largest normal-traction ' // &
+      'residual accepted (relative): ', resid, '; cpu_s: ', t1 - t0
     if (.not. ok) then
       write (error_unit, '(a)') 'the run failed: ' // trim(message)
       error stop 3
@@ -199,7 +213,9 @@ contains
   end subroutine dump_history
 
   !> Run one configuration of the cost study PASSES times over the histories (nothing timed):
-  !> for a profiler, e.g. valgrind --tool=callgrind interlock-bench --profile 5 1 20.
+  !> for a profiler, e.g. valgrind --tool=callgrind interlock-bench --profile 5 1 20. The set-up
+  !> (histories, material) costs about as much as 10^5 bilinear updates: count only the updates
+  !> (bench/profile_updates.py collects inside interlock_update / bilinear_update only).
   subroutine profile_run()
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver
@@ -212,6 +228,7 @@ contains
     call make_effect_set(max(1, profile_set), mat, stat, message)
     if (stat /= status_ok) call usage(trim(message))
     solver%scheme = profile_scheme
+    solver%substep_tol = profile_tol
     chk = 0.0_dp
     fails = 0
     do k = 1, profile_passes
@@ -221,7 +238,8 @@ contains
         call time_interlock(mat, solver, h, chk, fails, nsub)
       end if
     end do
-    write (output_unit, '(a,i0,a,es22.15)') 'calls: ', 12000 * profile_passes, '; checksum ', chk
+    write (output_unit, '(a,i0,a,es22.15,a,i0)') 'calls: ', 12000 * profile_passes, '; checksum ', &
+      chk, '; failed updates: ', fails
   end subroutine profile_run
 
   ! ------------------------------------------------------------------------------------------
@@ -319,14 +337,14 @@ contains
       'ns/call', 'min', 'max', 'x bilinear', 'substeps'
     write (output_unit, '(a24,1x,a8,1x,a6,3(1x,f10.1),1x,f10.2,1x,a8)') 'bilinear (baseline)', '-', &
       '-', ns(0), ns_lo(0), ns_hi(0), 1.0_dp, '-'
-    write (u, '(a,",",es12.5,",",f8.4,2(",",es12.5),",",f8.4,",",i0,",",i0,",",es22.15)') &
+    write (u, '(a,",",es12.5,",",es12.5,3(",",es12.5),",",i0,",",i0,",",es22.15)') &
       'bilinear,-,none', ns(0), 1.0_dp, ns_lo(0), ns_hi(0), 1.0_dp, nint(calls), reps, chk(0)
     do c = 1, n_cfg
       label = effect_set_names(cfg_set(c))
       write (output_unit, '(a24,1x,a8,1x,a6,3(1x,f10.1),1x,f10.2,1x,f8.2)') label, &
         scheme_name(solvers(c)%scheme), fmt_tol(solvers(c)%substep_tol), ns(c), ns_lo(c), ns_hi(c), &
         ns(c) / ns(0), subs(c)
-      write (u, '(a,",",a,",",a,",",es12.5,",",f8.4,2(",",es12.5),",",f8.4,",",i0,",",i0,",",es22.15)') &
+      write (u, '(a,",",a,",",a,",",es12.5,",",es12.5,3(",",es12.5),",",i0,",",i0,",",es22.15)') &
         trim(label), scheme_name(solvers(c)%scheme), trim(fmt_tol(solvers(c)%substep_tol)), ns(c), &
         ns(c) / ns(0), ns_lo(c), ns_hi(c), subs(c), nint(calls), reps, chk(c)
     end do
@@ -494,6 +512,9 @@ contains
     integer, allocatable :: scheme_of(:)
     integer :: n_all, cr, prev_updates
     real(dp) :: e_st, e_sn, e_curve, min_time, order, cost_t, cost_explicit, best_cost, uncert, plain, resid
+    real(dp) :: cost_implicit
+    integer :: j_hi, best_j
+    logical :: this_extrapolated, implicit_extrapolated
     character(len=256) :: why
     integer :: best_c, stat
     logical :: ok, reached, extrapolated, rich
@@ -546,7 +567,8 @@ contains
     call open_csv('reference.csv', ur, 'scene,n_reference,uncertainty,plain_error_at_n_reference,' // &
       'order_check')
     call open_csv('wp_summary.csv', us, 'scene,scheme,substep_tol,config,observed_order,' // &
-      'cpu_s_at_target,target_error,explicit_uniform_over_this,explicit_extrapolated')
+      'cpu_s_at_target,target_error,explicit_uniform_over_this,extrapolated,' // &
+      'explicit_extrapolated,n_steps_first_below')
 
     do is = 1, n_scenes
       call make_scene(trim(scene_names(is)), sc, stat, message)
@@ -635,20 +657,21 @@ contains
       end do
 
       ! Table: order, error and CPU time per step count (every other level on the terminal).
-      cost_explicit = cost_at(err(:, 1), cpu(:, 1), okr(:, 1), target_error, reached)
+      ! CPU time to reach the target: between measured step counts by log-log interpolation
+      ! (cost_at); beyond the finest run, for the uniform-step configurations only, at the
+      ! observed order (cost ~ n ~ error^(-1/order), extrapolate_cost).
+      cost_explicit = cost_at(err(:, 1), cpu(:, 1), okr(:, 1), target_error, reached, j_hi)
       extrapolated = .false.
       if (.not. reached) then
-        ! Beyond the finest run: first order in the step count (cost ~ n ~ 1/error), the
-        ! explicit scheme's observed order being ~1 (checked on the finer half of the levels).
-        order = observed_order(err(:, 1), okr(:, 1), sc%base_steps, jmax)
-        cost_explicit = -1.0_dp
-        if (okr(jmax, 1) .and. order > 0.5_dp) then
-          cost_explicit = cpu(jmax, 1) * (err(jmax, 1) / target_error)**(1.0_dp / order)
-          extrapolated = .true.
-        end if
+        cost_explicit = extrapolate_cost(err(:, 1), cpu(:, 1), okr(:, 1), sc%base_steps, jmax, &
+                                         target_error)
+        extrapolated = cost_explicit > 0.0_dp
       end if
       best_cost = huge(1.0_dp)
       best_c = 0
+      best_j = -1
+      cost_implicit = -1.0_dp
+      implicit_extrapolated = .false.
       do c = 1, n_all
         label = labels(c)
         order = observed_order(err(:, c), okr(:, c), sc%base_steps, merge(jmax, jmax - 1, c <= n_cfg))
@@ -664,38 +687,64 @@ contains
         end do
         write (output_unit, '(a)') ''
         flush (output_unit)
-        cost_t = cost_at(err(:, c), cpu(:, c), okr(:, c), target_error, reached)
+        cost_t = cost_at(err(:, c), cpu(:, c), okr(:, c), target_error, reached, j_hi)
+        this_extrapolated = .false.
+        if (.not. reached .and. c <= n_cfg) then
+          if (.not. solvers(c)%substep_tol > 0.0_dp) then
+            cost_t = extrapolate_cost(err(:, c), cpu(:, c), okr(:, c), sc%base_steps, jmax, &
+                                      target_error)
+            this_extrapolated = cost_t > 0.0_dp
+          end if
+        end if
+        if (c == 1 + size(tols_explicit)) then      ! implicit, uniform steps
+          cost_implicit = merge(cost_t, -1.0_dp, reached .or. this_extrapolated)
+          implicit_extrapolated = this_extrapolated
+        end if
         if (reached) then
           if (cost_t < best_cost) then
             best_cost = cost_t
             best_c = c
+            best_j = j_hi
           end if
-          write (us, '(a,",",a,",",a,",",a,",",f8.4,",",es12.5,",",es9.2,",",es12.5,",",l1)') &
-            trim(sc%name), scheme_name(scheme_of(c)), trim(tol_names(c)), &
+        end if
+        if (reached .or. this_extrapolated) then
+          write (us, '(a,",",a,",",a,",",a,",",f8.4,",",es12.5,",",es9.2,",",es12.5,",",l1,",",' // &
+            'l1,",",i0)') trim(sc%name), scheme_name(scheme_of(c)), trim(tol_names(c)), &
             trim(label), order, cost_t, target_error, merge(cost_explicit / cost_t, -1.0_dp, &
-            cost_explicit > 0.0_dp), extrapolated
+            cost_explicit > 0.0_dp), this_extrapolated, extrapolated, &
+            merge(sc%base_steps * 2**max(j_hi, 0), -1, reached)
         else
-          write (us, '(a,",",a,",",a,",",a,",",f8.4,",",a,",",es9.2,",",a)') &
+          write (us, '(a,",",a,",",a,",",a,",",f8.4,",",a,",",es9.2,",",a,",",l1,",",a)') &
             trim(sc%name), scheme_name(scheme_of(c)), trim(tol_names(c)), &
-            trim(label), order, 'not reached', target_error, ',' // merge('T', 'F', extrapolated)
+            trim(label), order, 'not reached', target_error, '', .false., merge('T', 'F', extrapolated) &
+            // ',-1'
         end if
       end do
       write (output_unit, '(a)') '  (columns: n_steps = ' // trim(steps_list(sc%base_steps, jmax, &
         merge(1, 2, quick))) // ')'
+      write (output_unit, '(a,es8.1,a)', advance='no') '  CPU time for error ', target_error, ': '
+      if (cost_explicit > 0.0_dp) then
+        write (output_unit, '(a,es9.2,a)', advance='no') 'explicit uniform ', cost_explicit, ' s' // &
+          trim(merge(' (extrapolated)', '               ', extrapolated)) // '; '
+      else
+        write (output_unit, '(a)', advance='no') 'explicit uniform not reached; '
+      end if
+      if (cost_implicit > 0.0_dp) then
+        write (output_unit, '(a,es9.2,a)', advance='no') 'implicit uniform ', cost_implicit, ' s' // &
+          trim(merge(' (extrapolated)', '               ', implicit_extrapolated)) // '; '
+      else
+        write (output_unit, '(a)', advance='no') 'implicit uniform not reached; '
+      end if
       if (best_c > 0) then
         label = labels(best_c)
-        if (cost_explicit > 0.0_dp) then
-          write (output_unit, '(a,es8.1,a,es9.2,a,es9.2,a,f0.1,a)') '  CPU time for error ', &
-            target_error, ': explicit uniform ', cost_explicit, ' s' // &
-            trim(merge(' (extrapolated at the observed order)', '                                     ', &
-            extrapolated)) // '; best (' // trim(label) // &
-            ') ', best_cost, ' s: ', cost_explicit / best_cost, 'x cheaper'
-        else
-          write (output_unit, '(a,es8.1,a,es9.2,a)') '  CPU time for error ', target_error, &
-            ': explicit uniform does not reach it; best (' // trim(label) // ') ', best_cost, ' s'
-        end if
+        write (output_unit, '(a,es9.2,a,i0,a)', advance='no') 'best measured: ' // trim(label) // ' ', &
+          best_cost, ' s (interpolated; its runs stay below the target from n = ', &
+          sc%base_steps * 2**max(best_j, 0), ' on)'
+        if (cost_explicit > 0.0_dp) write (output_unit, '(a,f0.1,a)', advance='no') ', ', &
+          cost_explicit / best_cost, 'x cheaper than explicit uniform'
+        write (output_unit, '(a)') ''
       else
-        write (output_unit, '(a,es8.1)') '  no scheme reaches the error ', target_error
+        write (output_unit, '(a)') 'no configuration reaches it within the measured step counts'
       end if
       deallocate (ref_sn, ref_st, prev_sn, prev_st, r_sn, r_st)
     end do
@@ -829,18 +878,35 @@ contains
     if (m >= 2) order = -(m * sxy - sx * sy) / (m * sxx - sx * sx)
   end function observed_order
 
+  !> CPU time to reach `target` beyond the finest run (level jmax), at the observed order over
+  !> the finer half of the levels (cost proportional to the step count): -1 when the finest run
+  !> failed or the order is below 0.5 (no meaningful extrapolation).
+  pure real(dp) function extrapolate_cost(err, cpu, ok, base, jmax, target) result(t)
+    real(dp), intent(in) :: err(0:), cpu(0:), target
+    logical, intent(in) :: ok(0:)
+    integer, intent(in) :: base, jmax
+    real(dp) :: order
+    t = -1.0_dp
+    if (.not. ok(jmax)) return
+    order = observed_order(err, ok, base, jmax)
+    if (order > 0.5_dp) t = cpu(jmax) * (err(jmax) / target)**(1.0_dp / order)
+  end function extrapolate_cost
+
   !> CPU time from which a configuration stays at or below `target`: from the last step count
   !> whose error is above it (or whose run failed), log-log interpolation to the next one; the
   !> coarsest run's time when every run reaches it. (The last crossing, not the first: a coarse
   !> run can look accurate only because its few steps miss the sharp part of the curve.)
-  real(dp) function cost_at(err, cpu, ok, target, reached) result(t)
+  !> j_hi: the level of the first run at or below the target from which on all stay below.
+  real(dp) function cost_at(err, cpu, ok, target, reached, j_hi) result(t)
     real(dp), intent(in) :: err(0:), cpu(0:), target
     logical, intent(in) :: ok(0:)
     logical, intent(out) :: reached
+    integer, intent(out) :: j_hi
     integer :: j, jlast, jabove
     real(dp) :: w
     reached = .false.
     t = 0.0_dp
+    j_hi = -1
     jlast = -1
     do j = 0, size(err) - 1
       if (ok(j)) jlast = j
@@ -856,6 +922,7 @@ contains
       end if
     end do
     reached = .true.
+    j_hi = jabove + 1
     if (jabove < 0) then
       t = cpu(0)
       return

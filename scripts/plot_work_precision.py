@@ -4,7 +4,10 @@ scheme/tolerance, one panel per scene.
 
 usage: /usr/bin/python3 scripts/plot_work_precision.py DIR [-o docs/work_precision.png]
        [--target 1e-4]
-DIR holds work_precision.csv (and reference.csv) written by `interlock-bench --out DIR`.
+       /usr/bin/python3 scripts/plot_work_precision.py DIR --markdown
+DIR holds work_precision.csv (and reference.csv, cost.csv, wp_summary.csv) written by
+`interlock-bench --out DIR`. --markdown prints the tables of docs/bench.md from those files
+instead of plotting (so that every number in the document comes from one run).
 """
 import argparse
 import csv
@@ -28,12 +31,98 @@ def read_csv(path):
         return list(csv.DictReader(f))
 
 
+def fmt_err(x):
+    return f"{float(x):.1e}"
+
+
+def markdown(d):
+    """The tables of docs/bench.md from one run's CSV files."""
+    cost = read_csv(os.path.join(d, "cost.csv"))
+    print("| effect set | scheme | substep tol | ns/call (median) | min..max | x bilinear |")
+    print("|---|---|---|---:|---:|---:|")
+    for r in cost:
+        print(f"| {r['effect_set']} | {r['scheme']} | {r['substep_tol']} | "
+              f"{float(r['ns_per_call']):.1f} | {float(r['ns_min']):.1f}.."
+              f"{float(r['ns_max']):.1f} | {float(r['ratio_to_bilinear']):.2f} |")
+    rows = read_csv(os.path.join(d, "work_precision.csv"))
+    summ = read_csv(os.path.join(d, "wp_summary.csv"))
+    scenes = []
+    for r in rows:
+        if r["scene"] not in scenes:
+            scenes.append(r["scene"])
+    for scene in scenes:
+        srows = [r for r in rows if r["scene"] == scene]
+        counts = sorted({int(r["n_steps"]) for r in srows})
+        cols = counts[4::2]          # j = 4, 6, 8, 10
+        configs = []
+        for r in srows:
+            if r["config"] not in configs:
+                configs.append(r["config"])
+        # uniform first, then Richardson, then substepping (as in the document)
+        def key(c):
+            sch, rest = c.split(" ", 1)
+            kind = 0 if rest == "none" else 1 if rest == "Richardson" else 2
+            return (sch != "explicit", kind, rest)
+        configs.sort(key=key)
+        print(f"\n*{scene}* — error (CPU ms per run) at n steps:\n")
+        print("| configuration | " + " | ".join(f"n = {n}" for n in cols) + " |")
+        print("|---|" + "---:|" * len(cols))
+        for cfg in configs:
+            sch, rest = cfg.split(" ", 1)
+            name = sch + ", " + ("uniform" if rest == "none" else "Richardson (n, 2n)"
+                                 if rest == "Richardson" else "substep " + rest.replace(".E", "e"))
+            cells = []
+            for n in cols:
+                m = [r for r in srows if r["config"] == cfg and int(r["n_steps"]) == n]
+                if not m or m[0]["ok"] != "T":
+                    cells.append("-" if not m else "failed")
+                else:
+                    cells.append(f"{fmt_err(m[0]['error'])} ({1e3 * float(m[0]['cpu_s']):.1f})")
+            print(f"| {name} | " + " | ".join(cells) + " |")
+    print("\nObserved order (finer half of the levels) per configuration:\n")
+    print("| configuration | " + " | ".join(scenes) + " |")
+    print("|---|" + "---:|" * len(scenes))
+    cfgs = []
+    for r in summ:
+        if r["config"] not in cfgs:
+            cfgs.append(r["config"])
+    for cfg in cfgs:
+        vals = []
+        for scene in scenes:
+            m = [r for r in summ if r["scene"] == scene and r["config"] == cfg]
+            vals.append(f"{float(m[0]['observed_order']):.2f}" if m else "-")
+        print(f"| {cfg} | " + " | ".join(vals) + " |")
+    print("\nCPU time to reach the target error (s; x = extrapolated at the observed order; "
+          "n = runs below the target from this step count on):\n")
+    print("| scene | configuration | CPU s | explicit uniform / this | n |")
+    print("|---|---|---:|---:|---:|")
+    for r in summ:
+        if r["cpu_s_at_target"].strip() == "not reached":
+            continue
+        ratio = float(r["explicit_uniform_over_this"]) if r["explicit_uniform_over_this"] else -1
+        print(f"| {r['scene']} | {r['config']} | {float(r['cpu_s_at_target']):.3g}"
+              f"{' (x)' if r['extrapolated'] == 'T' else ''} | "
+              f"{ratio:.1f} | {r['n_steps_first_below'] if r['n_steps_first_below'] != '-1' else '-'} |")
+    ref = os.path.join(d, "reference.csv")
+    if os.path.exists(ref):
+        print("\n| scene | reference steps | uncertainty | plain implicit error at those steps |")
+        print("|---|---:|---:|---:|")
+        for r in read_csv(ref):
+            print(f"| {r['scene']} | {r['n_reference']} | {float(r['uncertainty']):.1e} | "
+                  f"{float(r['plain_error_at_n_reference']):.1e} |")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("dir", help="folder with work_precision.csv")
     ap.add_argument("-o", "--output", default="work_precision.png")
     ap.add_argument("--target", type=float, default=1e-4, help="error level drawn as a line")
+    ap.add_argument("--markdown", action="store_true",
+                    help="print the tables of docs/bench.md instead of plotting")
     args = ap.parse_args()
+    if args.markdown:
+        markdown(args.dir)
+        return
 
     rows = read_csv(os.path.join(args.dir, "work_precision.csv"))
     refs = {}
@@ -47,7 +136,7 @@ def main():
     if not scenes:
         sys.exit("no rows in work_precision.csv")
 
-    fig, axes = plt.subplots(1, len(scenes), figsize=(5.2 * len(scenes), 4.8), squeeze=False)
+    fig, axes = plt.subplots(1, len(scenes), figsize=(5.2 * len(scenes), 5.3), squeeze=False)
     colours = {"explicit": plt.cm.Reds, "implicit": plt.cm.Blues}
     for ax, scene in zip(axes[0], scenes):
         configs = []
@@ -85,10 +174,12 @@ def main():
         ax.set_xlabel("CPU time per run [s]")
         ax.grid(True, which="major", lw=0.4, alpha=0.6)
     axes[0][0].set_ylabel("max relative error of sigma_T and s_N")
-    axes[0][-1].legend(fontsize=7, loc="lower left")
+    # one legend for all panels, below them (inside a panel it hides points)
+    handles, labels = axes[0][-1].get_legend_handles_labels()
+    fig.legend(handles, labels, fontsize=7.5, loc="lower center", ncol=4, frameon=False)
     fig.suptitle("interlock: error vs CPU time (constant sigma_N; step counts base x 2^j)",
                  fontsize=11)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0.1, 1, 1))
     fig.savefig(args.output, dpi=110)
     print(f"wrote {args.output}")
 

@@ -219,8 +219,8 @@ contains
     real(dp) :: an, at, beq, rb, ddb, gd(2), dtau(2), mu_p, tau_trial, sgn, pos_n, neg_n, slip, &
                 dslip(2)
 
-    ! Damage (interlock_damage): beta = max(beta_o, beta_eq), D = (beta - 1)/(eta beta); one
-    ! division, and only while damage grows (the inverses are the material's).
+    ! Damage (interlock_damage): beta = max(beta_o, beta_eq), D = (beta - 1)/(eta beta);
+    ! divisions only while damage grows (the inverses are the material's).
     p%beta = beta_o
     p%dmg = dmg_o
     gd = 0.0_dp
@@ -234,7 +234,9 @@ contains
           p%dmg = 1.0_dp
         else if (beq > 1.0_dp) then
           rb = 1.0_dp / beq
-          p%dmg = (beq - 1.0_dp) * mat%inv_eta * rb
+          ! The expression of interlock_damage:damage_of_beta, to the bit: the stored damage
+          ! may come from either path, and D must never decrease by a rounding.
+          p%dmg = (beq - 1.0_dp) / (mat%eta * beq)
           ddb = mat%inv_eta * rb * rb * rb
           gd = [ddb * an * mat%inv_s0n, ddb * at * mat%inv_s0t]
         else

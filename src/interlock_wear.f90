@@ -56,6 +56,13 @@ contains
     real(dp), intent(in) :: f, fp, tol
     integer, intent(in) :: max_iterations
     real(dp) :: xn
+    ! Converged wherever the residual is at round-off of zeta: also at the first point when
+    ! the plane is fully worn (theta = theta_f: F is linear and zeta_o + g0 is its root).
+    rt%scale = max(rt%scale, abs(rt%x))
+    if (abs(f) <= tol * rt%scale) then
+      call finish(rt, fp > 0.0_dp)
+      return
+    end if
     if (.not. rt%bracketed) then
       if (f < 0.0_dp) then
         rt%lo = rt%x
@@ -67,7 +74,6 @@ contains
       end if
       rt%hi = rt%x
       rt%bracketed = .true.
-      rt%scale = max(abs(rt%x), rt%scale)
     else
       if (f < 0.0_dp) then
         rt%lo = rt%x
@@ -78,10 +84,6 @@ contains
         call finish(rt, fp > 0.0_dp)
         return
       end if
-    end if
-    if (abs(f) <= tol * rt%scale) then
-      call finish(rt, fp > 0.0_dp)
-      return
     end if
     rt%iterations = rt%iterations + 1
     if (rt%iterations > max_iterations) then
