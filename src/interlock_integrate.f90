@@ -4,7 +4,7 @@
 module interlock_integrate
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, &
-      scheme_explicit, scheme_implicit, kernel_general
+      scheme_explicit, scheme_implicit, kernel_general, kernel_cohesive
   use interlock_state, only: interlock_state_t
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
   use interlock_ria, only: ria_step
@@ -46,21 +46,30 @@ contains
     info%attempts = 1
     tangent = 0.0_dp
     if (.not. mat%prepared) then
-      call fail(old, new, sigma, tangent, info, status_bad_input, 'the material has not been prepared ' // &
-                '(call interlock_material_prepare)')
+      call fail(old, new, sigma, tangent, info, status_bad_input, &
+                'the material has not been prepared (call interlock_material_prepare)')
       return
     end if
     if (solver%scheme /= scheme_explicit .and. solver%scheme /= scheme_implicit) then
-      call fail(old, new, sigma, tangent, info, status_bad_input, 'unknown integration scheme: admissible 1 (explicit) or ' // &
-                '2 (implicit)')
+      call fail(old, new, sigma, tangent, info, status_bad_input, &
+                'unknown integration scheme: admissible 1 (explicit) or 2 (implicit)')
       return
     end if
     if (.not. all(ieee_is_finite(s))) then
-      call fail(old, new, sigma, tangent, info, status_bad_input, 'the relative displacement is not a finite number')
+      call fail(old, new, sigma, tangent, info, status_bad_input, &
+                'the relative displacement is not a finite number')
       return
     end if
 
     done = .false.
+    if (mat%kernel == kernel_cohesive .and. solver%substep_tol <= 0.0_dp) then
+      ! The plain cohesive law (one flat plane, no friction, no finite depth): inline here.
+      call cohesive_step(mat, s, old, new, tangent)
+      sigma = new%sigma
+      info%max_damage_increment = new%damage(1) - old%damage(1)
+      info%max_angle_increment = 0.0_dp
+      return
+    end if
     if (solver%substep_tol > 0.0_dp) then
       call substep(mat, solver, s, old, new, tangent, info, solver%substep_tol)
     else
@@ -81,14 +90,76 @@ contains
     end if
     sigma = new%sigma
     if (.not. (all(ieee_is_finite(sigma)) .and. all(ieee_is_finite(tangent)))) then
-      call fail(old, new, sigma, tangent, info, status_local_failure, 'the traction or tangent is not finite: retry with a ' // &
-                'smaller increment')
+      call fail(old, new, sigma, tangent, info, status_local_failure, &
+                'the traction or tangent is not finite: retry with a smaller increment')
       return
     end if
     n = mat%n_planes
     info%max_damage_increment = maxval(new%damage(1:n) - old%damage(1:n))
     info%max_angle_increment = maxval(abs(new%theta(1:n) - old%theta(1:n)))
   end subroutine interlock_update
+
+  !> One flat plane without friction and without finite depth: the bilinear cohesive law of
+  !> the mixed-mode damage (interlock_damage) with its stored energy and the exact decohesion
+  !> energy; the damaged part carries no shear (sf = s_T). Every plane of a flat RIA shares
+  !> the history. Agrees with the general path to round-off (core_kernels).
+  pure subroutine cohesive_step(mat, s, old, new, tangent)
+    type(interlock_material_t), intent(in) :: mat
+    real(dp), intent(in) :: s(2)
+    type(interlock_state_t), intent(in) :: old
+    type(interlock_state_t), intent(inout) :: new
+    real(dp), intent(out) :: tangent(2, 2)
+    real(dp) :: pos, an, at, beq, beta, d, rb, g(2), sigma(2)
+    integer :: k
+
+    pos = max(0.0_dp, s(1))
+    beta = old%beta(1)
+    d = old%damage(1)
+    g = 0.0_dp
+    if (mat%use_damage) then
+      an = pos * mat%inv_s0n
+      at = s(2) * mat%inv_s0t
+      beq = sqrt(an * an + at * at)
+      if (beq > beta) then
+        beta = beq
+        if (beq >= mat%beta_break) then
+          d = 1.0_dp
+        else if (beq > 1.0_dp) then
+          d = (beq - 1.0_dp) / (mat%eta * beq)
+          rb = 1.0_dp / beq
+          g = (mat%inv_eta * rb * rb * rb) * [an * mat%inv_s0n, at * mat%inv_s0t]
+        end if
+      end if
+    end if
+    sigma(1) = mat%kn * (s(1) - d * pos)
+    sigma(2) = (1.0_dp - d) * mat%kt * s(2)
+    if (s(1) > 0.0_dp) then
+      tangent(1, 1) = (1.0_dp - d) * mat%kn - mat%kn * pos * g(1)
+    else
+      tangent(1, 1) = mat%kn
+    end if
+    tangent(1, 2) = -mat%kn * pos * g(2)
+    tangent(2, 1) = -mat%kt * s(2) * g(1)
+    tangent(2, 2) = (1.0_dp - d) * mat%kt - mat%kt * s(2) * g(2)
+    do k = 1, mat%n_planes
+      new%beta(k) = beta
+      new%damage(k) = d
+      new%sf(k) = s(2)
+      new%zeta(k) = old%zeta(k)
+      new%theta(k) = old%theta(k)
+      new%tauf(k) = 0.0_dp
+    end do
+    new%stored = 0.5_dp * ((1.0_dp - d) * (mat%kn * s(1)**2 + mat%kt * s(2)**2) + &
+                           d * mat%kn * min(0.0_dp, s(1))**2)
+    new%diss_damage = old%diss_damage
+    if (d > old%damage(1)) new%diss_damage = old%diss_damage + mat%decohesion_energy_factor * &
+        (min(beta, mat%beta_break) - min(max(old%beta(1), 1.0_dp), mat%beta_break))
+    new%diss_friction = old%diss_friction
+    new%s = s
+    new%sigma = sigma
+    new%work = old%work + 0.5_dp * ((old%sigma(1) + sigma(1)) * (s(1) - old%s(1)) + &
+                                    (old%sigma(2) + sigma(2)) * (s(2) - old%s(2)))
+  end subroutine cohesive_step
 
   !> Report a failure: `new` = `old`, the traction at the start, no tangent.
   pure subroutine fail(old, new, sigma, tangent, info, code, message)

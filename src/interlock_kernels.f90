@@ -1,6 +1,7 @@
 !> Specialised one-step updates, chosen once when the material is prepared, so that a scene
-!> pays only for the effects it uses (SPEC section 7): without wear the inclinations are
-!> constant (sines and cosines computed once, at set-up), one flat plane needs no rotation at
+!> pays only for the effects it uses (SPEC section 7; the plain cohesive law, one flat plane
+!> without friction and finite depth, is inlined in interlock_integrate:cohesive_step):
+!> without wear the inclinations are constant (sines and cosines computed once, at set-up), one flat plane needs no rotation at
 !> all, and the local law is written with scalar derivatives instead of the general path's
 !> gradient vectors (which substepping and the implicit wear equation need). The explicit
 !> scheme freezes each angle within the step, so with wear it runs the same kernel with the
@@ -107,7 +108,7 @@ contains
         kg(2, 2) = sn * (sn * p%k(1, 1) + c * p%k(1, 2)) + c * (sn * p%k(2, 1) + c * p%k(2, 2))
         if (coupled) then
           ! Implicit wear: theta depends on s through zeta. d sigma_k / d theta =
-          ! d(R^T)/d theta sigma_loc + R^T K_loc d(s_kn, s_kt)/d theta, d s_loc/d theta = (s_kt, -s_kn).
+          ! d(R^T)/d theta sigma_loc + R^T K_loc d s_loc/d theta, d s_loc/d theta = (s_kt, -s_kn).
           dsig_dth = [-sn * p%sig(1) - c * p%sig(2), c * p%sig(1) - sn * p%sig(2)] + &
                      [c * (p%k(1, 1) * sl(2) - p%k(1, 2) * sl(1)) - &
                       sn * (p%k(2, 1) * sl(2) - p%k(2, 2) * sl(1)), &

@@ -13,7 +13,7 @@ module interlock_material
   public :: scheme_explicit, scheme_implicit, scheme_name
   public :: effect_damage, effect_friction, effect_interlocking, effect_finite_depth, effect_wear
   public :: effect_names, n_effects
-  public :: kernel_general, kernel_flat, kernel_inclined
+  public :: kernel_general, kernel_flat, kernel_inclined, kernel_cohesive
 
   integer, parameter :: max_planes = 8
   integer, parameter :: scheme_explicit = 1, scheme_implicit = 2
@@ -26,6 +26,8 @@ module interlock_material
   !> inclined planes: constant angles, or wear with the explicit scheme (angle frozen in the
   !> step); the implicit scheme with wear takes the general path
   integer, parameter :: kernel_inclined = 2
+  !> one flat plane, no friction, no finite depth: the plain cohesive law, inlined
+  integer, parameter :: kernel_cohesive = 3
   character(len=12), parameter :: effect_names(n_effects) = &
     [character(len=12) :: 'damage', 'friction', 'interlocking', 'finite_depth', 'wear']
 
@@ -234,7 +236,9 @@ contains
     mat%plane_wears(mat%n_planes + 1:) = .false.
     mat%use_wear = any(mat%plane_wears(1:mat%n_planes))
     mat%flat = all(same_value(mat%theta_init(1:mat%n_planes), 0.0_dp)) .and. .not. mat%use_wear
-    if (mat%flat) then
+    if (mat%flat .and. .not. (mat%use_friction .or. mat%use_depth)) then
+      mat%kernel = kernel_cohesive
+    else if (mat%flat) then
       mat%kernel = kernel_flat
     else
       mat%kernel = kernel_inclined

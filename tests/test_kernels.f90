@@ -110,7 +110,7 @@ contains
     call one_flat_plane(mat)
     mat%effect(effect_friction) = .false.
     call prepare_or_fail(mat)
-    call compare_paths(mat, kernel_flat, 'flat, damage only')
+    call compare_paths(mat, kernel_cohesive, 'flat, damage only')
   end subroutine test_flat_damage_only
 
   subroutine test_flat_friction()
