@@ -1,12 +1,13 @@
 !> Specialised one-step updates, chosen once when the material is prepared, so that a scene
 !> pays only for the effects it uses (SPEC section 7; the plain cohesive law, one flat plane
 !> without friction and finite depth, is inlined in interlock_integrate:cohesive_step):
-!> without wear the inclinations are constant (sines and cosines computed once, at set-up), one flat plane needs no rotation at
-!> all, and the local law is written with scalar derivatives instead of the general path's
-!> gradient vectors (which substepping and the implicit wear equation need). The explicit
-!> scheme freezes each angle within the step, so with wear it runs the same kernel with the
-!> stored angle's sine and cosine, and one exponential per plane that wore. Each kernel agrees
-!> with the general path (interlock_ria) to round-off; a test checks it.
+!> without wear the inclinations are constant (sines and cosines computed once, at set-up),
+!> one flat plane needs no rotation at all, and the local law is written with scalar
+!> derivatives instead of the general path's gradient vectors (which substepping needs). The
+!> explicit scheme freezes each angle within the step, so with wear it runs the same kernel
+!> with the stored angle's sine and cosine, and one exponential per plane that wore; the
+!> implicit scheme adds the scalar wear equation per wearing plane. Each kernel agrees with
+!> the general path (interlock_ria) to round-off; a test checks it.
 module interlock_kernels
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_implicit, &
