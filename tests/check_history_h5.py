@@ -3,6 +3,9 @@
 
 usage: check_history_h5.py [--allow-stopped] FILE.h5 [...]
 Exit status 0 when every file follows the contract; the failures are printed otherwise.
+The datasets checked are those the case's `stored` attribute lists (&output store; it must list
+exactly the datasets of the case, time, separation and traction always); a completed case holds
+the rows that `every` keeps of its n_steps (0, every, 2 every, ... and the last).
 """
 import sys
 
@@ -12,7 +15,7 @@ import numpy as np
 FILE_ATTRS = ["program", "version", "command_line", "deck", "deck_file", "title", "n_cases",
               "sweep_parameter"]
 CASE_TEXT_ATTRS = ["status", "label", "sweep_parameter", "effects", "scheme", "normal_control",
-                   "tangential_control", "extrapolation"]
+                   "tangential_control", "extrapolation", "stored"]
 PROPERTIES = {"sigma0_n": "MPa", "sigma0_t": "MPa", "gc": "N/mm", "eta": "-", "mu": "-",
               "h_n": "mm", "theta0_deg": "deg", "thetaf_deg": "deg", "zeta0": "N/mm",
               "prefractured": "-", "substep_tol": "-", "gamma_hat": "-"}
@@ -27,6 +30,15 @@ DATASETS = {
     "damage_dissipation": (None, "N/mm", False), "friction_dissipation": (None, "N/mm", False),
     "iterations": (None, "-", True), "substeps": (None, "-", True),
 }
+ALWAYS = ["time", "separation", "traction"]          # written whatever &output store says
+
+
+def kept_rows(n_computed, every):
+    """The 0-based rows written with &output every: 0, every, 2 every, ... and the last."""
+    rows = list(range(0, n_computed, every))
+    if n_computed > 0 and rows[-1] != n_computed - 1:
+        rows.append(n_computed - 1)
+    return rows
 
 
 def text(value):
@@ -79,12 +91,30 @@ def check_file(path, allow_stopped):
             n_planes = int(g.attrs.get("n_planes", 0))
             if not 1 <= n_planes <= 8:
                 errors.append(f"{where}: n_planes = {n_planes}")
+            # &output store and every: the `stored` attribute lists exactly the datasets of the
+            # case (in the order of DATASETS), `every` the thinning of the rows.
+            stored = [s for s in text(g.attrs.get("stored", "")).split(",") if s]
+            unknown = [s for s in stored if s not in DATASETS]
+            if unknown:
+                errors.append(f"{where}: 'stored' names unknown datasets {unknown}")
+            if stored != [d for d in DATASETS if d in stored]:
+                errors.append(f"{where}: 'stored' = {stored} is not in the documented order")
+            if not all(d in stored for d in ALWAYS):
+                errors.append(f"{where}: 'stored' = {stored} lacks one of {ALWAYS}")
+            if sorted(g) != sorted(stored):
+                errors.append(f"{where}: holds the datasets {sorted(g)}, 'stored' says {sorted(stored)}")
+            every = int(g.attrs.get("every", 0))
+            if every < 1:
+                errors.append(f"{where}: every = {every} (missing or < 1)")
+                every = 1
             n = int(g.attrs.get("n_rows", -1))
-            if status == "completed" and n != int(g.attrs.get("n_steps", -2)):
-                errors.append(f"{where}: completed with {n} rows for {g.attrs.get('n_steps')} steps")
+            n_steps = int(g.attrs.get("n_steps", -2))
+            if status == "completed" and n != len(kept_rows(n_steps, every)):
+                errors.append(f"{where}: completed with {n} rows for {n_steps} steps and every = {every}")
             for d, (cols, unit, integer) in DATASETS.items():
                 if d not in g:
-                    errors.append(f"{where}: dataset '{d}' missing")
+                    if d in stored:
+                        errors.append(f"{where}: dataset '{d}' missing")
                     continue
                 ds = g[d]
                 shape = (n,) if cols is None else (n, 2 if cols == 2 else n_planes)
@@ -103,10 +133,11 @@ def check_file(path, allow_stopped):
                 continue
             if n > 1 and not np.all(np.diff(g["time"][()]) > 0):
                 errors.append(f"{where}/time: not strictly increasing")
-            if n > 0 and (g["substeps"][()].min() < 1 or g["iterations"][()].min() < 0):
-                errors.append(f"{where}: substeps < 1 or iterations < 0")
-            dmg = g["damage"][()]
-            if n > 0 and (dmg.min() < 0 or dmg.max() > 1):
+            if n > 0 and "substeps" in g and g["substeps"][()].min() < 1:
+                errors.append(f"{where}: substeps < 1")
+            if n > 0 and "iterations" in g and g["iterations"][()].min() < 0:
+                errors.append(f"{where}: iterations < 0")
+            if n > 0 and "damage" in g and (g["damage"][()].min() < 0 or g["damage"][()].max() > 1):
                 errors.append(f"{where}/damage: outside [0, 1]")
     return errors
 

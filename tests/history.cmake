@@ -98,3 +98,14 @@ set_tests_properties(history_help PROPERTIES LABELS history
 interlock_add_suite(test_history_mixed_control test_history_mixed_control.f90)
 target_link_libraries(test_history_mixed_control PRIVATE interlock_history_core)
 set_tests_properties(test_history_mixed_control PROPERTIES LABELS history)
+
+# &output every and store (docs/deck-format.md): thinned rows and chosen datasets are the full
+# run's, bitwise (plain and extrapolated, a sweep, a case that stops); the bad values are in
+# tests/data/bad_decks (every_zero, every_wrong_type, store_nonsense, store_unknown_name).
+foreach(mode every list stopped)
+  add_test(NAME history_output_${mode}
+    COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_output.py
+            $<TARGET_FILE:interlock-history> ${CMAKE_CURRENT_BINARY_DIR}/history_output_${mode}
+            ${mode})
+  set_tests_properties(history_output_${mode} PROPERTIES LABELS history TIMEOUT 120)
+endforeach()

@@ -26,6 +26,7 @@ module interlock_deck
   private
   public :: deck_t, read_deck, deck_case, deck_n_cases, deck_groups
   public :: max_points, max_sweep_values, max_total_steps, max_deck_bytes
+  public :: n_datasets, history_datasets, curves_datasets, datasets_text, dataset_index
 
   integer, parameter :: max_points = 10001        !< points of one loading block
   integer, parameter :: max_sweep_values = 1000   !< cases of one deck
@@ -33,6 +34,20 @@ module interlock_deck
   integer, parameter :: max_deck_bytes = 4 * 1024 * 1024
   integer, parameter :: max_cycles = 100000
   integer, parameter :: name_len = 64, path_len = 4096
+
+  !> The datasets of a case (docs/history-output.md), in the order they are written; `&output`
+  !> `store` picks among them ('all', 'curves' or a comma-separated list of these names). The
+  !> first three (time, separation, traction) are always written.
+  integer, parameter :: n_datasets = 15
+  character(len=20), parameter :: history_datasets(n_datasets) = [character(len=20) :: 'time', &
+    'separation', 'traction', 'damage', 'beta', 'theta', 'zeta', 'frictional_slip', &
+    'friction_traction', 'work', 'stored_energy', 'damage_dissipation', &
+    'friction_dissipation', 'iterations', 'substeps']
+  !> store = 'curves': no per-plane dataset.
+  logical, parameter :: curves_datasets(n_datasets) = [.true., .true., .true., .false., &
+    .false., .false., .false., .false., .false., .true., .true., .true., .true., .true., .true.]
+  integer, parameter :: n_always = 3
+  integer, parameter :: store_len = 1024
 
   !> "Not given" marks for namelist variables (a deck cannot mean these values).
   real(dp), parameter :: unset = -huge(1.0_dp)
@@ -83,13 +98,19 @@ module interlock_deck
     var_t(7, 'separation', 'two real numbers (normal, tangential) [mm]'), &
     var_t(7, 'traction', 'two real numbers (normal, tangential) [MPa]'), &
     var_t(8, 'file', 'a quoted string: a file path (at most 4096 characters)'), &
-    var_t(8, 'title', 'a quoted string (at most 1024 characters)')]
+    var_t(8, 'title', 'a quoted string (at most 1024 characters)'), &
+    var_t(8, 'every', 'an integer (1 to 2000000)'), &
+    var_t(8, 'store', "a quoted string: 'all', 'curves' or a list of dataset names")]
   integer, parameter :: title_len = 1024
 
   !> A validated deck. The loading block is stored expanded over its cycles.
   type :: deck_t
     character(len=:), allocatable :: path, text, output_file, title
     logical :: output_given = .false.   !< &output file given (else the deck's name with .h5)
+    !> &output every: rows 0, every, 2 every, ... and the last row of each case are written
+    integer :: every = 1
+    !> &output store: stored(k) = history_datasets(k) is written
+    logical :: stored(n_datasets) = .true.
     ! &interface
     real(dp) :: sigma0_n = 0.0_dp, sigma0_t = 0.0_dp, gc = 0.0_dp, eta = 0.0_dp, mu = 0.0_dp
     real(dp) :: h_n = huge(1.0_dp)
@@ -1178,13 +1199,17 @@ contains
     character(len=*), intent(out) :: message
     character(len=path_len + 1) :: file
     character(len=title_len + 1) :: title
+    character(len=store_len + 1) :: store
+    integer :: every
     integer :: ios
     character(len=512) :: iomsg, iomsg2
     character(len=:), allocatable :: probe
     integer :: kp
-    namelist /output/ file, title
+    namelist /output/ file, title, every, store
     file = ''
     title = ''
+    every = 1
+    store = 'all'
     message = ''
     read (u, nml=output, iostat=ios, iomsg=iomsg)
     if (ios /= 0) then
@@ -1218,7 +1243,108 @@ contains
       deck%output_given = .true.
     end if
     deck%title = trim(title)
+    if (every < 1 .or. every > max_total_steps) then
+      message = 'every = ' // format_integer(every) // ' is inadmissible: admissible 1 <= every <= ' // &
+                format_integer(max_total_steps) // ' (every = k keeps rows 0, k, 2k, ... and the last)'
+      return
+    end if
+    deck%every = every
+    if (len_trim(store) > store_len) then
+      message = 'store is longer than ' // format_integer(store_len) // ' characters: admissible ' // &
+                "'all', 'curves' or a comma-separated list of dataset names: " // datasets_text()
+      return
+    end if
+    call parse_store(store, deck%stored, message)
   end subroutine read_output
+
+  !> &output store: 'all', 'curves', or a comma-separated list of dataset names (case and
+  !> blanks do not matter; a name may be repeated). time, separation and traction are always
+  !> written. message /= '' for anything else, listing the admissible names.
+  subroutine parse_store(store, stored, message)
+    character(len=*), intent(in) :: store
+    logical, intent(out) :: stored(n_datasets)
+    character(len=*), intent(out) :: message
+    character(len=:), allocatable :: rest, item
+    character(len=*), parameter :: admissible = "admissible 'all', 'curves' or a " // &
+      'comma-separated list of dataset names: '
+    integer :: comma, k, j
+    message = ''
+    stored = .true.
+    select case (lower(trim(adjustl(store))))
+    case ('all')
+      return
+    case ('curves')
+      stored = curves_datasets
+      return
+    end select
+    stored = .false.
+    stored(1:n_always) = .true.
+    rest = trim(store)
+    k = 0
+    do
+      k = k + 1
+      comma = index(rest, ',')
+      if (comma > 0) then
+        item = lower(trim(adjustl(rest(1:comma - 1))))
+        rest = rest(comma + 1:)
+      else
+        item = lower(trim(adjustl(rest)))
+      end if
+      if (len(item) == 0) then
+        message = "store = " // quoted(store) // " is inadmissible: item " // format_integer(k) // &
+                  ' is empty; ' // admissible // datasets_text()
+        return
+      end if
+      j = dataset_index(item)
+      if (j == 0) then
+        message = "store = " // quoted(store) // " is inadmissible: " // quoted(item) // " is not a " // &
+                  'dataset name; ' // admissible // datasets_text()
+        if (item == 'all' .or. item == 'curves') message = "store = " // quoted(store) // &
+          " is inadmissible: " // quoted(item) // " stands alone, not in a list; " // admissible // &
+          datasets_text()
+        return
+      end if
+      stored(j) = .true.
+      if (comma == 0) exit
+    end do
+
+  contains
+
+    !> 'text' in quotes, cut to 60 characters ('...') so that the message keeps its end.
+    pure function quoted(text) result(q)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: q
+      if (len_trim(text) > 60) then
+        q = "'" // text(1:60) // "...'"
+      else
+        q = "'" // trim(text) // "'"
+      end if
+    end function quoted
+
+  end subroutine parse_store
+
+  !> Index of dataset `name` in history_datasets, 0 if there is none.
+  pure integer function dataset_index(name)
+    character(len=*), intent(in) :: name
+    integer :: k
+    dataset_index = 0
+    do k = 1, n_datasets
+      if (trim(history_datasets(k)) == trim(name)) then
+        dataset_index = k
+        return
+      end if
+    end do
+  end function dataset_index
+
+  !> "time, separation, ...": the dataset names of a case.
+  pure function datasets_text() result(text)
+    character(len=:), allocatable :: text
+    integer :: k
+    text = trim(history_datasets(1))
+    do k = 2, n_datasets
+      text = text // ', ' // trim(history_datasets(k))
+    end do
+  end function datasets_text
 
   ! ------------------------------------------------------------------- helpers
 

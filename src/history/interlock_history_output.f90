@@ -13,7 +13,8 @@ module interlock_history_output
       is_infinite_value, interlock_version_string
   use interlock_h5, only: h5_file_t, h5_create_file, h5_close_file, h5_create_group, &
       h5_close_group, h5_write, h5_attribute
-  use interlock_deck, only: deck_t, deck_n_cases
+  use interlock_deck, only: deck_t, deck_n_cases, n_datasets, history_datasets, &
+      dataset_index
   use interlock_mixed_control, only: history_t
   implicit none
   private
@@ -92,6 +93,8 @@ contains
     character(len=4) :: name
     character(len=:), allocatable :: effects, how, state_note, count_note
     integer :: n, np, k, ignore
+    integer, allocatable :: idx(:)
+    character(len=:), allocatable :: stored
 
     message = ''
     write (name, '(i4.4)') icase
@@ -100,8 +103,17 @@ contains
       message = 'cannot create the group /cases/' // name
       return
     end if
-    n = hist%n_rows
+    ! &output every: the rows kept (0, every, 2 every, ... and the last computed row).
+    idx = kept_rows(hist%n_rows, deck%every)
+    n = size(idx)
     np = mat%n_planes
+    ! &output store: the datasets written.
+    stored = ''
+    do k = 1, n_datasets
+      if (.not. deck%stored(k)) cycle
+      if (len(stored) > 0) stored = stored // ','
+      stored = stored // trim(history_datasets(k))
+    end do
     ! Status and what the case is.
     call h5_attribute(g, 'status', hist%status, stat)
     call ok(h5_text(g, 'label', label))
@@ -139,6 +151,8 @@ contains
     call ok(h5_real(g, 'newton_tol', deck%control%tol))
     call ok(h5_int(g, 'n_steps', deck%n_steps))
     call ok(h5_int(g, 'n_rows', n))
+    call ok(h5_int(g, 'every', deck%every))
+    call ok(h5_text(g, 'stored', stored))
     ! Richardson extrapolation (&solver extrapolate): what was extrapolated.
     how = ''
     state_note = ''
@@ -158,41 +172,54 @@ contains
     call ok(h5_int(g, 'extrapolated', merge(1, 0, hist%extrapolated)))
     call ok(h5_text(g, 'extrapolation', how))
     ! The history.
-    if (stat == 0) call h5_write(g, 'time', hist%time(1:n), '-', &
-      'pseudo-time at the end of each step (row 0: after the first step)', stat)
-    if (stat == 0) call h5_write(g, 'separation', hist%separation(:, 1:n), 'mm', &
+    if (stat == 0) call h5_write(g, 'time', hist%time(idx), '-', &
+      'pseudo-time at the end of each step written (row 0: after the first step; with ' // &
+      'every = k > 1 the steps 1, 1 + k, 1 + 2k, ... and the last)', stat)
+    if (stat == 0) call h5_write(g, 'separation', hist%separation(:, idx), 'mm', &
       'relative displacement (s_N, s_T): column 0 normal (> 0 opening), 1 tangential' // &
       extrapolated_note(hist%extrapolated), stat)
-    if (stat == 0) call h5_write(g, 'traction', hist%traction(:, 1:n), 'MPa', &
+    if (stat == 0) call h5_write(g, 'traction', hist%traction(:, idx), 'MPa', &
       'traction (sigma_N, sigma_T): column 0 normal (< 0 compression), 1 tangential' // &
       extrapolated_note(hist%extrapolated), stat)
-    if (stat == 0) call h5_write(g, 'damage', hist%damage(:, 1:n), '-', &
+    if (stat == 0 .and. want('damage')) call h5_write(g, 'damage', &
+      hist%damage(:, idx), '-', &
       'damage D_k of each microplane (column k-1 = plane k)' // state_note, stat)
-    if (stat == 0) call h5_write(g, 'beta', hist%beta(:, 1:n), '-', &
+    if (stat == 0 .and. want('beta')) call h5_write(g, 'beta', &
+      hist%beta(:, idx), '-', &
       'history maximum of the equivalent relative displacement of each microplane' // &
       state_note, stat)
-    if (stat == 0) call h5_write(g, 'theta', hist%theta(:, 1:n), 'rad', &
+    if (stat == 0 .and. want('theta')) call h5_write(g, 'theta', &
+      hist%theta(:, idx), 'rad', &
       'current inclination theta_k of each microplane' // state_note, stat)
-    if (stat == 0) call h5_write(g, 'zeta', hist%zeta(:, 1:n), 'N/mm', &
+    if (stat == 0 .and. want('zeta')) call h5_write(g, 'zeta', &
+      hist%zeta(:, idx), 'N/mm', &
       'accumulated frictional work zeta_k of each microplane (drives wear)' // state_note, stat)
-    if (stat == 0) call h5_write(g, 'frictional_slip', hist%frictional_slip(:, 1:n), 'mm', &
+    if (stat == 0 .and. want('frictional_slip')) call h5_write(g, 'frictional_slip', &
+      hist%frictional_slip(:, idx), 'mm', &
       'frictional slip sf_k along each microplane' // state_note, stat)
-    if (stat == 0) call h5_write(g, 'friction_traction', hist%friction_traction(:, 1:n), 'MPa', &
+    if (stat == 0 .and. want('friction_traction')) call h5_write(g, 'friction_traction', &
+      hist%friction_traction(:, idx), 'MPa', &
       'friction traction K_t (s_kt - sf_k) of each microplane at the end of the step' // &
       state_note, stat)
-    if (stat == 0) call h5_write(g, 'work', hist%work(1:n), 'N/mm', &
+    if (stat == 0 .and. want('work')) call h5_write(g, 'work', &
+      hist%work(idx), 'N/mm', &
       'work done on the interface since the initial state, sum of sigma . ds' // state_note, &
       stat)
-    if (stat == 0) call h5_write(g, 'stored_energy', hist%stored(1:n), 'N/mm', &
+    if (stat == 0 .and. want('stored_energy')) call h5_write(g, 'stored_energy', &
+      hist%stored(idx), 'N/mm', &
       'stored (free) energy of the interface' // state_note, stat)
-    if (stat == 0) call h5_write(g, 'damage_dissipation', hist%diss_damage(1:n), 'N/mm', &
+    if (stat == 0 .and. want('damage_dissipation')) call h5_write(g, 'damage_dissipation', &
+      hist%diss_damage(idx), 'N/mm', &
       'energy dissipated by damage since the initial state' // state_note, stat)
-    if (stat == 0) call h5_write(g, 'friction_dissipation', hist%diss_friction(1:n), 'N/mm', &
+    if (stat == 0 .and. want('friction_dissipation')) call h5_write(g, 'friction_dissipation', &
+      hist%diss_friction(idx), 'N/mm', &
       'energy dissipated by friction since the initial state' // state_note, stat)
-    if (stat == 0) call h5_write(g, 'iterations', hist%iterations(1:n), '-', &
+    if (stat == 0 .and. want('iterations')) call h5_write(g, 'iterations', &
+      hist%iterations(idx), '-', &
       'Newton iterations of the mixed-control solve of each step (all attempts; 0 when ' // &
       'every component is separation-driven)' // count_note, stat)
-    if (stat == 0) call h5_write(g, 'substeps', hist%substeps(1:n), '-', &
+    if (stat == 0 .and. want('substeps')) call h5_write(g, 'substeps', &
+      hist%substeps(idx), '-', &
       'sub-increments of each step: the library''s sub-increments summed over the accepted ' // &
       'step cuts (1: the step was neither cut nor substepped)' // count_note, stat)
     if (stat /= 0) message = 'cannot write the case /cases/' // name // ' to ' // out%temp_name
@@ -204,6 +231,11 @@ contains
       integer, intent(in) :: s
       if (stat == 0) stat = s
     end subroutine ok
+
+    logical function want(dataset)
+      character(len=*), intent(in) :: dataset
+      want = deck%stored(dataset_index(dataset))
+    end function want
 
     subroutine property(ip, value)
       integer, intent(in) :: ip
@@ -308,6 +340,24 @@ contains
     if (extrapolated) text = ' (Richardson-extrapolated: 2 u(2n) - u(n), u(n) with the ' // &
       'deck''s steps, u(2n) with every segment''s step count doubled)'
   end function extrapolated_note
+
+  !> The rows written with `&output every = k` out of n computed rows: 1, 1 + k, 1 + 2k, ...
+  !> (Fortran indices; rows 0, k, 2k, ... in the file's 0-based numbering) and always the last
+  !> row n (the end of the history, or the last step before a stop).
+  pure function kept_rows(n, every) result(idx)
+    integer, intent(in) :: n, every
+    integer, allocatable :: idx(:)
+    integer :: i, m
+    if (n < 1) then
+      allocate (idx(0))
+      return
+    end if
+    m = (n - 1) / every + 1
+    if (mod(n - 1, every) /= 0) m = m + 1
+    allocate (idx(m))
+    idx(1:(n - 1) / every + 1) = [(1 + i * every, i = 0, (n - 1) / every)]
+    idx(m) = n
+  end function kept_rows
 
   !> +Inf for the "infinite" convention (>= 1e30), the value otherwise.
   elemental real(dp) function infinite(x)
