@@ -247,6 +247,10 @@ contains
       'both runs (3 steps per row: up to 3x the bounds above); about 3x the CPU time of one', &
       'run. The case stops at the first step that either run cannot solve (status: which).', &
       '', &
+      'What is written (&output): every = k keeps every k-th step (and the last one);', &
+      'store = ''all'' (default), ''curves'' (no per-plane datasets) or a comma-separated', &
+      'list of dataset names (time, separation and traction are always written).', &
+      '', &
       'Limits: decks of at most 4 MiB of text (LF or CR LF line ends), 10001 points,', &
       '2,000,000 steps per case, 1000 sweep values.'
   end subroutine usage
