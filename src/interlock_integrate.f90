@@ -9,6 +9,7 @@ module interlock_integrate
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
   use interlock_ria, only: ria_step
   use interlock_kernels, only: kernel_step
+  use interlock_friction, only: friction_return
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   implicit none
   private
@@ -63,8 +64,8 @@ contains
 
     done = .false.
     if (mat%kernel == kernel_cohesive .and. solver%substep_tol <= 0.0_dp) then
-      ! The plain cohesive law (one flat plane, no friction, no finite depth): inline here.
-      call cohesive_step(mat, s, old, new, tangent)
+      ! One flat plane without finite depth (the Alfano-Sacco interface): inline here.
+      call cohesive_step(mat, solver%scheme, s, old, new, tangent)
       sigma = new%sigma
       info%max_damage_increment = new%damage(1) - old%damage(1)
       info%max_angle_increment = 0.0_dp
@@ -99,18 +100,21 @@ contains
     info%max_angle_increment = maxval(abs(new%theta(1:n) - old%theta(1:n)))
   end subroutine interlock_update
 
-  !> One flat plane without friction and without finite depth: the bilinear cohesive law of
-  !> the mixed-mode damage (interlock_damage) with its stored energy and the exact decohesion
-  !> energy; the damaged part carries no shear (sf = s_T). Every plane of a flat RIA shares
-  !> the history. Agrees with the general path to round-off (core_kernels).
-  pure subroutine cohesive_step(mat, s, old, new, tangent)
+  !> One flat plane without finite depth (the Alfano-Sacco interface): the mixed-mode damage
+  !> (interlock_damage) and, where the effect is on, Coulomb friction on the damaged part
+  !> (interlock_friction), with the stored energy, the exact decohesion energy and the
+  !> frictional work. Every plane of a flat RIA shares the history. Agrees with the general path
+  !> to round-off (core_kernels).
+  pure subroutine cohesive_step(mat, scheme, s, old, new, tangent)
     type(interlock_material_t), intent(in) :: mat
+    integer, intent(in) :: scheme
     real(dp), intent(in) :: s(2)
     type(interlock_state_t), intent(in) :: old
     type(interlock_state_t), intent(inout) :: new
     real(dp), intent(out) :: tangent(2, 2)
-    real(dp) :: pos, an, at, beq, beta, d, rb, g(2), sigma(2)
-    integer :: k
+    real(dp) :: pos, an, at, beq, beta, d, rb, g(2), sigma(2), sf, tauf, dsf(3), dtauf(3), &
+                slip, dslip(3), zeta, work_fric
+    integer :: k, branch
 
     pos = max(0.0_dp, s(1))
     beta = old%beta(1)
@@ -131,30 +135,48 @@ contains
         end if
       end if
     end if
+    if (mat%use_friction) then
+      call friction_return(mat%kn, mat%kt, mat%mu_eff, s, old%sf(1), sf, tauf, dsf, dtauf, &
+                           slip, dslip, branch)
+    else
+      sf = s(2)
+      tauf = 0.0_dp
+      dtauf = 0.0_dp
+      slip = abs(sf - old%sf(1))
+    end if
     sigma(1) = mat%kn * (s(1) - d * pos)
-    sigma(2) = (1.0_dp - d) * mat%kt * s(2)
+    sigma(2) = (1.0_dp - d) * mat%kt * s(2) + d * tauf
     if (s(1) > 0.0_dp) then
       tangent(1, 1) = (1.0_dp - d) * mat%kn - mat%kn * pos * g(1)
     else
       tangent(1, 1) = mat%kn
     end if
     tangent(1, 2) = -mat%kn * pos * g(2)
-    tangent(2, 1) = -mat%kt * s(2) * g(1)
-    tangent(2, 2) = (1.0_dp - d) * mat%kt - mat%kt * s(2) * g(2)
+    tangent(2, 1) = d * dtauf(1) + (tauf - mat%kt * s(2)) * g(1)
+    tangent(2, 2) = (1.0_dp - d) * mat%kt + d * dtauf(2) + (tauf - mat%kt * s(2)) * g(2)
+    ! Frictional work (decision D4) and the wear driver of each scheme (no wear on a flat plane,
+    ! but zeta is kept as the paper's output).
+    work_fric = d * abs(tauf) * slip
+    if (scheme == scheme_implicit) then
+      zeta = old%zeta(1) + work_fric
+    else
+      zeta = old%zeta(1) + old%damage(1) * abs(old%tauf(1)) * slip
+    end if
     do k = 1, mat%n_planes
       new%beta(k) = beta
       new%damage(k) = d
-      new%sf(k) = s(2)
-      new%zeta(k) = old%zeta(k)
+      new%sf(k) = sf
+      new%zeta(k) = zeta
       new%theta(k) = old%theta(k)
-      new%tauf(k) = 0.0_dp
+      new%tauf(k) = tauf
     end do
     new%stored = 0.5_dp * ((1.0_dp - d) * (mat%kn * s(1)**2 + mat%kt * s(2)**2) + &
-                           d * mat%kn * min(0.0_dp, s(1))**2)
+                           d * (mat%kn * min(0.0_dp, s(1))**2 + tauf**2 * mat%inv_kt))
     new%diss_damage = old%diss_damage
     if (d > old%damage(1)) new%diss_damage = old%diss_damage + mat%decohesion_energy_factor * &
-        (min(beta, mat%beta_break) - min(max(old%beta(1), 1.0_dp), mat%beta_break))
-    new%diss_friction = old%diss_friction
+        (min(beta, mat%beta_break) - min(max(old%beta(1), 1.0_dp), mat%beta_break)) - &
+        0.5_dp * tauf**2 * mat%inv_kt * (d - old%damage(1))
+    new%diss_friction = old%diss_friction + work_fric
     new%s = s
     new%sigma = sigma
     new%work = old%work + 0.5_dp * ((old%sigma(1) + sigma(1)) * (s(1) - old%s(1)) + &

@@ -26,7 +26,7 @@ module interlock_material
   !> inclined planes: constant angles, or wear with the explicit scheme (angle frozen in the
   !> step); the implicit scheme with wear takes the general path
   integer, parameter :: kernel_inclined = 2
-  !> one flat plane, no friction, no finite depth: the plain cohesive law, inlined
+  !> one flat plane without finite depth (the Alfano-Sacco interface), inlined in the update
   integer, parameter :: kernel_cohesive = 3
   character(len=12), parameter :: effect_names(n_effects) = &
     [character(len=12) :: 'damage', 'friction', 'interlocking', 'finite_depth', 'wear']
@@ -236,7 +236,7 @@ contains
     mat%plane_wears(mat%n_planes + 1:) = .false.
     mat%use_wear = any(mat%plane_wears(1:mat%n_planes))
     mat%flat = all(same_value(mat%theta_init(1:mat%n_planes), 0.0_dp)) .and. .not. mat%use_wear
-    if (mat%flat .and. .not. (mat%use_friction .or. mat%use_depth)) then
+    if (mat%flat .and. .not. mat%use_depth) then
       mat%kernel = kernel_cohesive
     else if (mat%flat) then
       mat%kernel = kernel_flat

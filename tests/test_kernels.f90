@@ -119,7 +119,7 @@ contains
     ! The paper's RIA with theta_0 = 0 is three identical flat planes: one computed.
     call interlock_paper_ria(mat, 0.0_dp, 0.0_dp, 20.0_dp)
     call prepare_or_fail(mat)
-    call compare_paths(mat, kernel_flat, 'flat RIA, damage + friction')
+    call compare_paths(mat, kernel_cohesive, 'flat RIA, damage + friction')
   end subroutine test_flat_friction
 
   subroutine test_flat_depth()
