@@ -474,7 +474,7 @@ contains
       c = ichar(text(1:1)) + 256 * ichar(text(2:2))
       if (c == 255 + 256 * 254 .or. c == 254 + 256 * 255) then
         message = path // ': the deck is UTF-16 encoded (a byte order mark ' // &
-                  'and NUL bytes): save it as ASCII or UTF-8 text'
+                  'and NUL bytes): write it as ASCII or UTF-8 text'
         return
       end if
     end if
