@@ -1156,30 +1156,12 @@ contains
         return
       end if
     end do
-    do k = 1, count_given(frictional_slip)
-      if (.not. in_range(frictional_slip(k), -1.0e12_dp, 1.0e12_dp)) then
-        message = 'frictional_slip(' // format_integer(k) // ') is not a finite number [mm]'
-        return
-      end if
-    end do
-    do k = 1, count_given(friction_traction)
-      if (.not. in_range(friction_traction(k), -1.0e12_dp, 1.0e12_dp)) then
-        message = 'friction_traction(' // format_integer(k) // ') is not a finite number [MPa]'
-        return
-      end if
-    end do
-    do k = 1, count_given(separation)
-      if (.not. in_range(separation(k), -1.0e12_dp, 1.0e12_dp)) then
-        message = 'separation(' // format_integer(k) // ') is not a finite number [mm]'
-        return
-      end if
-    end do
-    do k = 1, count_given(traction)
-      if (.not. in_range(traction(k), -1.0e12_dp, 1.0e12_dp)) then
-        message = 'traction(' // format_integer(k) // ') is not a finite number [MPa]'
-        return
-      end if
-    end do
+    message = not_finite_message('frictional_slip', 'mm', frictional_slip)
+    if (len_trim(message) == 0) message = not_finite_message('friction_traction', 'MPa', &
+                                                              friction_traction)
+    if (len_trim(message) == 0) message = not_finite_message('separation', 'mm', separation)
+    if (len_trim(message) == 0) message = not_finite_message('traction', 'MPa', traction)
+    if (len_trim(message) > 0) return
     deck%has_initial_state = .true.
     deck%init_damage = damage
     deck%init_beta = beta
@@ -1498,6 +1480,22 @@ contains
   end function default_output
 
   !> lo <= x <= hi, false for NaN (tested first).
+  !> '' when every given value of an &initial_state array is a finite number (|x| <= 1e12),
+  !> else the message naming the first one that is not.
+  pure function not_finite_message(name, unit, x) result(message)
+    character(len=*), intent(in) :: name, unit
+    real(dp), intent(in) :: x(:)
+    character(len=:), allocatable :: message
+    integer :: k
+    message = ''
+    do k = 1, count_given(x)
+      if (.not. in_range(x(k), -1.0e12_dp, 1.0e12_dp)) then
+        message = name // '(' // format_integer(k) // ') is not a finite number [' // unit // ']'
+        return
+      end if
+    end do
+  end function not_finite_message
+
   elemental logical function in_range(x, lo, hi)
     real(dp), intent(in) :: x, lo, hi
     in_range = .false.
