@@ -1,24 +1,18 @@
-!> The update of one material point over one increment (SPEC section 5): the chosen scheme,
-!> optionally with error-controlled substepping, and the exact algorithmic tangent of what was
-!> computed. A failed local solve is retried on sub-increments before it is reported.
+!> The update of one material point over one increment (SPEC section 5), the library's entry
+!> point. The flat-plane laws without finite depth (a bilinear cohesive law, and the
+!> Alfano-Sacco interface with friction) run here with only the checks they need, so that the
+!> scenes most FE runs of an intact interface are made of pay close to a hand-coded cohesive
+!> law; everything else goes to interlock_general_update.
 module interlock_integrate
   use interlock_kinds, only: dp
-  use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, &
-      scheme_explicit, scheme_implicit, kernel_general, kernel_cohesive
+  use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_explicit, &
+      scheme_implicit, kernel_cohesive
   use interlock_state, only: interlock_state_t
-  use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
-  use interlock_ria, only: ria_step
-  use interlock_kernels, only: kernel_step
-  use interlock_friction, only: friction_return
-  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use interlock_status, only: interlock_info_t, status_ok
+  use interlock_general_update, only: general_update
   implicit none
   private
   public :: interlock_update
-
-  real(dp), parameter :: smallest_fraction = 1.0e-12_dp
-  !> Error control accepts a sub-increment of this fraction of the increment whatever its
-  !> estimate (2^-12: at most ~4096 sub-increments to pass a kink).
-  real(dp), parameter :: smallest_controlled_fraction = 2.0_dp**(-12)
 
 contains
 
@@ -37,299 +31,211 @@ contains
     type(interlock_state_t), intent(inout) :: new
     real(dp), intent(out) :: sigma(2), tangent(2, 2)
     type(interlock_info_t), intent(inout) :: info
-    logical :: ok, done
-    integer :: n
 
-    if (info%status /= status_ok) info%message = ''
-    info%status = status_ok
-    info%newton_iterations = 0
-    info%substeps = 1
-    info%attempts = 1
-    tangent = 0.0_dp
-    if (.not. mat%prepared) then
-      call fail(old, new, sigma, tangent, info, status_bad_input, &
-                'the material has not been prepared (call interlock_material_prepare)')
-      return
-    end if
-    if (solver%scheme /= scheme_explicit .and. solver%scheme /= scheme_implicit) then
-      call fail(old, new, sigma, tangent, info, status_bad_input, &
-                'unknown integration scheme: admissible 1 (explicit) or 2 (implicit)')
-      return
-    end if
-    if (.not. all(ieee_is_finite(s))) then
-      call fail(old, new, sigma, tangent, info, status_bad_input, &
-                'the relative displacement is not a finite number')
-      return
-    end if
-
-    done = .false.
-    if (mat%kernel == kernel_cohesive .and. solver%substep_tol <= 0.0_dp) then
-      ! One flat plane without finite depth (the Alfano-Sacco interface): inline here.
-      call cohesive_step(mat, solver%scheme, s, old, new, tangent)
-      sigma = new%sigma
-      info%max_damage_increment = new%damage(1) - old%damage(1)
+    ! The kernel is kernel_cohesive only in a prepared material. abs(x) <= huge is false for NaN
+    ! and both infinities: anything else is checked and reported by general_update.
+    if (mat%kernel == kernel_cohesive .and. solver%substep_tol <= 0.0_dp .and. &
+        (solver%scheme == scheme_explicit .or. solver%scheme == scheme_implicit) .and. &
+        abs(s(1)) <= huge(1.0_dp) .and. abs(s(2)) <= huge(1.0_dp)) then
+      if (info%status /= status_ok) info%message = ''
+      info%status = status_ok
+      info%newton_iterations = 0
+      info%substeps = 1
+      info%attempts = 1
       info%max_angle_increment = 0.0_dp
-      return
-    end if
-    if (solver%substep_tol > 0.0_dp) then
-      call substep(mat, solver, s, old, new, tangent, info, solver%substep_tol)
-    else
-      ! The specialised kernel of the material's effect set, when it applies.
-      if (mat%kernel /= kernel_general) call kernel_step(mat, solver, s, old, new, tangent, &
-                                                         done, info%newton_iterations)
-      if (.not. done) then
-        call ria_step(mat, solver, s, old, new, tangent, info%newton_iterations, ok)
-        if (.not. ok) then
-          ! The one-step solve failed: retry on sub-increments, split only as failures require.
-          call substep(mat, solver, s, old, new, tangent, info, huge(1.0_dp))
-        end if
+      if (mat%use_friction) then
+        call cohesive_friction_step(mat, solver%scheme, s, old, new, sigma, tangent)
+      else
+        call decohesion_step(mat, s, old, new, sigma, tangent)
       end if
+      info%max_damage_increment = new%damage(1) - old%damage(1)
+    else
+      call general_update(mat, solver, s, old, new, sigma, tangent, info)
     end if
-    if (info%status /= status_ok) then
-      call fail(old, new, sigma, tangent, info, info%status, info%message)
-      return
-    end if
-    sigma = new%sigma
-    if (.not. (all(ieee_is_finite(sigma)) .and. all(ieee_is_finite(tangent)))) then
-      call fail(old, new, sigma, tangent, info, status_local_failure, &
-                'the traction or tangent is not finite: retry with a smaller increment')
-      return
-    end if
-    n = mat%n_planes
-    info%max_damage_increment = maxval(new%damage(1:n) - old%damage(1:n))
-    info%max_angle_increment = maxval(abs(new%theta(1:n) - old%theta(1:n)))
   end subroutine interlock_update
 
-  !> One flat plane without finite depth (the Alfano-Sacco interface): the mixed-mode damage
-  !> (interlock_damage) and, where the effect is on, Coulomb friction on the damaged part
-  !> (interlock_friction), with the stored energy, the exact decohesion energy and the
-  !> frictional work. Every plane of a flat RIA shares the history. Agrees with the general path
-  !> to round-off (core_kernels).
-  pure subroutine cohesive_step(mat, scheme, s, old, new, tangent)
+  !> One flat plane without finite depth and without friction (a bilinear cohesive law, SPEC
+  !> section 7): the mixed-mode damage of interlock_damage, the stored energy, the exact
+  !> decohesion energy and the work. Every plane of a flat RIA shares the history. Written for
+  !> the fewest operations (it is the law most FE runs of an intact interface call): divisions
+  !> only while damage grows, no friction return, stored energy = sigma . s / 2 (no friction
+  !> traction). Agrees with the general path to round-off (core_kernels).
+  pure subroutine decohesion_step(mat, s, old, new, sigma, tangent)
     type(interlock_material_t), intent(in) :: mat
-    integer, intent(in) :: scheme
     real(dp), intent(in) :: s(2)
     type(interlock_state_t), intent(in) :: old
     type(interlock_state_t), intent(inout) :: new
-    real(dp), intent(out) :: tangent(2, 2)
-    real(dp) :: pos, an, at, beq, beta, d, rb, g(2), sigma(2), sf, tauf, dsf(3), dtauf(3), &
-                slip, dslip(3), zeta, work_fric
-    integer :: k, branch
+    real(dp), intent(out) :: sigma(2), tangent(2, 2)
+    real(dp) :: pos, an, at, beq, d, rb, ddb, gd1, gd2, kpos, kts
 
     pos = max(0.0_dp, s(1))
-    beta = old%beta(1)
     d = old%damage(1)
-    g = 0.0_dp
+    gd1 = 0.0_dp
+    gd2 = 0.0_dp
+    new%beta(1) = old%beta(1)
+    new%diss_damage = old%diss_damage
     if (mat%use_damage) then
       an = pos * mat%inv_s0n
       at = s(2) * mat%inv_s0t
       beq = sqrt(an * an + at * at)
-      if (beq > beta) then
-        beta = beq
+      if (beq > old%beta(1)) then
+        new%beta(1) = beq
         if (beq >= mat%beta_break) then
           d = 1.0_dp
         else if (beq > 1.0_dp) then
           d = (beq - 1.0_dp) / (mat%eta * beq)
           rb = 1.0_dp / beq
-          g = (mat%inv_eta * rb * rb * rb) * [an * mat%inv_s0n, at * mat%inv_s0t]
+          ddb = mat%inv_eta * rb * rb * rb
+          gd1 = ddb * an * mat%inv_s0n
+          gd2 = ddb * at * mat%inv_s0t
         end if
+        if (d > old%damage(1)) new%diss_damage = old%diss_damage + &
+          mat%decohesion_energy_factor * (min(beq, mat%beta_break) - &
+                                          min(max(old%beta(1), 1.0_dp), mat%beta_break))
       end if
     end if
-    if (mat%use_friction) then
-      call friction_return(mat%kn, mat%kt, mat%mu_eff, s, old%sf(1), sf, tauf, dsf, dtauf, &
-                           slip, dslip, branch)
-    else
-      sf = s(2)
-      tauf = 0.0_dp
-      dtauf = 0.0_dp
-      slip = abs(sf - old%sf(1))
-    end if
-    sigma(1) = mat%kn * (s(1) - d * pos)
-    sigma(2) = (1.0_dp - d) * mat%kt * s(2) + d * tauf
+    kpos = mat%kn * pos
+    kts = mat%kt * s(2)
+    sigma(1) = mat%kn * s(1) - d * kpos
+    sigma(2) = (1.0_dp - d) * kts
     if (s(1) > 0.0_dp) then
-      tangent(1, 1) = (1.0_dp - d) * mat%kn - mat%kn * pos * g(1)
+      tangent(1, 1) = (1.0_dp - d) * mat%kn - kpos * gd1
     else
       tangent(1, 1) = mat%kn
     end if
-    tangent(1, 2) = -mat%kn * pos * g(2)
-    tangent(2, 1) = d * dtauf(1) + (tauf - mat%kt * s(2)) * g(1)
-    tangent(2, 2) = (1.0_dp - d) * mat%kt + d * dtauf(2) + (tauf - mat%kt * s(2)) * g(2)
+    tangent(1, 2) = -kpos * gd2
+    tangent(2, 1) = -kts * gd1
+    tangent(2, 2) = (1.0_dp - d) * mat%kt - kts * gd2
+    new%damage(1) = d
+    new%sf(1) = s(2)
+    ! No friction traction, no frictional work: in an admissible start state tau_f = 0 too
+    ! (|tau_f| <= mu p), so neither scheme's driver (eq. 25 uses the start state's) adds any.
+    new%zeta(1) = old%zeta(1)
+    new%theta(1) = old%theta(1)
+    new%tauf(1) = 0.0_dp
+    if (mat%n_planes > 1) call share_first_plane(mat%n_planes, old, new)
+    new%stored = 0.5_dp * (s(1) * sigma(1) + s(2) * sigma(2))
+    new%diss_friction = old%diss_friction
+    new%work = old%work + 0.5_dp * ((old%sigma(1) + sigma(1)) * (s(1) - old%s(1)) + &
+                                    (old%sigma(2) + sigma(2)) * (s(2) - old%s(2)))
+    new%s = s
+    new%sigma = sigma
+  end subroutine decohesion_step
+
+  !> One flat plane without finite depth, with Coulomb friction on the damaged part (the
+  !> Alfano-Sacco interface): the mixed-mode damage (interlock_damage), the friction return
+  !> (interlock_friction, written out with scalar derivatives), the stored energy, the exact
+  !> decohesion energy and the frictional work. Every plane of a flat RIA shares the history.
+  !> Agrees with the general path to round-off (core_kernels).
+  pure subroutine cohesive_friction_step(mat, scheme, s, old, new, sigma, tangent)
+    type(interlock_material_t), intent(in) :: mat
+    integer, intent(in) :: scheme
+    real(dp), intent(in) :: s(2)
+    type(interlock_state_t), intent(in) :: old
+    type(interlock_state_t), intent(inout) :: new
+    real(dp), intent(out) :: sigma(2), tangent(2, 2)
+    real(dp) :: pos, an, at, beq, d, rb, ddb, gd1, gd2, kpos, kts, mu_p, tau_trial, sf, tauf, &
+                dtauf1, dtauf2, slip, work_fric
+
+    pos = max(0.0_dp, s(1))
+    d = old%damage(1)
+    gd1 = 0.0_dp
+    gd2 = 0.0_dp
+    new%beta(1) = old%beta(1)
+    if (mat%use_damage) then
+      an = pos * mat%inv_s0n
+      at = s(2) * mat%inv_s0t
+      beq = sqrt(an * an + at * at)
+      if (beq > old%beta(1)) then
+        new%beta(1) = beq
+        if (beq >= mat%beta_break) then
+          d = 1.0_dp
+        else if (beq > 1.0_dp) then
+          d = (beq - 1.0_dp) / (mat%eta * beq)
+          rb = 1.0_dp / beq
+          ddb = mat%inv_eta * rb * rb * rb
+          gd1 = ddb * an * mat%inv_s0n
+          gd2 = ddb * at * mat%inv_s0t
+        end if
+      end if
+    end if
+    ! Friction return (interlock_friction): elastic predictor, return to |tau_f| = mu p.
+    mu_p = -mat%mu_eff * mat%kn * min(0.0_dp, s(1))
+    if (mu_p > 0.0_dp) then
+      tau_trial = mat%kt * (s(2) - old%sf(1))
+      if (abs(tau_trial) <= mu_p) then
+        sf = old%sf(1)
+        tauf = tau_trial
+        dtauf1 = 0.0_dp
+        dtauf2 = mat%kt
+        slip = 0.0_dp
+      else
+        tauf = sign(mu_p, tau_trial)
+        sf = s(2) - tauf / mat%kt
+        dtauf1 = -sign(mat%mu_eff * mat%kn, tau_trial)
+        dtauf2 = 0.0_dp
+        slip = (abs(tau_trial) - mu_p) / mat%kt
+      end if
+    else
+      ! Open plane: the damaged part follows freely.
+      sf = s(2)
+      tauf = 0.0_dp
+      dtauf1 = 0.0_dp
+      dtauf2 = 0.0_dp
+      slip = abs(sf - old%sf(1))
+    end if
+    kpos = mat%kn * pos
+    kts = mat%kt * s(2)
+    sigma(1) = mat%kn * s(1) - d * kpos
+    sigma(2) = (1.0_dp - d) * kts + d * tauf
+    if (s(1) > 0.0_dp) then
+      tangent(1, 1) = (1.0_dp - d) * mat%kn - kpos * gd1
+    else
+      tangent(1, 1) = mat%kn
+    end if
+    tangent(1, 2) = -kpos * gd2
+    tangent(2, 1) = d * dtauf1 + (tauf - kts) * gd1
+    tangent(2, 2) = (1.0_dp - d) * mat%kt + d * dtauf2 + (tauf - kts) * gd2
     ! Frictional work (decision D4) and the wear driver of each scheme (no wear on a flat plane,
     ! but zeta is kept as the paper's output).
     work_fric = d * abs(tauf) * slip
     if (scheme == scheme_implicit) then
-      zeta = old%zeta(1) + work_fric
+      new%zeta(1) = old%zeta(1) + work_fric
     else
-      zeta = old%zeta(1) + old%damage(1) * abs(old%tauf(1)) * slip
+      new%zeta(1) = old%zeta(1) + old%damage(1) * abs(old%tauf(1)) * slip
     end if
-    do k = 1, mat%n_planes
-      new%beta(k) = beta
-      new%damage(k) = d
-      new%sf(k) = sf
-      new%zeta(k) = zeta
-      new%theta(k) = old%theta(k)
-      new%tauf(k) = tauf
-    end do
-    new%stored = 0.5_dp * ((1.0_dp - d) * (mat%kn * s(1)**2 + mat%kt * s(2)**2) + &
-                           d * (mat%kn * min(0.0_dp, s(1))**2 + tauf**2 * mat%inv_kt))
+    new%damage(1) = d
+    new%sf(1) = sf
+    new%theta(1) = old%theta(1)
+    new%tauf(1) = tauf
+    if (mat%n_planes > 1) call share_first_plane(mat%n_planes, old, new)
+    ! psi = (1 - D) psi_e + D psi_f = (sigma . s - D tau_f sf) / 2.
+    new%stored = 0.5_dp * (s(1) * sigma(1) + s(2) * sigma(2) - d * tauf * sf)
     new%diss_damage = old%diss_damage
     if (d > old%damage(1)) new%diss_damage = old%diss_damage + mat%decohesion_energy_factor * &
-        (min(beta, mat%beta_break) - min(max(old%beta(1), 1.0_dp), mat%beta_break)) - &
+        (min(new%beta(1), mat%beta_break) - min(max(old%beta(1), 1.0_dp), mat%beta_break)) - &
         0.5_dp * tauf**2 * mat%inv_kt * (d - old%damage(1))
     new%diss_friction = old%diss_friction + work_fric
-    new%s = s
-    new%sigma = sigma
     new%work = old%work + 0.5_dp * ((old%sigma(1) + sigma(1)) * (s(1) - old%s(1)) + &
                                     (old%sigma(2) + sigma(2)) * (s(2) - old%s(2)))
-  end subroutine cohesive_step
+    new%s = s
+    new%sigma = sigma
+  end subroutine cohesive_friction_step
 
-  !> Report a failure: `new` = `old`, the traction at the start, no tangent.
-  pure subroutine fail(old, new, sigma, tangent, info, code, message)
+  !> A flat RIA of several planes: planes 2..n take plane 1's history (their angles stay).
+  pure subroutine share_first_plane(n, old, new)
+    integer, intent(in) :: n
     type(interlock_state_t), intent(in) :: old
     type(interlock_state_t), intent(inout) :: new
-    real(dp), intent(out) :: sigma(2), tangent(2, 2)
-    type(interlock_info_t), intent(inout) :: info
-    integer, intent(in) :: code
-    character(len=*), intent(in) :: message
-    info%status = code
-    info%message = message
-    info%max_damage_increment = 0.0_dp
-    info%max_angle_increment = 0.0_dp
-    new = old
-    sigma = old%sigma
-    tangent = 0.0_dp
-  end subroutine fail
-
-  !> Sub-increments linear in s. With error control (tol finite) each trial sub-increment is
-  !> taken once whole and once as two halves; their difference estimates the local error, the
-  !> halves are kept when it is within `tol` (or when the sub-increment is already the smallest
-  !> allowed: at a kink the estimate does not shrink with the size), and the next size follows
-  !> from first-order error scaling. Without error control (a failed one-step solve) the size is
-  !> quartered on failure and doubled on success. Sizes are powers of 2, so that the partition
-  !> of the increment does not vary with s except where a decision switches: the chained
-  !> tangent is then the exact derivative of what is computed.
-  pure subroutine substep(mat, solver, s, old, new, tangent, info, tol)
-    type(interlock_material_t), intent(in) :: mat
-    type(interlock_solver_t), intent(in) :: solver
-    real(dp), intent(in) :: s(2), tol
-    type(interlock_state_t), intent(in) :: old
-    type(interlock_state_t), intent(inout) :: new
-    real(dp), intent(inout) :: tangent(2, 2)
-    type(interlock_info_t), intent(inout) :: info
-    type(interlock_state_t) :: cur, full, half1, half2
-    real(dp) :: ds(2), alpha, h, a_end, err, s_end(2), s_mid(2), t_full(2, 2), t_half(2, 2)
-    real(dp) :: jac(4, 2, max_planes), jac1(4, 2, max_planes), jac2(4, 2, max_planes)
-    real(dp) :: stiffness_scale, chain_peak
-    integer :: it1, it2, it3, n_accepted
-    logical :: ok1, ok2, ok3, control
-
-    control = tol < huge(1.0_dp)
-    ds = s - old%s
-    cur = old
-    alpha = 0.0_dp
-    h = 1.0_dp
-    jac = 0.0_dp
-    n_accepted = 0
-    info%attempts = 0
-    ! The largest stiffness the law can show (penalty, or traction over the asperity depth).
-    stiffness_scale = max(mat%kn, mat%kt) + max(mat%sigma0_n, mat%sigma0_t) * mat%inv_h_n
-    chain_peak = 0.0_dp
-    if (.not. control) h = 0.5_dp
-    do while (alpha < 1.0_dp)
-      h = min(h, 1.0_dp - alpha)
-      a_end = alpha + h
-      if (a_end >= 1.0_dp - smallest_fraction) then
-        a_end = 1.0_dp
-        h = 1.0_dp - alpha
-        s_end = s
-      else
-        s_end = old%s + a_end * ds
-      end if
-      s_mid = old%s + (alpha + 0.5_dp * h) * ds
-      info%attempts = info%attempts + 1
-      if (info%attempts > solver%max_substeps) then
-        info%status = status_local_failure
-        write (info%message, '(a,i0,a)') 'substepping needed more than ', solver%max_substeps, &
-          ' sub-increments: retry with a smaller increment'
-        return
-      end if
-      ok1 = .true.
-      it1 = 0
-      if (control) call ria_step(mat, solver, s_end, cur, full, t_full, it1, ok1)
-      call ria_step(mat, solver, s_mid, cur, half1, t_half, it2, ok2, jac, alpha + 0.5_dp * h, jac1)
-      ok3 = .false.
-      it3 = 0
-      if (ok2) ok2 = bounded(jac1)
-      if (ok2) call ria_step(mat, solver, s_end, half1, half2, t_half, it3, ok3, jac1, a_end, jac2)
-      if (ok3) ok3 = bounded(jac2)
-      info%newton_iterations = max(info%newton_iterations, it1, it2, it3)
-      if (.not. (ok1 .and. ok2 .and. ok3)) then
-        h = 0.25_dp * h
-        if (h < smallest_fraction) then
-          info%status = status_local_failure
-          if (ok1 .and. ok2 .and. ok3) then
-            info%message = 'the local wear equation has no solution on any sub-increment: ' // &
-                           'retry with a smaller increment'
-          else
-            info%message = 'the update is unstable on small sub-increments (its derivative ' // &
-                           'grows without bound): use the implicit scheme or a smaller increment'
-          end if
-          return
-        end if
-        cycle
-      end if
-      err = 0.0_dp
-      if (control) err = local_error(mat, full, half2)
-      if (err <= tol .or. h <= smallest_controlled_fraction) then
-        cur = half2
-        jac = jac2
-        tangent = t_half
-        chain_peak = max(chain_peak, maxval(abs(t_half)))
-        alpha = a_end
-        n_accepted = n_accepted + 2
-        if (control) then
-          h = h * min(4.0_dp, max(1.0_dp, 0.9_dp * sqrt(tol / max(err, tiny(1.0_dp)))))
-        else
-          h = 2.0_dp * h
-        end if
-      else
-        h = h * max(0.1_dp, 0.9_dp * sqrt(tol / err))
-      end if
-      h = scale(1.0_dp, exponent(h) - 1)
+    integer :: k
+    do k = 2, n
+      new%beta(k) = new%beta(1)
+      new%damage(k) = new%damage(1)
+      new%sf(k) = new%sf(1)
+      new%zeta(k) = new%zeta(1)
+      new%theta(k) = old%theta(k)
+      new%tauf(k) = new%tauf(1)
     end do
-    if (chain_peak > 1.0e6_dp * stiffness_scale) then
-      ! Far beyond any stiffness of the law: the chain through the sub-increments amplifies
-      ! (and a product of such factors that cancels down to a normal tangent has lost its
-      ! accuracy to round-off).
-      info%status = status_local_failure
-      info%message = 'the update is unstable on small sub-increments (its derivative grows ' // &
-                     'without bound): use the implicit scheme or a smaller increment'
-      return
-    end if
-    new = cur
-    info%substeps = n_accepted
-  end subroutine substep
-
-  !> The chained derivatives stay far from overflow: an update whose derivative exceeds this is
-  !> reported (an explicit wear update on tiny sub-increments can amplify it exponentially).
-  pure logical function bounded(jac)
-    real(dp), intent(in) :: jac(:, :, :)
-    bounded = maxval(abs(jac)) <= 1.0e100_dp
-  end function bounded
-
-  !> Local error estimate between one whole and two half sub-increments: the largest of the
-  !> traction difference (relative to the peak tractions), the damage difference and the
-  !> angle difference [rad].
-  pure real(dp) function local_error(mat, a, b)
-    type(interlock_material_t), intent(in) :: mat
-    type(interlock_state_t), intent(in) :: a, b
-    integer :: n
-    real(dp) :: sref
-    n = mat%n_planes
-    sref = max(mat%sigma0_n, mat%sigma0_t) + maxval(abs(b%sigma))
-    local_error = max(maxval(abs(a%sigma - b%sigma)) / sref, &
-                      maxval(abs(a%damage(1:n) - b%damage(1:n))), &
-                      maxval(abs(a%theta(1:n) - b%theta(1:n))))
-  end function local_error
+  end subroutine share_first_plane
 
 end module interlock_integrate

@@ -62,7 +62,7 @@ contains
     new%stored = 0.0_dp
     if (mat%kernel == kernel_flat) then
       call plane_law(mat, scheme, s, old%beta(1), old%sf(1), old%zeta(1), old%tauf(1), &
-                     old%damage(1), p)
+                     old%damage(1), p, .false.)
       sigma = area * p%sig
       tangent = area * p%k
       call store_plane(p, 1, area, old%theta(1), new)
@@ -86,7 +86,7 @@ contains
           sn = mat%sin0(k)
           sl = [c * s(1) + sn * s(2), -sn * s(1) + c * s(2)]
           call plane_law(mat, scheme, sl, old%beta(k), old%sf(k), old%zeta(k), old%tauf(k), &
-                         old%damage(k), p)
+                         old%damage(k), p, .false.)
         else if (scheme == scheme_implicit) then
           call implicit_wear_plane(mat, solver, k, s, old, p, theta, c, sn, sl, dthds, it, done)
           iterations = max(iterations, it)
@@ -98,7 +98,7 @@ contains
           sn = sin(theta)
           sl = [c * s(1) + sn * s(2), -sn * s(1) + c * s(2)]
           call plane_law(mat, scheme, sl, old%beta(k), old%sf(k), old%zeta(k), old%tauf(k), &
-                         old%damage(k), p)
+                         old%damage(k), p, .false.)
         end if
         gam = mat%gamma_hat(k) * area
         ! R^T sigma_loc and R^T K_loc R.
@@ -191,7 +191,7 @@ contains
     sn = sin(theta)
     sl = [c * s(1) + sn * s(2), -sn * s(1) + c * s(2)]
     call plane_law(mat, scheme_implicit, sl, old%beta(k), old%sf(k), old%zeta(k), old%tauf(k), &
-                   old%damage(k), p)
+                   old%damage(k), p, .true.)
     fp = 1.0_dp - thp * (p%gw(1) * sl(2) - p%gw(2) * sl(1))
   end subroutine wear_evaluate
 
@@ -213,9 +213,10 @@ contains
   end subroutine store_plane
 
   !> Damage, friction and traction of one plane with constant inclination, in its own frame.
-  pure subroutine plane_law(mat, scheme, sl, beta_o, sf_o, zeta_o, tauf_o, dmg_o, p)
+  pure subroutine plane_law(mat, scheme, sl, beta_o, sf_o, zeta_o, tauf_o, dmg_o, p, wear_driver)
     type(interlock_material_t), intent(in) :: mat
     integer, intent(in) :: scheme
+    logical, intent(in) :: wear_driver   !< compute p%gw (only the implicit wear equation uses it)
     real(dp), intent(in) :: sl(2), beta_o, sf_o, zeta_o, tauf_o, dmg_o
     type(plane_law_t), intent(out) :: p
     real(dp) :: an, at, beq, rb, ddb, gd(2), dtau(2), mu_p, tau_trial, sgn, pos_n, neg_n, slip, &
@@ -292,15 +293,19 @@ contains
     ! (interlock_damage:damage_dissipation_increment), the friction part at first order.
     p%wfric = p%dmg * abs(p%tauf) * slip
     ! grad of D |tau_f| slip; d|tau_f| = sign(tau_f) dtau (tau_f = 0 where it is free)
-    p%gw = abs(p%tauf) * slip * gd + p%dmg * slip * sign(1.0_dp, p%tauf) * dtau + &
-           p%dmg * abs(p%tauf) * dslip
+    if (wear_driver) then
+      p%gw = abs(p%tauf) * slip * gd + p%dmg * slip * sign(1.0_dp, p%tauf) * dtau + &
+             p%dmg * abs(p%tauf) * dslip
+    else
+      p%gw = 0.0_dp
+    end if
     if (scheme == scheme_implicit) then
       p%zeta = zeta_o + p%wfric
     else
       p%zeta = zeta_o + dmg_o * abs(tauf_o) * slip
     end if
-    p%psi = 0.5_dp * ((1.0_dp - p%dmg) * (mat%kn * sl(1)**2 + mat%kt * sl(2)**2) + &
-                      p%dmg * (mat%kn * neg_n**2 + p%tauf**2 * mat%inv_kt))
+    ! psi = (1 - D) psi_e + D psi_f = (sig . s_k - D tau_f sf) / 2 (sl(2) - sf = tau_f / K_t).
+    p%psi = 0.5_dp * (p%sig(1) * sl(1) + p%sig(2) * sl(2) - p%dmg * p%tauf * p%sf)
     p%wdmg = 0.0_dp
     if (p%dmg > dmg_o) p%wdmg = mat%decohesion_energy_factor * &
         (min(max(p%beta, 1.0_dp), mat%beta_break) - min(max(beta_o, 1.0_dp), mat%beta_break)) &

@@ -126,6 +126,7 @@ contains
 
     stat = status_bad_input
     mat%prepared = .false.
+    mat%kernel = kernel_general   ! a kernel other than the general one implies a prepared material
     call check_property(prop_sigma0_n, mat%sigma0_n, ok, message); if (.not. ok) return
     call check_property(prop_sigma0_t, mat%sigma0_t, ok, message); if (.not. ok) return
     call check_property(prop_gc, mat%gc, ok, message); if (.not. ok) return

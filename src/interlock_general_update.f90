@@ -1,0 +1,248 @@
+!> The general update of one material point over one increment (SPEC section 5): the argument
+!> checks, the specialised kernel of the material's effect set or the general path, optionally
+!> with error-controlled substepping, and the exact algorithmic tangent of what was computed. A
+!> failed local solve is retried on sub-increments before it is reported. interlock_update
+!> (interlock_integrate) calls it for everything but the flat-plane laws it runs itself; it is a
+!> module of its own so that the compiler does not inline it there, where its size would make
+!> every call of the small laws pay for saving registers.
+module interlock_general_update
+  use interlock_kinds, only: dp
+  use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, &
+      scheme_explicit, scheme_implicit, kernel_general
+  use interlock_state, only: interlock_state_t
+  use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
+  use interlock_ria, only: ria_step
+  use interlock_kernels, only: kernel_step
+  implicit none
+  private
+  public :: general_update
+
+  real(dp), parameter :: smallest_fraction = 1.0e-12_dp
+  !> Error control accepts a sub-increment of this fraction of the increment whatever its
+  !> estimate (2^-12: at most ~4096 sub-increments to pass a kink).
+  real(dp), parameter :: smallest_controlled_fraction = 2.0_dp**(-12)
+
+contains
+
+  !> interlock_update (its contract) for any material and solver.
+  pure subroutine general_update(mat, solver, s, old, new, sigma, tangent, info)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    real(dp), intent(in) :: s(2)
+    type(interlock_state_t), intent(in) :: old
+    type(interlock_state_t), intent(inout) :: new
+    real(dp), intent(out) :: sigma(2), tangent(2, 2)
+    type(interlock_info_t), intent(inout) :: info
+    logical :: ok, done
+    integer :: k
+
+    if (info%status /= status_ok) info%message = ''
+    info%status = status_ok
+    info%newton_iterations = 0
+    info%substeps = 1
+    info%attempts = 1
+    info%max_angle_increment = 0.0_dp
+    if (.not. mat%prepared) then
+      call fail(old, new, sigma, tangent, info, status_bad_input, &
+                'the material has not been prepared (call interlock_material_prepare)')
+      return
+    end if
+    if (solver%scheme /= scheme_explicit .and. solver%scheme /= scheme_implicit) then
+      call fail(old, new, sigma, tangent, info, status_bad_input, &
+                'unknown integration scheme: admissible 1 (explicit) or 2 (implicit)')
+      return
+    end if
+    ! abs(x) <= huge is false for NaN and both infinities.
+    if (.not. (abs(s(1)) <= huge(1.0_dp) .and. abs(s(2)) <= huge(1.0_dp))) then
+      call fail(old, new, sigma, tangent, info, status_bad_input, &
+                'the relative displacement is not a finite number')
+      return
+    end if
+
+    done = .false.
+    tangent = 0.0_dp
+    if (solver%substep_tol > 0.0_dp) then
+      call substep(mat, solver, s, old, new, tangent, info, solver%substep_tol)
+    else
+      ! The specialised kernel of the material's effect set, when it applies.
+      if (mat%kernel /= kernel_general) call kernel_step(mat, solver, s, old, new, tangent, &
+                                                         done, info%newton_iterations)
+      if (.not. done) then
+        call ria_step(mat, solver, s, old, new, tangent, info%newton_iterations, ok)
+        if (.not. ok) then
+          ! The one-step solve failed: retry on sub-increments, split only as failures require.
+          call substep(mat, solver, s, old, new, tangent, info, huge(1.0_dp))
+        end if
+      end if
+    end if
+    if (info%status /= status_ok) then
+      call fail(old, new, sigma, tangent, info, info%status, info%message)
+      return
+    end if
+    sigma = new%sigma
+    ! A NaN or an infinity in any entry makes the sum NaN or infinite (so does a sum beyond
+    ! huge, which no traction or stiffness of the law comes near).
+    if (.not. abs(sigma(1)) + abs(sigma(2)) + abs(tangent(1, 1)) + abs(tangent(2, 1)) + &
+              abs(tangent(1, 2)) + abs(tangent(2, 2)) <= huge(1.0_dp)) then
+      call fail(old, new, sigma, tangent, info, status_local_failure, &
+                'the traction or tangent is not finite: retry with a smaller increment')
+      return
+    end if
+    info%max_damage_increment = new%damage(1) - old%damage(1)
+    info%max_angle_increment = abs(new%theta(1) - old%theta(1))
+    do k = 2, mat%n_planes
+      info%max_damage_increment = max(info%max_damage_increment, new%damage(k) - old%damage(k))
+      info%max_angle_increment = max(info%max_angle_increment, abs(new%theta(k) - old%theta(k)))
+    end do
+  end subroutine general_update
+
+  !> Report a failure: `new` = `old`, the traction at the start, no tangent.
+  pure subroutine fail(old, new, sigma, tangent, info, code, message)
+    type(interlock_state_t), intent(in) :: old
+    type(interlock_state_t), intent(inout) :: new
+    real(dp), intent(out) :: sigma(2), tangent(2, 2)
+    type(interlock_info_t), intent(inout) :: info
+    integer, intent(in) :: code
+    character(len=*), intent(in) :: message
+    info%status = code
+    info%message = message
+    info%max_damage_increment = 0.0_dp
+    info%max_angle_increment = 0.0_dp
+    new = old
+    sigma = old%sigma
+    tangent = 0.0_dp
+  end subroutine fail
+
+  !> Sub-increments linear in s. With error control (tol finite) each trial sub-increment is
+  !> taken once whole and once as two halves; their difference estimates the local error, the
+  !> halves are kept when it is within `tol` (or when the sub-increment is already the smallest
+  !> allowed: at a kink the estimate does not shrink with the size), and the next size follows
+  !> from first-order error scaling. Without error control (a failed one-step solve) the size is
+  !> quartered on failure and doubled on success. Sizes are powers of 2, so that the partition
+  !> of the increment does not vary with s except where a decision switches: the chained
+  !> tangent is then the exact derivative of what is computed.
+  pure subroutine substep(mat, solver, s, old, new, tangent, info, tol)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    real(dp), intent(in) :: s(2), tol
+    type(interlock_state_t), intent(in) :: old
+    type(interlock_state_t), intent(inout) :: new
+    real(dp), intent(inout) :: tangent(2, 2)
+    type(interlock_info_t), intent(inout) :: info
+    type(interlock_state_t) :: cur, full, half1, half2
+    real(dp) :: ds(2), alpha, h, a_end, err, s_end(2), s_mid(2), t_full(2, 2), t_half(2, 2)
+    real(dp) :: jac(4, 2, max_planes), jac1(4, 2, max_planes), jac2(4, 2, max_planes)
+    real(dp) :: stiffness_scale, chain_peak
+    integer :: it1, it2, it3, n_accepted
+    logical :: ok1, ok2, ok3, control
+
+    control = tol < huge(1.0_dp)
+    ds = s - old%s
+    cur = old
+    alpha = 0.0_dp
+    h = 1.0_dp
+    jac = 0.0_dp
+    n_accepted = 0
+    info%attempts = 0
+    ! The largest stiffness the law can show (penalty, or traction over the asperity depth).
+    stiffness_scale = max(mat%kn, mat%kt) + max(mat%sigma0_n, mat%sigma0_t) * mat%inv_h_n
+    chain_peak = 0.0_dp
+    if (.not. control) h = 0.5_dp
+    do while (alpha < 1.0_dp)
+      h = min(h, 1.0_dp - alpha)
+      a_end = alpha + h
+      if (a_end >= 1.0_dp - smallest_fraction) then
+        a_end = 1.0_dp
+        h = 1.0_dp - alpha
+        s_end = s
+      else
+        s_end = old%s + a_end * ds
+      end if
+      s_mid = old%s + (alpha + 0.5_dp * h) * ds
+      info%attempts = info%attempts + 1
+      if (info%attempts > solver%max_substeps) then
+        info%status = status_local_failure
+        write (info%message, '(a,i0,a)') 'substepping needed more than ', solver%max_substeps, &
+          ' sub-increments: retry with a smaller increment'
+        return
+      end if
+      ok1 = .true.
+      it1 = 0
+      if (control) call ria_step(mat, solver, s_end, cur, full, t_full, it1, ok1)
+      call ria_step(mat, solver, s_mid, cur, half1, t_half, it2, ok2, jac, alpha + 0.5_dp * h, jac1)
+      ok3 = .false.
+      it3 = 0
+      if (ok2) ok2 = bounded(jac1)
+      if (ok2) call ria_step(mat, solver, s_end, half1, half2, t_half, it3, ok3, jac1, a_end, jac2)
+      if (ok3) ok3 = bounded(jac2)
+      info%newton_iterations = max(info%newton_iterations, it1, it2, it3)
+      if (.not. (ok1 .and. ok2 .and. ok3)) then
+        h = 0.25_dp * h
+        if (h < smallest_fraction) then
+          info%status = status_local_failure
+          if (ok1 .and. ok2 .and. ok3) then
+            info%message = 'the local wear equation has no solution on any sub-increment: ' // &
+                           'retry with a smaller increment'
+          else
+            info%message = 'the update is unstable on small sub-increments (its derivative ' // &
+                           'grows without bound): use the implicit scheme or a smaller increment'
+          end if
+          return
+        end if
+        cycle
+      end if
+      err = 0.0_dp
+      if (control) err = local_error(mat, full, half2)
+      if (err <= tol .or. h <= smallest_controlled_fraction) then
+        cur = half2
+        jac = jac2
+        tangent = t_half
+        chain_peak = max(chain_peak, maxval(abs(t_half)))
+        alpha = a_end
+        n_accepted = n_accepted + 2
+        if (control) then
+          h = h * min(4.0_dp, max(1.0_dp, 0.9_dp * sqrt(tol / max(err, tiny(1.0_dp)))))
+        else
+          h = 2.0_dp * h
+        end if
+      else
+        h = h * max(0.1_dp, 0.9_dp * sqrt(tol / err))
+      end if
+      h = scale(1.0_dp, exponent(h) - 1)
+    end do
+    if (chain_peak > 1.0e6_dp * stiffness_scale) then
+      ! Far beyond any stiffness of the law: the chain through the sub-increments amplifies
+      ! (and a product of such factors that cancels down to a normal tangent has lost its
+      ! accuracy to round-off).
+      info%status = status_local_failure
+      info%message = 'the update is unstable on small sub-increments (its derivative grows ' // &
+                     'without bound): use the implicit scheme or a smaller increment'
+      return
+    end if
+    new = cur
+    info%substeps = n_accepted
+  end subroutine substep
+
+  !> The chained derivatives stay far from overflow: an update whose derivative exceeds this is
+  !> reported (an explicit wear update on tiny sub-increments can amplify it exponentially).
+  pure logical function bounded(jac)
+    real(dp), intent(in) :: jac(:, :, :)
+    bounded = maxval(abs(jac)) <= 1.0e100_dp
+  end function bounded
+
+  !> Local error estimate between one whole and two half sub-increments: the largest of the
+  !> traction difference (relative to the peak tractions), the damage difference and the
+  !> angle difference [rad].
+  pure real(dp) function local_error(mat, a, b)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_state_t), intent(in) :: a, b
+    integer :: n
+    real(dp) :: sref
+    n = mat%n_planes
+    sref = max(mat%sigma0_n, mat%sigma0_t) + maxval(abs(b%sigma))
+    local_error = max(maxval(abs(a%sigma - b%sigma)) / sref, &
+                      maxval(abs(a%damage(1:n) - b%damage(1:n))), &
+                      maxval(abs(a%theta(1:n) - b%theta(1:n))))
+  end function local_error
+
+end module interlock_general_update
