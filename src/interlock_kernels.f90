@@ -1,6 +1,6 @@
 !> Specialised one-step updates, chosen once when the material is prepared, so that a scene
 !> pays only for the effects it uses (SPEC section 7; one flat plane without finite depth,
-!> the Alfano-Sacco interface, is inlined in interlock_integrate:cohesive_step):
+!> the bilinear law and the Alfano-Sacco interface, runs in interlock_integrate itself):
 !> without wear the inclinations are constant (sines and cosines computed once, at set-up),
 !> one flat plane needs no rotation at all, and the local law is written with scalar
 !> derivatives instead of the general path's gradient vectors (which substepping needs). The
