@@ -9,7 +9,7 @@ module test_kernels
   use test_core_support, only: rng_t, rng_uniform, prepare_or_fail
   implicit none
   private
-  public :: test_flat_damage_only, test_flat_friction, test_flat_depth, test_ria_fixed_angles, &
+  public :: test_flat_damage_only, test_flat_ria_no_friction, test_flat_friction, test_flat_depth, test_ria_fixed_angles, &
             test_ria_prefractured, test_general_ria_two_planes, test_kernel_selection, &
             test_ria_explicit_wear, test_theta_zero_is_single_plane
 
@@ -112,6 +112,19 @@ contains
     call prepare_or_fail(mat)
     call compare_paths(mat, kernel_cohesive, 'flat, damage only')
   end subroutine test_flat_damage_only
+
+  !> The law without friction (interlock_integrate:decohesion_step) on a flat RIA of three
+  !> planes sharing one history, intact and pre-fractured (no damage evolution).
+  subroutine test_flat_ria_no_friction()
+    type(interlock_material_t) :: mat
+    call base_material(mat, 0.0_dp, huge(1.0_dp))
+    call interlock_paper_ria(mat, 0.0_dp, 0.0_dp, 20.0_dp)
+    call prepare_or_fail(mat)
+    call compare_paths(mat, kernel_cohesive, 'flat RIA, damage, mu = 0')
+    mat%prefractured = .true.
+    call prepare_or_fail(mat)
+    call compare_paths(mat, kernel_cohesive, 'flat RIA, pre-fractured, mu = 0')
+  end subroutine test_flat_ria_no_friction
 
   subroutine test_flat_friction()
     type(interlock_material_t) :: mat
@@ -232,6 +245,7 @@ program test_kernels_main
   use test_kernels
   implicit none
   call run_case('flat, damage only', test_flat_damage_only)
+  call run_case('flat RIA without friction, intact and pre-fractured', test_flat_ria_no_friction)
   call run_case('flat RIA, damage + friction', test_flat_friction)
   call run_case('flat, damage + friction + depth', test_flat_depth)
   call run_case('RIA without wear', test_ria_fixed_angles)
