@@ -11,7 +11,7 @@ module interlock_deck
   use interlock, only: dp, deg_to_rad, pi, max_planes, n_effects, &
       interlock_material_t, interlock_solver_t, interlock_state_t, interlock_state_init, &
       interlock_material_prepare, interlock_paper_ria, scheme_explicit, scheme_implicit, &
-      properties, property_index, check_property, format_range, format_integer, &
+      properties, property_index, check_property, format_range, format_integer, format_real, &
       prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
       prop_thetaf, prop_zeta0, prop_prefractured, prop_scheme, prop_substep_tol, prop_max_dd, &
       prop_max_dtheta, prop_effect_damage, prop_effect_wear, is_nan_value, same_value, &
@@ -374,6 +374,7 @@ contains
       if (len_trim(why) == 0) call apply_initial(deck%init_zeta, state%zeta, 'zeta', why)
       if (len_trim(why) == 0) call apply_initial(deck%init_theta, state%theta, 'theta', why)
       if (len_trim(why) == 0) call apply_initial(deck%init_tauf, state%tauf, 'friction_traction', why)
+      if (len_trim(why) == 0 .and. .not. mat%use_friction) call no_friction_traction(why)
       if (len_trim(why) > 0) then
         message = deck%path // ': &initial_state: ' // trim(case_text(deck, icase)) // trim(why)
         stat = status_bad_input
@@ -403,6 +404,22 @@ contains
       end if
       field(1:n) = given(1:n)
     end subroutine apply_initial
+
+    !> Without friction (mu = 0, or the effect off) an admissible state carries no friction
+    !> traction (|tau_f| <= mu p = 0); the laws rely on it.
+    subroutine no_friction_traction(why)
+      character(len=*), intent(out) :: why
+      integer :: k
+      why = ''
+      do k = 1, n
+        if (abs(state%tauf(k)) > 0.0_dp) then
+          why = 'friction_traction(' // format_integer(k) // ') = ' // &
+                format_real(state%tauf(k)) // ' is inadmissible: without friction (mu = 0 ' // &
+                'or friction switched off) admissible friction_traction = 0'
+          return
+        end if
+      end do
+    end subroutine no_friction_traction
 
   end subroutine deck_case
 
