@@ -10,6 +10,7 @@ module interlock_integrate
   use interlock_state, only: interlock_state_t
   use interlock_status, only: interlock_info_t, status_ok
   use interlock_general_update, only: general_update
+  use interlock_kernels, only: share_first_plane
   implicit none
   private
   public :: interlock_update
@@ -59,7 +60,8 @@ contains
   !> decohesion energy and the work. Every plane of a flat RIA shares the history. Written for
   !> the fewest operations (it is the law most FE runs of an intact interface call): divisions
   !> only while damage grows, no friction return, stored energy = sigma . s / 2 (no friction
-  !> traction). Agrees with the general path to round-off (core_kernels).
+  !> traction). Agrees with the general path to round-off (core_kernels). Why its blocks are
+  !> written out rather than shared with the kernels: interlock_kernels:fixed_angle_plane.
   pure subroutine decohesion_step(mat, s, old, new, sigma, tangent)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: s(2)
@@ -221,21 +223,5 @@ contains
     new%s = s
     new%sigma = sigma
   end subroutine cohesive_friction_step
-
-  !> A flat RIA of several planes: planes 2..n take plane 1's history (their angles stay).
-  pure subroutine share_first_plane(n, old, new)
-    integer, intent(in) :: n
-    type(interlock_state_t), intent(in) :: old
-    type(interlock_state_t), intent(inout) :: new
-    integer :: k
-    do k = 2, n
-      new%beta(k) = new%beta(1)
-      new%damage(k) = new%damage(1)
-      new%sf(k) = new%sf(1)
-      new%zeta(k) = new%zeta(1)
-      new%theta(k) = old%theta(k)
-      new%tauf(k) = new%tauf(1)
-    end do
-  end subroutine share_first_plane
 
 end module interlock_integrate

@@ -18,7 +18,7 @@ module interlock_kernels
   use interlock_geometry, only: contact_area
   implicit none
   private
-  public :: kernel_step
+  public :: kernel_step, share_first_plane
 
   !> The law of one microplane in its own frame over one step, with d(traction)/d(s_kn, s_kt).
   type :: plane_law_t
@@ -48,7 +48,6 @@ contains
     real(dp) :: area, darea, sigma(2), sl(2), c, sn, gam, kg(2, 2), sg(2), theta, slope, &
                 dthds(2), dsig_dth(2)
     integer :: k, scheme, it
-    logical :: coupled
 
     scheme = solver%scheme
     iterations = 0
@@ -60,54 +59,40 @@ contains
     new%diss_damage = old%diss_damage
     new%diss_friction = old%diss_friction
     new%stored = 0.0_dp
+    sigma = 0.0_dp
+    tangent = 0.0_dp
     if (mat%kernel == kernel_flat) then
-      call plane_law(mat, scheme, s, old%beta(1), old%sf(1), old%zeta(1), old%tauf(1), &
-                     old%damage(1), p, .false.)
-      sigma = area * p%sig
-      tangent = area * p%k
-      call store_plane(p, 1, area, old%theta(1), new)
-      do k = 2, mat%n_planes
-        new%beta(k) = p%beta
-        new%damage(k) = p%dmg
-        new%sf(k) = p%sf
-        new%zeta(k) = p%zeta
-        new%theta(k) = old%theta(k)
-        new%tauf(k) = p%tauf
-      end do
+      ! Every plane flat: one computed, in the global frame, the others share its history.
+      call fixed_angle_plane(mat, scheme, 1, 1.0_dp, 0.0_dp, area, s, old, new, sigma, tangent)
+      if (mat%n_planes > 1) call share_first_plane(mat%n_planes, old, new)
     else
-      sigma = 0.0_dp
-      tangent = 0.0_dp
       do k = 1, mat%n_planes
-        theta = old%theta(k)
-        dthds = 0.0_dp
-        coupled = .false.
         if (.not. mat%plane_wears(k)) then
-          c = mat%cos0(k)
-          sn = mat%sin0(k)
-          sl = [c * s(1) + sn * s(2), -sn * s(1) + c * s(2)]
-          call plane_law(mat, scheme, sl, old%beta(k), old%sf(k), old%zeta(k), old%tauf(k), &
-                         old%damage(k), p, .false.)
-        else if (scheme == scheme_implicit) then
+          call fixed_angle_plane(mat, scheme, k, mat%cos0(k), mat%sin0(k), &
+                                 mat%gamma_hat(k) * area, s, old, new, sigma, tangent)
+        else if (scheme /= scheme_implicit) then
+          ! Explicit (eq. 25): the angle frozen at its stored value within the step.
+          theta = old%theta(k)
+          call fixed_angle_plane(mat, scheme, k, cos(theta), sin(theta), &
+                                 mat%gamma_hat(k) * area, s, old, new, sigma, tangent)
+          ! Explicit wear (eq. 22, 25): the angle for the next step.
+          if (new%zeta(k) > old%zeta(k)) then
+            call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), new%zeta(k), &
+                            theta, slope)
+            new%theta(k) = theta
+          end if
+        else
+          theta = old%theta(k)
           call implicit_wear_plane(mat, solver, k, s, old, p, theta, c, sn, sl, dthds, it, done)
           iterations = max(iterations, it)
           if (.not. done) return
-          coupled = .true.
-        else
-          ! Explicit (eq. 25): the angle frozen at its stored value within the step.
-          c = cos(theta)
-          sn = sin(theta)
-          sl = [c * s(1) + sn * s(2), -sn * s(1) + c * s(2)]
-          call plane_law(mat, scheme, sl, old%beta(k), old%sf(k), old%zeta(k), old%tauf(k), &
-                         old%damage(k), p, .false.)
-        end if
-        gam = mat%gamma_hat(k) * area
-        ! R^T sigma_loc and R^T K_loc R.
-        sg = [c * p%sig(1) - sn * p%sig(2), sn * p%sig(1) + c * p%sig(2)]
-        kg(1, 1) = c * (c * p%k(1, 1) - sn * p%k(1, 2)) - sn * (c * p%k(2, 1) - sn * p%k(2, 2))
-        kg(1, 2) = c * (sn * p%k(1, 1) + c * p%k(1, 2)) - sn * (sn * p%k(2, 1) + c * p%k(2, 2))
-        kg(2, 1) = sn * (c * p%k(1, 1) - sn * p%k(1, 2)) + c * (c * p%k(2, 1) - sn * p%k(2, 2))
-        kg(2, 2) = sn * (sn * p%k(1, 1) + c * p%k(1, 2)) + c * (sn * p%k(2, 1) + c * p%k(2, 2))
-        if (coupled) then
+          gam = mat%gamma_hat(k) * area
+          ! R^T sigma_loc and R^T K_loc R.
+          sg = [c * p%sig(1) - sn * p%sig(2), sn * p%sig(1) + c * p%sig(2)]
+          kg(1, 1) = c * (c * p%k(1, 1) - sn * p%k(1, 2)) - sn * (c * p%k(2, 1) - sn * p%k(2, 2))
+          kg(1, 2) = c * (sn * p%k(1, 1) + c * p%k(1, 2)) - sn * (sn * p%k(2, 1) + c * p%k(2, 2))
+          kg(2, 1) = sn * (c * p%k(1, 1) - sn * p%k(1, 2)) + c * (c * p%k(2, 1) - sn * p%k(2, 2))
+          kg(2, 2) = sn * (sn * p%k(1, 1) + c * p%k(1, 2)) + c * (sn * p%k(2, 1) + c * p%k(2, 2))
           ! Implicit wear: theta depends on s through zeta. d sigma_k / d theta =
           ! d(R^T)/d theta sigma_loc + R^T K_loc d s_loc/d theta, d s_loc/d theta = (s_kt, -s_kn).
           dsig_dth = [-sn * p%sig(1) - c * p%sig(2), c * p%sig(1) - sn * p%sig(2)] + &
@@ -117,28 +102,141 @@ contains
                       c * (p%k(2, 1) * sl(2) - p%k(2, 2) * sl(1))]
           kg(:, 1) = kg(:, 1) + dsig_dth * dthds(1)
           kg(:, 2) = kg(:, 2) + dsig_dth * dthds(2)
+          sigma = sigma + gam * sg
+          tangent = tangent + gam * kg
+          call store_plane(p, k, gam, theta, new)
         end if
-        sigma = sigma + gam * sg
-        tangent = tangent + gam * kg
-        p%sig = sg
-        ! Explicit wear (eq. 22, 25): the angle for the next step.
-        if (scheme /= scheme_implicit .and. mat%plane_wears(k) .and. p%zeta > old%zeta(k)) &
-          call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), p%zeta, theta, &
-                          slope)
-        call store_plane(p, k, gam, theta, new)
       end do
-      if (mat%use_depth) then
-        ! d A_g / d s_N times the traction at unit area.
-        tangent(:, 1) = tangent(:, 1) + darea * sigma / area
-      end if
     end if
-    if (mat%kernel == kernel_flat .and. mat%use_depth) then
-      tangent(:, 1) = tangent(:, 1) + darea * p%sig
-    end if
+    ! d A_g / d s_N times the traction at unit area.
+    if (mat%use_depth) tangent(:, 1) = tangent(:, 1) + darea * sigma / area
     new%s = s
     new%sigma = sigma
     new%work = old%work + 0.5_dp * dot_product(old%sigma + sigma, s - old%s)
   end subroutine kernel_step
+
+  !> One plane whose angle is fixed within the step (constant, or frozen by the explicit
+  !> scheme) with frame (c, sn) and weight w (area fraction x contact area): the law of
+  !> plane_law written out with scalar derivatives and no intermediate record, its traction and
+  !> tangent rotated to the global frame and added (R^T sigma_k w, R^T K_k R w), its end state
+  !> into `new` (angle unchanged) and its share of the energies. The plane that most scenes
+  !> are made of, so it is written for the fewest operations. The damage and friction blocks
+  !> stand here, in plane_law and in the flat-plane laws of interlock_integrate on purpose:
+  !> gfortran -O2 does not inline a procedure of their size that is called from several
+  !> places, and calls in these paths cost much of an update (interlock-bench, with the damage
+  !> growth and this plane as calls from the flat-plane laws: damage only 7.9 -> 9.2 ns,
+  !> damage + friction 10.5 -> 19 ns). core_kernels holds all of them to the general path.
+  pure subroutine fixed_angle_plane(mat, scheme, k, c, sn, w, s, old, new, sigma, tangent)
+    type(interlock_material_t), intent(in) :: mat
+    integer, intent(in) :: scheme, k
+    real(dp), intent(in) :: c, sn, w, s(2)
+    type(interlock_state_t), intent(in) :: old
+    type(interlock_state_t), intent(inout) :: new
+    real(dp), intent(inout) :: sigma(2), tangent(2, 2)
+    real(dp) :: sl1, sl2, pos, an, at, beq, beta, d, rb, ddb, gd1, gd2, mu_p, tau_trial, sf, &
+                tauf, dtauf1, dtauf2, slip, kpos, kts, ls1, ls2, k11, k12, k21, k22, t11, t12, &
+                t21, t22, wc, ws, wfric, wdmg
+
+    sl1 = c * s(1) + sn * s(2)
+    sl2 = -sn * s(1) + c * s(2)
+    ! Damage (interlock_damage), divisions only while it grows.
+    pos = max(0.0_dp, sl1)
+    beta = old%beta(k)
+    d = old%damage(k)
+    gd1 = 0.0_dp
+    gd2 = 0.0_dp
+    if (mat%use_damage) then
+      an = pos * mat%inv_s0n
+      at = sl2 * mat%inv_s0t
+      beq = sqrt(an * an + at * at)
+      if (beq > beta) then
+        beta = beq
+        if (beq >= mat%beta_break) then
+          d = 1.0_dp
+        else if (beq > 1.0_dp) then
+          d = (beq - 1.0_dp) / (mat%eta * beq)
+          rb = 1.0_dp / beq
+          ddb = mat%inv_eta * rb * rb * rb
+          gd1 = ddb * an * mat%inv_s0n
+          gd2 = ddb * at * mat%inv_s0t
+        else
+          d = 0.0_dp
+        end if
+      end if
+    end if
+    ! Friction return (interlock_friction).
+    mu_p = 0.0_dp
+    if (mat%use_friction) mu_p = -mat%mu_eff * mat%kn * min(0.0_dp, sl1)
+    if (mu_p > 0.0_dp) then
+      tau_trial = mat%kt * (sl2 - old%sf(k))
+      if (abs(tau_trial) <= mu_p) then
+        sf = old%sf(k)
+        tauf = tau_trial
+        dtauf1 = 0.0_dp
+        dtauf2 = mat%kt
+        slip = 0.0_dp
+      else
+        tauf = sign(mu_p, tau_trial)
+        sf = sl2 - tauf * mat%inv_kt
+        dtauf1 = -sign(mat%mu_eff * mat%kn, tau_trial)
+        dtauf2 = 0.0_dp
+        slip = (abs(tau_trial) - mu_p) * mat%inv_kt
+      end if
+    else
+      sf = sl2
+      tauf = 0.0_dp
+      dtauf1 = 0.0_dp
+      dtauf2 = 0.0_dp
+      slip = abs(sf - old%sf(k))
+    end if
+    ! Traction and tangent in the plane's frame (interlock_microplane).
+    kpos = mat%kn * pos
+    kts = mat%kt * sl2
+    ls1 = mat%kn * sl1 - d * kpos
+    ls2 = (1.0_dp - d) * kts + d * tauf
+    if (sl1 > 0.0_dp) then
+      k11 = (1.0_dp - d) * mat%kn - kpos * gd1
+    else
+      k11 = mat%kn
+    end if
+    k12 = -kpos * gd2
+    k21 = d * dtauf1 + (tauf - kts) * gd1
+    k22 = (1.0_dp - d) * mat%kt + d * dtauf2 + (tauf - kts) * gd2
+    ! To the global frame, weighted: w R^T sigma_k and w R^T (K_k R).
+    wc = w * c
+    ws = w * sn
+    sigma(1) = sigma(1) + (wc * ls1 - ws * ls2)
+    sigma(2) = sigma(2) + (ws * ls1 + wc * ls2)
+    t11 = k11 * c - k12 * sn
+    t12 = k11 * sn + k12 * c
+    t21 = k21 * c - k22 * sn
+    t22 = k21 * sn + k22 * c
+    tangent(1, 1) = tangent(1, 1) + (wc * t11 - ws * t21)
+    tangent(1, 2) = tangent(1, 2) + (wc * t12 - ws * t22)
+    tangent(2, 1) = tangent(2, 1) + (ws * t11 + wc * t21)
+    tangent(2, 2) = tangent(2, 2) + (ws * t12 + wc * t22)
+    ! Frictional work (decision D4), the wear driver of each scheme, the energies (the
+    ! decohesion part of Y dD exactly, interlock_damage:damage_dissipation_increment).
+    wfric = d * abs(tauf) * slip
+    if (scheme == scheme_implicit) then
+      new%zeta(k) = old%zeta(k) + wfric
+    else
+      new%zeta(k) = old%zeta(k) + old%damage(k) * abs(old%tauf(k)) * slip
+    end if
+    wdmg = 0.0_dp
+    if (d > old%damage(k)) wdmg = mat%decohesion_energy_factor * &
+        (min(max(beta, 1.0_dp), mat%beta_break) - min(max(old%beta(k), 1.0_dp), mat%beta_break)) &
+        - 0.5_dp * tauf**2 * mat%inv_kt * (d - old%damage(k))
+    new%diss_damage = new%diss_damage + w * wdmg
+    new%diss_friction = new%diss_friction + w * wfric
+    ! psi = (1 - D) psi_e + D psi_f = (sigma_k . s_k - D tau_f sf) / 2.
+    new%stored = new%stored + w * 0.5_dp * (ls1 * sl1 + ls2 * sl2 - d * tauf * sf)
+    new%beta(k) = beta
+    new%damage(k) = d
+    new%sf(k) = sf
+    new%theta(k) = old%theta(k)
+    new%tauf(k) = tauf
+  end subroutine fixed_angle_plane
 
   !> A wearing plane with the implicit scheme (interlock_wear: the backward-Euler wear equation
   !> solved by the safeguarded Newton iteration), in its own frame at the root's angle, and
@@ -190,8 +288,7 @@ contains
     c = cos(theta)
     sn = sin(theta)
     sl = [c * s(1) + sn * s(2), -sn * s(1) + c * s(2)]
-    call plane_law(mat, scheme_implicit, sl, old%beta(k), old%sf(k), old%zeta(k), old%tauf(k), &
-                   old%damage(k), p, .true.)
+    call plane_law(mat, sl, old%beta(k), old%sf(k), old%zeta(k), old%damage(k), p)
     fp = 1.0_dp - thp * (p%gw(1) * sl(2) - p%gw(2) * sl(1))
   end subroutine wear_evaluate
 
@@ -212,12 +309,11 @@ contains
     new%stored = new%stored + g * p%psi
   end subroutine store_plane
 
-  !> Damage, friction and traction of one plane with constant inclination, in its own frame.
-  pure subroutine plane_law(mat, scheme, sl, beta_o, sf_o, zeta_o, tauf_o, dmg_o, p, wear_driver)
+  !> Damage, friction and traction of one plane in its own frame at a trial angle of the
+  !> implicit wear equation, with the gradient of the frictional work (the wear driver).
+  pure subroutine plane_law(mat, sl, beta_o, sf_o, zeta_o, dmg_o, p)
     type(interlock_material_t), intent(in) :: mat
-    integer, intent(in) :: scheme
-    logical, intent(in) :: wear_driver   !< compute p%gw (only the implicit wear equation uses it)
-    real(dp), intent(in) :: sl(2), beta_o, sf_o, zeta_o, tauf_o, dmg_o
+    real(dp), intent(in) :: sl(2), beta_o, sf_o, zeta_o, dmg_o
     type(plane_law_t), intent(out) :: p
     real(dp) :: an, at, beq, rb, ddb, gd(2), dtau(2), mu_p, tau_trial, sgn, pos_n, neg_n, slip, &
                 dslip(2)
@@ -293,17 +389,9 @@ contains
     ! (interlock_damage:damage_dissipation_increment), the friction part at first order.
     p%wfric = p%dmg * abs(p%tauf) * slip
     ! grad of D |tau_f| slip; d|tau_f| = sign(tau_f) dtau (tau_f = 0 where it is free)
-    if (wear_driver) then
-      p%gw = abs(p%tauf) * slip * gd + p%dmg * slip * sign(1.0_dp, p%tauf) * dtau + &
-             p%dmg * abs(p%tauf) * dslip
-    else
-      p%gw = 0.0_dp
-    end if
-    if (scheme == scheme_implicit) then
-      p%zeta = zeta_o + p%wfric
-    else
-      p%zeta = zeta_o + dmg_o * abs(tauf_o) * slip
-    end if
+    p%gw = abs(p%tauf) * slip * gd + p%dmg * slip * sign(1.0_dp, p%tauf) * dtau + &
+           p%dmg * abs(p%tauf) * dslip
+    p%zeta = zeta_o + p%wfric
     ! psi = (1 - D) psi_e + D psi_f = (sig . s_k - D tau_f sf) / 2 (sl(2) - sf = tau_f / K_t).
     p%psi = 0.5_dp * (p%sig(1) * sl(1) + p%sig(2) * sl(2) - p%dmg * p%tauf * p%sf)
     p%wdmg = 0.0_dp
@@ -311,5 +399,21 @@ contains
         (min(max(p%beta, 1.0_dp), mat%beta_break) - min(max(beta_o, 1.0_dp), mat%beta_break)) &
         - 0.5_dp * p%tauf**2 * mat%inv_kt * (p%dmg - dmg_o)
   end subroutine plane_law
+
+  !> A flat RIA of several planes: planes 2..n take plane 1's history (their angles stay).
+  pure subroutine share_first_plane(n, old, new)
+    integer, intent(in) :: n
+    type(interlock_state_t), intent(in) :: old
+    type(interlock_state_t), intent(inout) :: new
+    integer :: k
+    do k = 2, n
+      new%beta(k) = new%beta(1)
+      new%damage(k) = new%damage(1)
+      new%sf(k) = new%sf(1)
+      new%zeta(k) = new%zeta(1)
+      new%theta(k) = old%theta(k)
+      new%tauf(k) = new%tauf(1)
+    end do
+  end subroutine share_first_plane
 
 end module interlock_kernels
