@@ -24,7 +24,9 @@ module interlock_general_update
 
 contains
 
-  !> interlock_update (its contract) for any material and solver.
+  !> interlock_update (its contract) for any material and solver. `info` comes reset by
+  !> interlock_update (status ok, no message, counts 1 or 0); the fields set here are the
+  !> ones the update finds out.
   pure subroutine general_update(mat, solver, s, old, new, sigma, tangent, info)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
@@ -36,12 +38,6 @@ contains
     logical :: ok, done
     integer :: k
 
-    if (info%status /= status_ok) info%message = ''
-    info%status = status_ok
-    info%newton_iterations = 0
-    info%substeps = 1
-    info%attempts = 1
-    info%max_angle_increment = 0.0_dp
     if (.not. mat%prepared) then
       call fail(old, new, sigma, tangent, info, status_bad_input, &
                 'the material has not been prepared (call interlock_material_prepare)')
