@@ -33,14 +33,14 @@ contains
     real(dp), intent(out) :: sigma(2), tangent(2, 2)
     type(interlock_info_t), intent(inout) :: info
 
-    ! The kernel is kernel_cohesive only in a prepared material. abs(x) <= huge is false for NaN
-    ! and both infinities: anything else is checked and reported by general_update.
     if (info%status /= status_ok) info%message = ''
     info%status = status_ok
     info%newton_iterations = 0
     info%substeps = 1
     info%attempts = 1
     info%max_angle_increment = 0.0_dp
+    ! The kernel is kernel_cohesive only in a prepared material. abs(x) <= huge is false for NaN
+    ! and both infinities: anything else is checked and reported by general_update.
     if (mat%kernel == kernel_cohesive .and. solver%substep_tol <= 0.0_dp .and. &
         (solver%scheme == scheme_explicit .or. solver%scheme == scheme_implicit) .and. &
         abs(s(1)) <= huge(1.0_dp) .and. abs(s(2)) <= huge(1.0_dp)) then
