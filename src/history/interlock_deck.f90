@@ -1110,7 +1110,7 @@ contains
     character(len=*), intent(out) :: message
     real(dp), dimension(max_planes) :: damage, beta, frictional_slip, zeta, theta, friction_traction
     real(dp) :: separation(2), traction(2)
-    integer :: ios, k
+    integer :: ios
     character(len=512) :: iomsg, iomsg2
     character(len=:), allocatable :: probe
     integer :: kp
@@ -1144,35 +1144,15 @@ contains
       message = 'separation and traction take two values each (normal, tangential)'
       return
     end if
-    do k = 1, count_given(damage)
-      if (.not. in_range(damage(k), 0.0_dp, 1.0_dp)) then
-        message = 'damage(' // format_integer(k) // ') = ' // value_str(damage(k)) // &
-                  ' is inadmissible: admissible 0 <= damage <= 1'
-        return
-      end if
-    end do
-    do k = 1, count_given(beta)
-      if (.not. in_range(beta(k), 0.0_dp, 1.0e12_dp)) then
-        message = 'beta(' // format_integer(k) // ') = ' // value_str(beta(k)) // &
-                  ' is inadmissible: admissible 0 <= beta <= 1e12'
-        return
-      end if
-    end do
-    do k = 1, count_given(zeta)
-      if (.not. in_range(zeta(k), 0.0_dp, 1.0e30_dp)) then
-        message = 'zeta(' // format_integer(k) // ') = ' // value_str(zeta(k)) // &
-                  ' is inadmissible: admissible 0 <= zeta < 1e30 [N/mm]'
-        return
-      end if
-    end do
-    do k = 1, count_given(theta)
-      if (.not. in_range(theta(k), -0.5_dp * pi, 0.5_dp * pi) .or. &
-          same_value(abs(theta(k)), 0.5_dp * pi)) then
-        message = 'theta(' // format_integer(k) // ') = ' // value_str(theta(k)) // &
-                  ' is inadmissible: admissible -pi/2 < theta < pi/2 [rad]'
-        return
-      end if
-    end do
+    message = range_message('damage', damage, 0.0_dp, 1.0_dp, '0 <= damage <= 1')
+    if (len_trim(message) == 0) message = range_message('beta', beta, 0.0_dp, 1.0e12_dp, &
+                                                        '0 <= beta <= 1e12')
+    if (len_trim(message) == 0) message = range_message('zeta', zeta, 0.0_dp, 1.0e30_dp, &
+                                                        '0 <= zeta < 1e30 [N/mm]')
+    if (len_trim(message) == 0) message = range_message('theta', theta, -0.5_dp * pi, &
+                                                        0.5_dp * pi, '-pi/2 < theta < pi/2 [rad]', &
+                                                        open_ends=.true.)
+    if (len_trim(message) > 0) return
     message = not_finite_message('frictional_slip', 'mm', frictional_slip)
     if (len_trim(message) == 0) message = not_finite_message('friction_traction', 'MPa', &
                                                               friction_traction)
@@ -1499,6 +1479,28 @@ contains
   !> lo <= x <= hi, false for NaN (tested first).
   !> '' when every given value of an &initial_state array is a finite number (|x| <= 1e12),
   !> else the message naming the first one that is not.
+  !> '' or the message for the first given value of `x` outside [lo, hi] (with open_ends, outside
+  !> (lo, hi)); `admissible` states the range in the message.
+  function range_message(name, x, lo, hi, admissible, open_ends) result(message)
+    character(len=*), intent(in) :: name, admissible
+    real(dp), intent(in) :: x(:), lo, hi
+    logical, intent(in), optional :: open_ends
+    character(len=:), allocatable :: message
+    logical :: open
+    integer :: k
+    open = .false.
+    if (present(open_ends)) open = open_ends
+    message = ''
+    do k = 1, count_given(x)
+      if (.not. in_range(x(k), lo, hi) .or. &
+          (open .and. (same_value(x(k), lo) .or. same_value(x(k), hi)))) then
+        message = name // '(' // format_integer(k) // ') = ' // value_str(x(k)) // &
+                  ' is inadmissible: admissible ' // admissible
+        return
+      end if
+    end do
+  end function range_message
+
   pure function not_finite_message(name, unit, x) result(message)
     character(len=*), intent(in) :: name, unit
     real(dp), intent(in) :: x(:)
