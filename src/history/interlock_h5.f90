@@ -4,6 +4,7 @@
 !> of docs/history-output.md). Fortran arrays (m, n) appear in h5py as (n, m).
 module interlock_h5
   use, intrinsic :: iso_fortran_env, only: real64, int32
+  use, intrinsic :: iso_c_binding, only: c_ptr, c_loc
   use hdf5, only: hid_t, hsize_t, h5open_f, h5close_f, h5fcreate_f, h5fclose_f, h5gcreate_f, &
       h5gclose_f, h5screate_simple_f, h5screate_f, h5sclose_f, h5dcreate_f, h5dwrite_f, &
       h5dclose_f, h5acreate_f, h5awrite_f, h5aclose_f, h5tcopy_f, h5tset_size_f, &
@@ -88,62 +89,51 @@ contains
   subroutine write_real_1d(loc, name, x, unit, description, stat)
     type(h5_file_t), intent(in) :: loc
     character(len=*), intent(in) :: name, unit, description
-    real(dp), intent(in) :: x(:)
+    real(dp), intent(in), target, contiguous :: x(:)
     integer, intent(out) :: stat
-    integer(hid_t) :: space, dset
-    integer(hsize_t) :: dims(1)
-    integer :: ignore
-    dims = int(shape(x), hsize_t)
-    call h5screate_simple_f(1, dims, space, stat)
-    if (stat /= 0) return
-    call h5dcreate_f(loc%id, name, H5T_NATIVE_DOUBLE, space, dset, stat)
-    if (stat == 0) then
-      if (size(x) > 0) call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, x, dims, stat)
-      if (stat == 0) call describe(dset, unit, description, stat)
-      call h5dclose_f(dset, ignore)
-    end if
-    call h5sclose_f(space, ignore)
+    call write_dataset(loc, name, H5T_NATIVE_DOUBLE, int(shape(x), hsize_t), c_loc(x), unit, &
+                       description, stat)
   end subroutine write_real_1d
 
   subroutine write_real_2d(loc, name, x, unit, description, stat)
     type(h5_file_t), intent(in) :: loc
     character(len=*), intent(in) :: name, unit, description
-    real(dp), intent(in) :: x(:, :)
+    real(dp), intent(in), target, contiguous :: x(:, :)
     integer, intent(out) :: stat
-    integer(hid_t) :: space, dset
-    integer(hsize_t) :: dims(2)
-    integer :: ignore
-    dims = int(shape(x), hsize_t)
-    call h5screate_simple_f(2, dims, space, stat)
-    if (stat /= 0) return
-    call h5dcreate_f(loc%id, name, H5T_NATIVE_DOUBLE, space, dset, stat)
-    if (stat == 0) then
-      if (size(x) > 0) call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, x, dims, stat)
-      if (stat == 0) call describe(dset, unit, description, stat)
-      call h5dclose_f(dset, ignore)
-    end if
-    call h5sclose_f(space, ignore)
+    call write_dataset(loc, name, H5T_NATIVE_DOUBLE, int(shape(x), hsize_t), c_loc(x), unit, &
+                       description, stat)
   end subroutine write_real_2d
 
   subroutine write_int_1d(loc, name, x, unit, description, stat)
     type(h5_file_t), intent(in) :: loc
     character(len=*), intent(in) :: name, unit, description
-    integer, intent(in) :: x(:)
+    integer, intent(in), target, contiguous :: x(:)
+    integer, intent(out) :: stat
+    call write_dataset(loc, name, H5T_NATIVE_INTEGER, int(shape(x), hsize_t), c_loc(x), unit, &
+                       description, stat)
+  end subroutine write_int_1d
+
+  !> One dataset of memory type `mem_type` and shape `dims` from the contiguous buffer at `buf`
+  !> (nothing is read from it when the dataset is empty), with its two attributes.
+  subroutine write_dataset(loc, name, mem_type, dims, buf, unit, description, stat)
+    type(h5_file_t), intent(in) :: loc
+    character(len=*), intent(in) :: name, unit, description
+    integer(hid_t), intent(in) :: mem_type
+    integer(hsize_t), intent(in) :: dims(:)
+    type(c_ptr), intent(in) :: buf
     integer, intent(out) :: stat
     integer(hid_t) :: space, dset
-    integer(hsize_t) :: dims(1)
     integer :: ignore
-    dims = int(shape(x), hsize_t)
-    call h5screate_simple_f(1, dims, space, stat)
+    call h5screate_simple_f(size(dims), dims, space, stat)
     if (stat /= 0) return
-    call h5dcreate_f(loc%id, name, H5T_NATIVE_INTEGER, space, dset, stat)
+    call h5dcreate_f(loc%id, name, mem_type, space, dset, stat)
     if (stat == 0) then
-      if (size(x) > 0) call h5dwrite_f(dset, H5T_NATIVE_INTEGER, x, dims, stat)
+      if (product(dims) > 0) call h5dwrite_f(dset, mem_type, buf, stat)
       if (stat == 0) call describe(dset, unit, description, stat)
       call h5dclose_f(dset, ignore)
     end if
     call h5sclose_f(space, ignore)
-  end subroutine write_int_1d
+  end subroutine write_dataset
 
   !> The two attributes every dataset carries.
   subroutine describe(dset, unit, description, stat)
@@ -194,58 +184,50 @@ contains
   subroutine attr_real(loc, name, x, stat)
     type(h5_file_t), intent(in) :: loc
     character(len=*), intent(in) :: name
-    real(dp), intent(in) :: x
+    real(dp), intent(in), target :: x
     integer, intent(out) :: stat
-    integer(hid_t) :: space, attr
-    integer(hsize_t) :: dims(1)
-    integer :: ignore
-    dims = 1
-    call h5screate_f(H5S_SCALAR_F, space, stat)
-    if (stat /= 0) return
-    call h5acreate_f(loc%id, name, H5T_NATIVE_DOUBLE, space, attr, stat)
-    if (stat == 0) then
-      call h5awrite_f(attr, H5T_NATIVE_DOUBLE, x, dims, stat)
-      call h5aclose_f(attr, ignore)
-    end if
-    call h5sclose_f(space, ignore)
+    call write_attribute(loc, name, H5T_NATIVE_DOUBLE, [integer(hsize_t) ::], c_loc(x), stat)
   end subroutine attr_real
 
   subroutine attr_real_1d(loc, name, x, stat)
     type(h5_file_t), intent(in) :: loc
     character(len=*), intent(in) :: name
-    real(dp), intent(in) :: x(:)
+    real(dp), intent(in), target, contiguous :: x(:)
     integer, intent(out) :: stat
-    integer(hid_t) :: space, attr
-    integer(hsize_t) :: dims(1)
-    integer :: ignore
-    dims = int(size(x), hsize_t)
-    call h5screate_simple_f(1, dims, space, stat)
-    if (stat /= 0) return
-    call h5acreate_f(loc%id, name, H5T_NATIVE_DOUBLE, space, attr, stat)
-    if (stat == 0) then
-      call h5awrite_f(attr, H5T_NATIVE_DOUBLE, x, dims, stat)
-      call h5aclose_f(attr, ignore)
-    end if
-    call h5sclose_f(space, ignore)
+    call write_attribute(loc, name, H5T_NATIVE_DOUBLE, int(shape(x), hsize_t), c_loc(x), stat)
   end subroutine attr_real_1d
 
   subroutine attr_int(loc, name, i, stat)
     type(h5_file_t), intent(in) :: loc
     character(len=*), intent(in) :: name
-    integer(int32), intent(in) :: i
+    integer(int32), intent(in), target :: i
+    integer, intent(out) :: stat
+    call write_attribute(loc, name, H5T_NATIVE_INTEGER, [integer(hsize_t) ::], c_loc(i), stat)
+  end subroutine attr_int
+
+  !> One attribute of memory type `mem_type` from the buffer at `buf`: a scalar when `dims` is
+  !> empty, else an array of shape `dims`.
+  subroutine write_attribute(loc, name, mem_type, dims, buf, stat)
+    type(h5_file_t), intent(in) :: loc
+    character(len=*), intent(in) :: name
+    integer(hid_t), intent(in) :: mem_type
+    integer(hsize_t), intent(in) :: dims(:)
+    type(c_ptr), intent(in) :: buf
     integer, intent(out) :: stat
     integer(hid_t) :: space, attr
-    integer(hsize_t) :: dims(1)
     integer :: ignore
-    dims = 1
-    call h5screate_f(H5S_SCALAR_F, space, stat)
+    if (size(dims) == 0) then
+      call h5screate_f(H5S_SCALAR_F, space, stat)
+    else
+      call h5screate_simple_f(size(dims), dims, space, stat)
+    end if
     if (stat /= 0) return
-    call h5acreate_f(loc%id, name, H5T_NATIVE_INTEGER, space, attr, stat)
+    call h5acreate_f(loc%id, name, mem_type, space, attr, stat)
     if (stat == 0) then
-      call h5awrite_f(attr, H5T_NATIVE_INTEGER, i, dims, stat)
+      call h5awrite_f(attr, mem_type, buf, stat)
       call h5aclose_f(attr, ignore)
     end if
     call h5sclose_f(space, ignore)
-  end subroutine attr_int
+  end subroutine write_attribute
 
 end module interlock_h5
