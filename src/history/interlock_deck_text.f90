@@ -64,16 +64,9 @@ contains
       else if (is_blank(ch)) then
         continue
       else if (ch == '!') then
-        do while (i < len(text))
-          if (text(i + 1:i + 1) == achar(10)) exit
-          i = i + 1
-        end do
+        i = comment_end(text, i)
       else if (ch == '&' .or. ch == '$') then
-        j = i + 1
-        do while (j <= len(text))
-          if (.not. is_name_char(text(j:j))) exit
-          j = j + 1
-        end do
+        j = group_name_end(text, i)
         name = lower(text(i + 1:min(j - 1, i + name_len)))
         if (j == i + 1) then
           message = 'line ' // format_integer(line) // ': a ''' // ch // ''' that does not start a ' // &
@@ -141,19 +134,12 @@ contains
       else if (ch == '''' .or. ch == '"') then
         quote = ch
       else if (ch == '!') then
-        do while (i < len(text))
-          if (text(i + 1:i + 1) == achar(10)) exit
-          i = i + 1
-        end do
+        i = comment_end(text, i)
       else if (ch == '/') then
         call close_group(i - 1)
         return
       else if (ch == '&' .or. ch == '$') then
-        j = i + 1
-        do while (j <= len(text))
-          if (.not. is_name_char(text(j:j))) exit
-          j = j + 1
-        end do
+        j = group_name_end(text, i)
         if (lower(text(i + 1:j - 1)) == 'end') then
           call close_group(i - 1)
           i = j - 1
@@ -386,5 +372,27 @@ contains
     end do
   end function lower
 
+
+  !> The last character of the comment that starts at text(i:i) (the one before the line feed).
+  pure integer function comment_end(text, i) result(k)
+    character(len=*), intent(in) :: text
+    integer, intent(in) :: i
+    k = i
+    do while (k < len(text))
+      if (text(k + 1:k + 1) == achar(10)) exit
+      k = k + 1
+    end do
+  end function comment_end
+
+  !> One past the last character of the name that follows the '&' or '$' at text(i:i).
+  pure integer function group_name_end(text, i) result(j)
+    character(len=*), intent(in) :: text
+    integer, intent(in) :: i
+    j = i + 1
+    do while (j <= len(text))
+      if (.not. is_name_char(text(j:j))) exit
+      j = j + 1
+    end do
+  end function group_name_end
 
 end module interlock_deck_text
