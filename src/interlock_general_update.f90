@@ -55,8 +55,8 @@ contains
       return
     end if
 
+    ! Every path below sets the whole tangent when it succeeds (fail() zeroes it otherwise).
     done = .false.
-    tangent = 0.0_dp
     if (solver%substep_tol > 0.0_dp) then
       call substep(mat, solver, s, old, new, tangent, info, solver%substep_tol)
     else

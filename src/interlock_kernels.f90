@@ -31,8 +31,6 @@ module interlock_kernels
 contains
 
   !> One increment with a specialised kernel. `done` is false when the kernel does not apply
-  !> to this increment (a separated RIA): the caller then takes the general path.
-  !> One increment with a specialised kernel. `done` is false when the kernel does not apply
   !> to this increment (a separated RIA, or an implicit wear equation the bounded iteration did
   !> not solve): the caller then takes the general path, which can also sub-increment.
   pure subroutine kernel_step(mat, solver, s, old, new, tangent, done, iterations)
