@@ -61,7 +61,9 @@ def main():
     version = args.version or project_version(args.source_dir)
 
     providers = {}   # module name -> (path, text, used modules)
-    for path in sorted(list(src.glob("*.f90")) + list(src.glob("*.f90.in"))):
+    # The library's modules (src/) and the UMAT's own (umat/*.f90 but the UMAT itself).
+    umat_modules = [p for p in sorted((args.source_dir / "umat").glob("*.f90")) if p != umat]
+    for path in sorted(list(src.glob("*.f90")) + list(src.glob("*.f90.in"))) + umat_modules:
         text = path.read_text()
         if path.suffix == ".in":
             text = text.replace("@PROJECT_VERSION@", version)
@@ -81,7 +83,7 @@ def main():
 
     def visit(name, chain):
         if name not in providers:
-            sys.exit(f"make_bundle: module {name} (needed by {' <- '.join(chain)}) not found in {src}")
+            sys.exit(f"make_bundle: module {name} (needed by {' <- '.join(chain)}) not found in {src} or umat/")
         if state.get(name) == "done":
             return
         if state.get(name) == "active":

@@ -1,0 +1,273 @@
+!> The body of the Abaqus-style UMAT of the interlock cohesive-zone law, for 2D cohesive
+!> elements: `interlock_umat_cohesive` has the Abaqus argument list. The external `UMAT`
+!> (umat/interlock_umat.f90) is a thin wrapper around it, so that hosts that bring a `umat`
+!> of their own (CalculiX) and other entries (the thin layer, umat/interlock_umat_layer.f90)
+!> can call the law under its own name.
+!>
+!> **Element and kinematics.** NTENS = 2: component 1 is the normal separation / traction,
+!> component 2 the shear one. STRAN and DSTRAN are read as separations [mm]: use a constitutive
+!> thickness of 1 (Abaqus: `*COHESIVE SECTION, RESPONSE=TRACTION SEPARATION, THICKNESS=SPECIFIED`
+!> with thickness 1.0), so that strain = separation. The start-of-increment separation is
+!> STRAN, the end-of-increment one STRAN + DSTRAN; STRESS on entry is the start traction.
+!>
+!> **Material.** PROPS and STATEV follow the material table (`interlock-query --props`,
+!> `interlock-query --statev`, docs/material.md): NPROPS from 9 (the required properties) to 19,
+!> NSTATV >= 22 (`*DEPVAR` 22; extra slots are left alone). The three-plane RIA of the paper.
+!> DDSDDE is the library's exact algorithmic tangent, which is not symmetric once friction or
+!> wear acts: declare `*USER MATERIAL, UNSYMM`.
+!>
+!> **Energies.** SSE = stored (free) energy, SCD = total dissipation (damage + friction; the split
+!> is in STATEV 20 and 21), SPD = 0. All per unit area [N/mm].
+!>
+!> **PNEWDT.** PNEWDT is only ever lowered, never raised:
+!>  - bad input (precision of the reals < 15, NTENS /= 2, NSTATV < 22, NPROPS or a property out
+!>    of its range, NaN): one line `interlock UMAT: element E, point P (...): <why>` on the
+!>    output unit, PNEWDT = -1 (repeating the increment cannot help: stop the analysis);
+!>  - local integration failure (or a non-finite separation from a diverged global iteration):
+!>    one line as above, PNEWDT = min(PNEWDT, 0.5);
+!>  in both cases STRESS, STATEV, DDSDDE, SSE, SPD, SCD are left untouched.
+!>  - accuracy control: when one increment raises a damage variable by more than the property
+!>    max_damage_increment, or turns a microplane by more than max_angle_increment_deg, PNEWDT
+!>    is set to min(PNEWDT, f) with f the first-order estimate of the fraction of the increment
+!>    that meets the bound, clamped to [0.1, 1] (a bound exceeded by less than a relative 1e-6
+!>    counts as met, so that a retried increment is not cut again for round-off). The scaling
+!>    is linear in the variable that drives the bounded one: the history variable beta for the
+!>    damage D = (beta-1)/(eta beta), the frictional work zeta for the angle theta(zeta). Both
+!>    drivers are convex along a straight separation path (beta: a norm of an affine function;
+!>    zeta: zero while sticking, then growing linearly), so the retried increment
+!>    f * DSTRAN meets the bound (scaling D or theta themselves, which are concave in their
+!>    drivers, would overshoot). With wear on, the interpolation starts from the state a zero
+!>    increment gives (in the explicit scheme the angle stored at the end of the previous
+!>    increment already turns the local frame, so a zero increment slips and wears a little);
+!>    this costs one more update, only when a bound is exceeded. When no cut can meet the
+!>    bound, the smallest factor 0.1 is proposed. The results of the increment are returned
+!>    all the same (the host discards them when it cuts back).
+!>
+!> **Arguments.** The argument list is the one of the current Abaqus manual, with
+!> `JSTEP(4)` (step number, procedure type, NLGEOM flag, linear perturbation flag) where older
+!> manuals have the scalar `KSTEP`; JSTEP is never read, so both conventions work.
+!> Arguments this law does not need (temperature, field variables, geometry, time) are marked
+!> unused with an empty `associate` block, which the compiler sees as a use and which
+!> generates no code.
+!>
+!> **Replaying a failure.** When the environment variable INTERLOCK_REPLAY_DIR names a folder,
+!> every local failure also writes a deck there, `interlock_replay_e<NOEL>_p<NPT>_k<KINC>.nml`,
+!> with the parameters, the state at the start of the increment and the increment: run it with
+!> `interlock-history` to reproduce the failure at that single point. Off by default, since an
+!> FE run calls the UMAT from many threads and points.
+!>
+!> **Threads.** No SAVE'd, module or COMMON state is written; the procedure is `recursive` so
+!> that every local lives on the stack: safe to call from many threads at once.
+module interlock_umat_body
+  implicit none
+  private
+  public :: interlock_umat_cohesive
+
+contains
+
+  recursive subroutine interlock_umat_cohesive(STRESS, STATEV, DDSDDE, SSE, SPD, SCD, RPL, DDSDDT, DRPLDE, DRPLDT, &
+                            STRAN, DSTRAN, TIME, DTIME, TEMP, DTEMP, PREDEF, DPRED, CMNAME, NDI, &
+                            NSHR, NTENS, NSTATV, PROPS, NPROPS, COORDS, DROT, PNEWDT, CELENT, &
+                            DFGRD0, DFGRD1, NOEL, NPT, LAYER, KSPT, JSTEP, KINC)
+    use, intrinsic :: iso_fortran_env, only: output_unit
+    use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
+        interlock_info_t, interlock_update, umat_controls_t, props_to_material, statev_to_state, &
+        state_to_statev, umat_nstatv, status_ok, status_local_failure, message_len, is_nan_value, &
+        interlock_write_replay_deck, format_integer
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    implicit none
+    integer, intent(in) :: NDI                 !< direct components (1 for a 2D cohesive element)
+    integer, intent(in) :: NSHR                !< shear components (1 for a 2D cohesive element)
+    integer, intent(in) :: NTENS               !< must be 2
+    integer, intent(in) :: NSTATV              !< >= 22
+    integer, intent(in) :: NPROPS              !< 9 .. 19
+    integer, intent(in) :: NOEL, NPT           !< element and integration point (for messages)
+    integer, intent(in) :: LAYER, KSPT         !< layer and section point (unused)
+    integer, intent(in) :: JSTEP(4)            !< step information (unused; KSTEP in old manuals)
+    integer, intent(in) :: KINC                !< increment number (for messages)
+    character(len=*), intent(in) :: CMNAME     !< material name (for messages)
+    real(dp), intent(inout) :: STRESS(NTENS)   !< traction (normal, shear) [MPa]: start in, end out
+    real(dp), intent(inout) :: STATEV(NSTATV)  !< state variables, see interlock-query --statev
+    real(dp), intent(inout) :: DDSDDE(NTENS, NTENS) !< d STRESS / d STRAN [MPa/mm]
+    real(dp), intent(inout) :: SSE             !< stored energy per unit area [N/mm]
+    real(dp), intent(inout) :: SPD             !< set to 0 (all dissipation is in SCD)
+    real(dp), intent(inout) :: SCD             !< damage + friction dissipation per area [N/mm]
+    real(dp), intent(inout) :: RPL, DRPLDT     !< no heat generation: set to 0
+    real(dp), intent(inout) :: DDSDDT(NTENS), DRPLDE(NTENS) !< no thermal coupling: set to 0
+    real(dp), intent(in) :: STRAN(NTENS)       !< separation at the start of the increment [mm]
+    real(dp), intent(in) :: DSTRAN(NTENS)      !< separation increment [mm]
+    real(dp), intent(in) :: TIME(2), DTIME, TEMP, DTEMP, PREDEF(*), DPRED(*) !< unused
+    real(dp), intent(in) :: PROPS(NPROPS)      !< properties, see interlock-query --props
+    real(dp), intent(in) :: COORDS(3), DROT(3, 3), CELENT, DFGRD0(3, 3), DFGRD1(3, 3) !< unused
+    real(dp), intent(inout) :: PNEWDT          !< suggested time-step ratio (only lowered here)
+
+    real(dp), parameter :: pnewdt_bad_input = -1.0_dp
+    real(dp), parameter :: pnewdt_local_failure = 0.5_dp
+    real(dp), parameter :: pnewdt_min_factor = 0.1_dp
+    type(interlock_material_t) :: mat
+    type(interlock_solver_t) :: solver
+    type(umat_controls_t) :: controls
+    type(interlock_state_t) :: old, new, anchor
+    type(interlock_info_t) :: info
+    real(dp) :: s(2), sigma(2), tangent(2, 2), factor
+    integer :: stat
+    character(len=message_len) :: message
+    character(len=96) :: buf
+
+    associate (unused_1 => NDI, unused_2 => NSHR, unused_3 => LAYER, unused_4 => KSPT, &
+               unused_5 => JSTEP, unused_6 => TIME, unused_7 => DTIME, unused_8 => TEMP, &
+               unused_9 => DTEMP, unused_10 => PREDEF(1), unused_11 => DPRED(1), &
+               unused_12 => COORDS, unused_13 => DROT, unused_14 => CELENT, &
+               unused_15 => DFGRD0, unused_16 => DFGRD1)
+    end associate
+
+    ! --- Bad input: the host's arguments, then every property by name and range.
+    if (precision(STRESS) < 15 .or. precision(PROPS) < 15 .or. precision(PNEWDT) < 15) then
+      write (buf, '(i0)') min(precision(STRESS), precision(PROPS), precision(PNEWDT))
+      call fail('the real arguments have ' // trim(buf) // ' significant digits, fewer than 15: ' &
+                // 'compile the host and the UMAT in double precision', pnewdt_bad_input)
+      return
+    end if
+    if (NTENS /= 2) then
+      write (buf, '(i0)') NTENS
+      call fail('NTENS = ' // trim(buf) // ' is inadmissible: admissible NTENS = 2 (2D ' // &
+                'cohesive element: 1 normal, 2 shear)', pnewdt_bad_input)
+      return
+    end if
+    if (NSTATV < umat_nstatv) then
+      write (buf, '(i0,a,i0)') NSTATV, ' is inadmissible: admissible NSTATV >= ', umat_nstatv
+      call fail('NSTATV = ' // trim(buf) // ' (*DEPVAR; see interlock-query --statev)', &
+                pnewdt_bad_input)
+      return
+    end if
+    call props_to_material(PROPS, mat, solver, controls, stat, message)
+    if (stat /= status_ok) then
+      call fail(message, pnewdt_bad_input)
+      return
+    end if
+
+    ! --- The update: state at the start from STATEV, STRAN and STRESS.
+    s = STRAN(1:2) + DSTRAN(1:2)
+    if (.not. all(ieee_is_finite(s))) then
+      call fail('the separation STRAN + DSTRAN is not finite (diverged global iteration?): ' // &
+                'retry with a smaller increment', pnewdt_local_failure)
+      return
+    end if
+    call statev_to_state(STATEV(1:umat_nstatv), mat, old)
+    old%s = STRAN(1:2)
+    old%sigma = STRESS(1:2)
+    call interlock_update(mat, solver, s, old, new, sigma, tangent, info)
+    if (info%status /= status_ok) then
+      call fail(info%message, merge(pnewdt_local_failure, pnewdt_bad_input, &
+                                    info%status == status_local_failure))
+      if (info%status == status_local_failure) call write_replay(info%message)
+      return
+    end if
+
+    STRESS(1:2) = sigma
+    DDSDDE(1:2, 1:2) = tangent
+    call state_to_statev(new, STATEV(1:umat_nstatv))
+    SSE = new%stored
+    SPD = 0.0_dp
+    SCD = new%diss_damage + new%diss_friction
+    RPL = 0.0_dp
+    DDSDDT(1:2) = 0.0_dp
+    DRPLDE(1:2) = 0.0_dp
+    DRPLDT = 0.0_dp
+
+    ! --- Accuracy control: propose the fraction of the increment that meets the bounds.
+    factor = step_factor(mat, controls, old, old, new)
+    if (factor < 1.0_dp .and. mat%use_wear) then
+      ! With wear, a zero increment is not a no-op in the explicit scheme (the angle stored at
+      ! the end of the last increment turns the local frame): interpolate from the state that
+      ! the zero increment gives instead (one more update, only when a bound is exceeded).
+      call interlock_update(mat, solver, STRAN(1:2), old, anchor, sigma, tangent, info)
+      if (info%status == status_ok) factor = step_factor(mat, controls, old, anchor, new)
+    end if
+    if (factor < 1.0_dp) call lower_pnewdt(max(pnewdt_min_factor, factor))
+
+  contains
+
+    !> Write one line naming the point, lower PNEWDT; STRESS and STATEV stay as they came.
+    subroutine fail(why, proposal)
+      character(len=*), intent(in) :: why
+      real(dp), intent(in) :: proposal
+      character(len=64) :: where
+      write (where, '(a,i0,a,i0)') 'element ', NOEL, ', point ', NPT
+      write (output_unit, '(a)') 'interlock UMAT: ' // trim(where) // " (material '" // &
+        trim(CMNAME) // "', increment " // trim(format_integer(KINC)) // '): ' // trim(why)
+      call lower_pnewdt(proposal)
+    end subroutine fail
+
+    !> The replay deck of a failed increment, when INTERLOCK_REPLAY_DIR asks for it.
+    subroutine write_replay(why)
+      character(len=*), intent(in) :: why
+      character(len=4096) :: dir
+      character(len=96) :: name
+      integer :: length, env_stat, ios
+      call get_environment_variable('INTERLOCK_REPLAY_DIR', dir, length, env_stat)
+      if (env_stat /= 0 .or. length == 0) return
+      write (name, '(a,i0,a,i0,a,i0,a)') 'interlock_replay_e', NOEL, '_p', NPT, '_k', KINC, '.nml'
+      call interlock_write_replay_deck(trim(dir) // '/' // trim(name), mat, solver, old, s, &
+        'UMAT element ' // format_integer(NOEL) // ', point ' // format_integer(NPT) // ', increment ' // &
+        format_integer(KINC) // ': ' // why, ios)
+      if (ios /= 0) write (output_unit, '(a)') 'interlock UMAT: could not write the replay deck ' &
+        // trim(dir) // '/' // trim(name)
+    end subroutine write_replay
+
+    !> PNEWDT = min(PNEWDT, proposal); a NaN on entry is replaced.
+    subroutine lower_pnewdt(proposal)
+      real(dp), intent(in) :: proposal
+      if (is_nan_value(PNEWDT)) then
+        PNEWDT = proposal
+      else if (proposal < PNEWDT) then
+        PNEWDT = proposal
+      end if
+    end subroutine lower_pnewdt
+
+
+    !> Fraction f of the increment old -> new that meets the damage and angle bounds (1 when
+    !> both hold), interpolating the drivers beta and zeta linearly between `zero` (the state a
+    !> zero increment gives) and `new` (see the header).
+    pure real(dp) function step_factor(mat, controls, old, zero, new) result(f)
+      type(interlock_material_t), intent(in) :: mat
+      type(umat_controls_t), intent(in) :: controls
+      type(interlock_state_t), intent(in) :: old, zero, new
+      real(dp), parameter :: slack = 1.0e-6_dp  !< a bound exceeded by less (relative) is met
+      integer :: k
+      real(dp) :: d_target, beta_target, span, dzeta_target, dzeta_zero
+      f = 1.0_dp
+      do k = 1, mat%n_planes
+        if (new%damage(k) - old%damage(k) > controls%max_damage_increment * (1.0_dp + slack)) then
+          ! D = (beta - 1) / (eta beta)  <=>  beta = 1 / (1 - eta D)
+          d_target = old%damage(k) + controls%max_damage_increment
+          beta_target = 1.0_dp / (1.0_dp - mat%eta * d_target)
+          if (new%beta(k) > zero%beta(k) .and. beta_target > zero%beta(k)) then
+            f = min(f, (beta_target - zero%beta(k)) / (new%beta(k) - zero%beta(k)))
+          else
+            f = 0.0_dp   ! a jump (separation beyond H_N) or no cut helps: as small as allowed
+          end if
+        end if
+        if (mat%plane_wears(k) .and. abs(new%theta(k) - old%theta(k)) > &
+            controls%max_angle_increment * (1.0_dp + slack)) then
+          ! theta(zeta) - theta_f = (theta_0 - theta_f) exp(-zeta/zeta_0): the angle turns by
+          ! |theta_old - theta_f| (1 - exp(-dzeta/zeta_0)) when zeta grows by dzeta.
+          span = abs(old%theta(k) - mat%thetaf_eff(k))
+          dzeta_zero = zero%zeta(k) - old%zeta(k)
+          if (span > controls%max_angle_increment) then
+            dzeta_target = -mat%zeta0(k) * log(1.0_dp - controls%max_angle_increment / span)
+          else
+            dzeta_target = 0.0_dp
+          end if
+          if (new%zeta(k) > zero%zeta(k) .and. dzeta_target > dzeta_zero) then
+            f = min(f, (dzeta_target - dzeta_zero) / (new%zeta(k) - zero%zeta(k)))
+          else
+            f = 0.0_dp
+          end if
+        end if
+      end do
+    end function step_factor
+
+  end subroutine interlock_umat_cohesive
+
+end module interlock_umat_body
