@@ -8,6 +8,11 @@ the version module comes from its .in template with @PROJECT_VERSION@ substitute
 Standard library only.
 
     python3 scripts/make_bundle.py [--source-dir DIR] [--version X.Y.Z] [--output FILE]
+                                   [--entry umat/calculix/interlock_ccx_umat.f90]
+
+--entry names another external entry than the 2D UMAT (umat/interlock_umat.f90), e.g.
+CalculiX's `umat` over the thin-layer entry; the bundle then holds that entry instead (both
+define the external `umat`, so they never go into one bundle).
 """
 import argparse
 import pathlib
@@ -55,14 +60,20 @@ def main():
     parser.add_argument("--version", help="PROJECT_VERSION (default: from CMakeLists.txt)")
     parser.add_argument("--output", type=pathlib.Path,
                         default=pathlib.Path("interlock_umat_bundle.f90"))
+    parser.add_argument("--entry", default="umat/interlock_umat.f90",
+                        help="the external entry, relative to the source tree "
+                             "(default: umat/interlock_umat.f90, the 2D UMAT)")
     args = parser.parse_args()
     src = args.source_dir / "src"
-    umat = args.source_dir / "umat" / "interlock_umat.f90"
+    umat = args.source_dir / args.entry
+    if not umat.is_file():
+        sys.exit(f"make_bundle: the entry {umat} does not exist")
     version = args.version or project_version(args.source_dir)
 
     providers = {}   # module name -> (path, text, used modules)
     # The library's modules (src/) and the UMAT's own (umat/*.f90 but the UMAT itself).
-    umat_modules = [p for p in sorted((args.source_dir / "umat").glob("*.f90")) if p != umat]
+    umat_modules = [p for p in sorted((args.source_dir / "umat").glob("*.f90"))
+                    if p.name != "interlock_umat.f90" and p != umat]
     for path in sorted(list(src.glob("*.f90")) + list(src.glob("*.f90.in"))) + umat_modules:
         text = path.read_text()
         if path.suffix == ".in":
@@ -108,7 +119,8 @@ def main():
         path, text, _ = providers[name]
         rel = path.relative_to(args.source_dir).as_posix()
         parts.append(f"\n! {'=' * 20} {rel} {'=' * 20}\n" + text.rstrip("\n") + "\n")
-    parts.append(f"\n! {'=' * 20} umat/interlock_umat.f90 {'=' * 20}\n" + umat_text.rstrip("\n") + "\n")
+    entry = umat.relative_to(args.source_dir).as_posix()
+    parts.append(f"\n! {'=' * 20} {entry} {'=' * 20}\n" + umat_text.rstrip("\n") + "\n")
 
     args.output.parent.mkdir(parents=True, exist_ok=True)
     tmp = args.output.with_name(args.output.name + ".tmp")
