@@ -49,9 +49,9 @@ STATEV_NAMES = [("damage", 3), ("beta", 3), ("frictional_slip", 3), ("zeta", 3),
                 ("friction_dissipation", 1)]
 
 
-def user_material(element, tangent):
+def user_material(element, tangent, interlock):
     normal, slip = AXES[element]
-    values = [H, E_OTHER, normal, slip] + list(INTERLOCK.values()) + [float(tangent)]
+    values = [H, E_OTHER, normal, slip] + list(interlock.values()) + [float(tangent)]
     lines = []
     for i in range(0, len(values), 8):
         lines.append(", ".join(f"{v:.12g}" for v in values[i:i + 8]))
@@ -100,7 +100,7 @@ def grid_2d(levels, xs):
     return nodes, nid
 
 
-def model(element, tangent):
+def model(element, tangent, shear_force=None, prefractured=0):
     out = [f"** Direct shear, {element}, interlock thin layer h = {H} mm (tangent option "
            f"{tangent}); written by examples/calculix/direct_shear/direct_shear.py"]
     if element == "C3D8":
@@ -108,9 +108,9 @@ def model(element, tangent):
         etype = "C3D8"
         pressure_face = [(e, "P2") for e, _ in elements["UPPER"]]
         fixed = {"BOTTOM": (bottom, (1, 3))}
-        held = {"TOP": (top, (1, 2))}       # slip along 1, 2 held; 3 free (pressure)
-        slip_set, slip_dof = "TOP", 1
-        tied = (top, 3)
+        held = {"TOPREF": (top[:1], (1, 1)), "TOP": (top, (2, 2))}   # 3 free (pressure)
+        slip_set, slip_dof = "TOPREF", 1
+        tied = (top, (1, 3))
         orientation = ""
     elif element == "CPE4":
         levels = [0.0, 5.0, 5.0 + H, 10.0 + H]
@@ -126,9 +126,9 @@ def model(element, tangent):
         etype = "CPE4"
         pressure_face = [(e, "P3") for e, _ in elements["UPPER"]]
         fixed = {"BOTTOM": ([nid[i, 0] for i in range(3)], (1, 2))}
-        held = {"TOP": ([nid[i, 3] for i in range(3)], (1, 1))}
-        slip_set, slip_dof = "TOP", 1
-        tied = ([nid[i, 3] for i in range(3)], 2)
+        held = {"TOPREF": ([nid[0, 3]], (1, 1))}
+        slip_set, slip_dof = "TOPREF", 1
+        tied = ([nid[i, 3] for i in range(3)], (1, 2))
         orientation = ""
     else:   # CAX4: a bar (r < 5) in a sleeve, the layer a tube at r = 5; x radial, y axial
         xs = [0.0, 2.5, 5.0, 5.0 + H, 7.5 + H, 10.0 + H]
@@ -162,7 +162,7 @@ def model(element, tangent):
         out += [", ".join(str(n) for n in ns[i:i + 8]) for i in range(0, len(ns), 8)]
     out.append("*ELSET, ELSET=BLOCKS\nLOWER, UPPER")
     out.append(f"*MATERIAL, NAME=BLOCK\n*ELASTIC\n{E_BLOCK}, {NU_BLOCK}")
-    out.append(user_material(element, tangent).rstrip("\n"))
+    out.append(user_material(element, tangent, dict(INTERLOCK, prefractured=prefractured)).rstrip("\n"))
     if orientation:
         out.append(orientation.rstrip("\n"))
         out.append("*SOLID SECTION, ELSET=LAYER, MATERIAL=ABAQUSLAYER, ORIENTATION=CYL")
@@ -174,12 +174,14 @@ def model(element, tangent):
     if element == "CPE4":
         out.append("1.")
     if tied:
-        # The loaded face moves as one in the normal direction (no rotation of the upper
-        # block: the normal traction stays the pressure, as in a direct shear box).
-        nodes_tied, dof = tied
+        # The loaded face moves as one, in slip and normal (no rotation of the upper block:
+        # the normal traction stays the pressure, as in a direct shear box); its first node
+        # carries the slip (displacement or force).
+        nodes_tied, dofs = tied
         out.append("*EQUATION")
-        for n in nodes_tied[1:]:
-            out.append(f"2\n{n}, {dof}, 1., {nodes_tied[0]}, {dof}, -1.")
+        for dof in dofs:
+            for n in nodes_tied[1:]:
+                out.append(f"2\n{n}, {dof}, 1., {nodes_tied[0]}, {dof}, -1.")
     out.append("*BOUNDARY")
     for name, (_, (a, b)) in fixed.items():
         out.append(f"{name}, {a}, {b}")
@@ -192,11 +194,22 @@ def model(element, tangent):
     out += [f"{e}, {face}, {PRESSURE}" for e, face in pressure_face]
     out.append("*EL PRINT, ELSET=LAYER, FREQUENCY=1\nSDV")
     out.append("*END STEP")
-    # Step 2: the slip, displacement controlled, fixed increments.
-    n_inc = round(SLIP / INCREMENT)
-    out.append(f"*STEP, INC={n_inc + 10}\n*STATIC, DIRECT\n{1.0 / n_inc:.12g}, 1.0")
-    out.append("*BOUNDARY")
-    out.append(f"{slip_set}, {slip_dof}, {slip_dof}, {SLIP}")
+    if shear_force is None:
+        # Step 2: the slip, displacement controlled, fixed increments.
+        n_inc = round(SLIP / INCREMENT)
+        out.append(f"*STEP, INC={n_inc + 10}\n*STATIC, DIRECT\n{1.0 / n_inc:.12g}, 1.0")
+        out.append("*BOUNDARY")
+        out.append(f"{slip_set}, {slip_dof}, {slip_dof}, {SLIP}")
+    else:
+        # Step 2 (measurement only): the shear force on the tied face, automatic increments.
+        out.append("*STEP, INC=1000\n*STATIC\n0.02, 1.0, 1e-5, 0.02")
+        out.append("*BOUNDARY, OP=NEW")
+        for name, (_, (a, b)) in fixed.items():
+            out.append(f"{name}, {a}, {b}")
+        for name, (_, (a, b)) in held.items():
+            if name != slip_set:
+                out.append(f"{name}, {a}, {b}, 0.")
+        out.append(f"*CLOAD\n{slip_set}, {slip_dof}, {shear_force:.12g}")
     out.append("*EL PRINT, ELSET=LAYER, FREQUENCY=1\nSDV")
     out.append("*END STEP")
     return "\n".join(out) + "\n"
@@ -242,11 +255,47 @@ def read_convergence(job):
     return incs
 
 
+def convergence_lines(job):
+    """The second step's global iterations per increment and its hardest residual sequence."""
+    conv = read_convergence(job)
+    step2 = [(inc, v) for (st, inc), v in sorted(conv.items()) if st == 2]
+    iters = [len(v) for _, v in step2]
+    lines = []
+    reached = 0.0
+    for line in job.with_suffix(".sta").read_text().splitlines():
+        parts = line.split()
+        if len(parts) == 7 and parts[0] == "2" and parts[2].isdigit():
+            reached = float(parts[5])      # STEP TIME of a converged increment
+    lines.append(f"step 2 reached step time {reached:.4g} of 1")
+    if iters:
+        srt = sorted(iters)
+        cutbacks = sum(1 for _, v in step2 if any(a > 1 for a, _, _, _ in v))
+        lines.append(f"slip step: {len(iters)} increments ({cutbacks} with cutbacks), "
+                     f"global iterations per increment: "
+                     f"median {srt[len(srt) // 2]}, max {max(iters)}, total {sum(iters)}")
+        lines.append("iterations per increment: " + " ".join(str(i) for i in iters))
+        worst_inc = max(step2, key=lambda kv: len(kv[1]))
+        lines.append(f"residual sequence of increment {worst_inc[0]} (largest residual force): "
+                     + " ".join(f"{r:.2e}" for _, _, r, _ in worst_inc[1][:16])
+                     + (" ..." if len(worst_inc[1]) > 16 else "")
+                     + "  (% of the average force)")
+    return lines
+
+
 def run(args):
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     job = out / f"direct_shear_{args.element.lower()}_t{args.tangent}"
-    job.with_suffix(".inp").write_text(model(args.element, args.tangent))
+    force = None
+    if args.shear_traction is not None:
+        if args.element == "CAX4":
+            sys.exit("direct_shear: --shear-traction is for C3D8 and CPE4")
+        force = args.shear_traction * (100.0 if args.element == "C3D8" else 10.0)
+        job = job.with_name(job.name + f"_tau{round(args.shear_traction * 1000)}kPa")
+    if args.prefractured:
+        job = job.with_name(job.name + "_prefractured")
+    job.with_suffix(".inp").write_text(model(args.element, args.tangent, force,
+                                             int(args.prefractured)))
     for suffix in (".dat", ".cvg", ".sta"):
         job.with_suffix(suffix).unlink(missing_ok=True)
     proc = subprocess.run([args.ccx, "-i", job.name], cwd=out, capture_output=True, text=True,
@@ -254,8 +303,11 @@ def run(args):
                                "PATH": "/usr/bin:/bin"})
     job.with_suffix(".log").write_text(proc.stdout + proc.stderr)
     if proc.returncode != 0 or "Job finished" not in proc.stdout:
-        print(proc.stdout[-3000:])
-        sys.exit(f"direct_shear: ccx failed on {job.name}.inp (log: {job}.log)")
+        lines = [f"{job.name}: {args.element}, tangent option {args.tangent}: ccx stopped"]
+        lines += convergence_lines(job)
+        (out / f"{job.name}_convergence.txt").write_text("\n".join(lines) + "\n")
+        print("\n".join(lines))
+        sys.exit(f"direct_shear: FAIL, ccx stopped on {job.name}.inp (log: {job}.log)")
     rows, times = read_dat_sdv(job.with_suffix(".dat"))
     point = min(rows)
     sdv = rows[point]
@@ -273,7 +325,8 @@ def run(args):
     deck.write_text(
         f"! Replay of {job.name}.inp, element {point[0]} point {point[1]}: ccx's separations\n"
         f"&interface\n  sigma0_n = {p['sigma0_n']}, sigma0_t = {p['sigma0_t']}, gc = {p['gc']},"
-        f" eta = {p['eta']}, mu = {p['mu']}, h_n = {p['h_n']}\n/\n"
+        f" eta = {p['eta']}, mu = {p['mu']}, h_n = {p['h_n']},"
+        f" prefractured = {'.true.' if args.prefractured else '.false.'}\n/\n"
         f"&microplanes\n  theta0_deg = {p['theta0_deg']}, thetaf_deg = {p['thetaf_deg']},"
         f" zeta0 = {p['zeta0']}\n/\n"
         f"&loading\n  normal_control = 'separation', tangential_control = 'separation'\n"
@@ -313,22 +366,11 @@ def run(args):
         col += count
     failed = {k: v for k, v in worst.items() if v[0] > args.tolerance}
 
-    conv = read_convergence(job)
-    step2 = [(inc, v) for (st, inc), v in sorted(conv.items()) if st == 2]
-    iters = [len(v) for _, v in step2]
     lines = [f"{job.name}: {args.element}, tangent option {args.tangent}, point {point}, "
              f"{n} printed increments",
              "agreement with interlock-history (max |ccx - history| / max |ccx|):"]
     lines += [f"  {k:28s} {v[0]:.2e}  (scale {v[1]:.4g})" for k, v in sorted(worst.items())]
-    if iters:
-        srt = sorted(iters)
-        lines.append(f"slip step: {len(iters)} increments, global iterations per increment: "
-                     f"median {srt[len(srt) // 2]}, max {max(iters)}, total {sum(iters)}")
-        lines.append("iterations per increment: " + " ".join(str(i) for i in iters))
-        worst_inc = max(step2, key=lambda kv: len(kv[1]))
-        lines.append(f"residual sequence of increment {worst_inc[0]} (largest residual force): "
-                     + " ".join(f"{r:.2e}" for _, _, r, _ in worst_inc[1])
-                     + "  (% of the average force)")
+    lines += convergence_lines(job)
     (out / f"{job.name}_convergence.txt").write_text("\n".join(lines) + "\n")
     print("\n".join(lines))
     if failed:
@@ -345,6 +387,12 @@ def main():
     parser.add_argument("--ccx")
     parser.add_argument("--history")
     parser.add_argument("--tolerance", type=float, default=1e-5)
+    parser.add_argument("--shear-traction", type=float,
+                        help="measurement variant: step 2 shears by this mean traction [MPa] "
+                             "(a force on the tied top face, automatic increments) instead of "
+                             "imposing the slip")
+    parser.add_argument("--prefractured", action="store_true",
+                        help="the interface fully debonded from the start (D = 1)")
     args = parser.parse_args()
     if args.command == "write":
         path = pathlib.Path(args.out) / f"direct_shear_{args.element.lower()}.inp"
