@@ -72,7 +72,7 @@ set_tests_properties(history_stress PROPERTIES LABELS history TIMEOUT 300)
 # composed of the two runs; (b) without wear (Fig. 5) it equals the plain history to round-off;
 # a case that stops names the run that failed; (c) a deck with extrapolated cases (Fig. 12
 # scene, zeta_0 sweep) follows the layout contract.
-foreach(mode wear nowear stopped)
+foreach(mode wear nowear stopped preload)
   add_test(NAME history_extrapolate_${mode}
     COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_extrapolate.py
             $<TARGET_FILE:interlock-history> ${INTERLOCK_TEST_DATA}

@@ -8,15 +8,18 @@ program interlock_history
   use interlock, only: interlock_material_t, interlock_solver_t, interlock_state_t, &
       interlock_version_string, status_ok
   use interlock_deck, only: deck_t, read_deck, deck_case, deck_n_cases
-  use interlock_mixed_control, only: history_t, run_history, run_history_extrapolated
-  use interlock_history_output, only: output_t, output_open, output_write_case, output_close, &
-      output_abort
+  use interlock_mixed_control, only: run_history, run_history_extrapolated
+  use interlock_history_output, only: output_t, case_writer_t, output_check_target, output_open, &
+      output_begin_case, output_end_case, output_close, output_abort
   use interlock_h5, only: h5_open_library, h5_close_library
   use interlock_deck_text, only: is_folder
   implicit none
 
   interface
-    subroutine c_exit(status) bind(C, name='exit')
+    !> _exit: ends the process without the exit handlers (HDF5 1.10's own handler crashes in
+    !> H5F__close_cb on a file whose close failed, e.g. on a full disk; the library is closed
+    !> before, by h5_close_library, and the Fortran units are flushed by `finish`).
+    subroutine c_exit(status) bind(C, name='_exit')
       import :: c_int
       integer(c_int), value :: status
     end subroutine c_exit
@@ -104,7 +107,7 @@ contains
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver
     type(interlock_state_t) :: state
-    type(history_t) :: hist
+    type(case_writer_t) :: writer
     character(len=:), allocatable :: label, final_name, origin, folder
     character(len=1024) :: message
     integer :: stat, icase, slash
@@ -135,8 +138,9 @@ contains
     if (slash > 1) folder = final_name(1:slash - 1)
     if (slash == 1) folder = '/'
     message = ''
-    if (is_folder(final_name)) then
-      message = 'the output file ' // final_name // ' is a folder' // origin
+    call output_check_target(final_name, path, message)
+    if (len_trim(message) > 0) then
+      message = trim(message) // origin
     else if (.not. is_folder(folder)) then
       message = 'the output folder ' // folder // ' does not exist' // origin
     end if
@@ -157,14 +161,17 @@ contains
         rc = max(rc, 1)
         return
       end if
-      if (deck%extrapolate) then
-        call run_history_extrapolated(mat, solver, deck%control, deck%times, deck%values, &
-                                      deck%steps, state, hist)
-      else
-        call run_history(mat, solver, deck%control, deck%times, deck%values, deck%steps, state, &
-                         hist)
+      call output_begin_case(out, icase, deck, mat, solver, label, writer, stat, message)
+      if (stat == 0) then
+        if (deck%extrapolate) then
+          call run_history_extrapolated(mat, solver, deck%control, deck%times, deck%values, &
+                                        deck%steps, state, writer)
+        else
+          call run_history(mat, solver, deck%control, deck%times, deck%values, deck%steps, &
+                           state, writer)
+        end if
+        call output_end_case(out, writer, stat, message)
       end if
-      call output_write_case(out, icase, deck, mat, solver, label, hist, stat, message)
       if (stat /= 0) then
         write (error_unit, '(a)') 'interlock-history: error: ' // path // ': ' // trim(message)
         call output_abort(out)
@@ -174,11 +181,11 @@ contains
       write (cbuf, '(i4.4)') icase
       if (len(label) > 0) then
         write (output_unit, '(a)') path // ': case ' // trim(cbuf) // ' (' // label // '): ' // &
-          hist%status
+          writer%status
       else
-        write (output_unit, '(a)') path // ': case ' // trim(cbuf) // ': ' // hist%status
+        write (output_unit, '(a)') path // ': case ' // trim(cbuf) // ': ' // writer%status
       end if
-      if (hist%status /= 'completed') rc = max(rc, 2)
+      if (writer%status /= 'completed') rc = max(rc, 2)
     end do
     call output_close(out, stat, message)
     if (stat /= 0) then
