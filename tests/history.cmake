@@ -109,3 +109,17 @@ foreach(mode every list stopped)
             ${mode})
   set_tests_properties(history_output_${mode} PROPERTIES LABELS history TIMEOUT 120)
 endforeach()
+
+# Reliability (README "Reliability", issue 10): the output never replaces the deck or a file that
+# is not an earlier result; a full disk (file-size limit; a 64 kB tmpfs where mounting is
+# allowed, else skipped) ends with exit 1 and a message, no crash, no file; SIGINT, SIGTERM and
+# SIGHUP remove the temporary file (SIGKILL leaves it); a 2e6-step history keeps its peak
+# memory below 64 MB (rows streamed to the file).
+foreach(mode overwrite fulldisk tmpfs signals memory)
+  add_test(NAME history_reliability_${mode}
+    COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_reliability.py
+            $<TARGET_FILE:interlock-history> ${PROJECT_SOURCE_DIR}/inputs/fig6.nml
+            ${CMAKE_CURRENT_BINARY_DIR}/history_reliability_${mode} ${mode})
+  set_tests_properties(history_reliability_${mode} PROPERTIES LABELS history TIMEOUT 600
+    SKIP_RETURN_CODE 77)
+endforeach()

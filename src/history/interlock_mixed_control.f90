@@ -126,8 +126,8 @@ contains
           hist%status = 'stopped at ' // step_place(steps, iseg, j, time) // ': ' // trim(message)
           return
         end if
-        call keep_row(hist, state_row(time, new, sigma, iterations, substeps), &
-                      step_place(steps, iseg, j, time), stat)
+        call keep_row(hist, state_row(time, new, sigma, iterations, substeps), steps, iseg, j, &
+                      stat)
         if (stat /= 0) return
         old = new
       end do
@@ -202,7 +202,7 @@ contains
         row = state_row(time, new_f, sigma_f, iterations, substeps)
         row%separation = 2.0_dp * new_f%s - new_c%s
         row%traction = 2.0_dp * sigma_f - sigma_c
-        call keep_row(hist, row, step_place(steps, iseg, j, time), stat)
+        call keep_row(hist, row, steps, iseg, j, stat)
         if (stat /= 0) return
         old_c = new_c
       end do
@@ -239,17 +239,19 @@ contains
     hist%status = 'completed'
   end subroutine begin_history
 
-  !> Hand the next row to the sink; stat /= 0 (the sink could not keep it): the history stops.
-  subroutine keep_row(hist, row, place, stat)
+  !> Hand the next row (step j of segment iseg) to the sink; stat /= 0 (the sink could not keep
+  !> it): the history stops.
+  subroutine keep_row(hist, row, steps, iseg, j, stat)
     class(history_sink_t), intent(inout) :: hist
     type(history_row_t), intent(in) :: row
-    character(len=*), intent(in) :: place
+    integer, intent(in) :: steps(:), iseg, j
     integer, intent(out) :: stat
     hist%n_rows = hist%n_rows + 1
     call hist%put(row, stat)
     if (stat /= 0) then
       hist%n_rows = hist%n_rows - 1
-      hist%status = 'stopped at ' // place // ': the row could not be stored'
+      hist%status = 'stopped at ' // step_place(steps, iseg, j, row%time) // &
+                    ': the row could not be stored'
     end if
   end subroutine keep_row
 

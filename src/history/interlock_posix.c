@@ -1,7 +1,8 @@
 /* What interlock-history needs of POSIX that Fortran 2008 does not give: the kind of a path
  * (regular file, folder, or something else such as a FIFO or a device), whether two paths
  * name the same file, and a guard that removes the temporary output file when the program is
- * interrupted (SIGINT, SIGTERM, SIGHUP). Called from Fortran through bind(C)
+ * interrupted (SIGINT, SIGTERM, SIGHUP; SIGXFSZ is ignored, so that a file-size limit is a
+ * failed write like a full disk). Called from Fortran through bind(C)
  * (module interlock_files).
  *
  * The guard is the one piece of process-wide state of the programs: a signal handler can only
@@ -77,6 +78,9 @@ int interlock_guard_file(const char *path)
             if (old.sa_handler == SIG_IGN) continue;
             if (sigaction(guarded_signals[k], &sa, NULL) != 0) return 2;
         }
+        /* A file-size limit (ulimit -f) then makes writes fail with EFBIG, reported like a
+         * full disk, instead of killing the program (SIGXFSZ) with the file half written. */
+        signal(SIGXFSZ, SIG_IGN);
         handlers_installed = 1;
     }
     guard_armed = 1;
