@@ -21,6 +21,7 @@ contains
     call run_case('tangential_traction_above_friction_limit_fails', &
                   tangential_traction_above_friction_limit_fails)
     call run_case('separated_interface_stops_history', separated_interface_stops_history)
+    call run_case('failed_step_names_its_target_and_place', failed_step_names_its_target_and_place)
     call run_case('extrapolated_history_is_composed_of_both_runs', &
                   extrapolated_history_is_composed_of_both_runs)
     call run_case('extrapolated_history_stops_naming_the_run', &
@@ -145,7 +146,8 @@ contains
                      reshape([0.0_dp, 0.0_dp, -0.001_dp, 0.01_dp, 2.0_dp, 0.01_dp], [2, 3]), &
                      [2, 2], initial, hist)
     call assert_true(hist%n_rows == 2, 'two rows kept')
-    call assert_true(index(hist%status, 'stopped at step 3') == 1, 'status: ' // hist%status)
+    call assert_true(index(hist%status, 'stopped at step 3 of 4 (segment 2 of 2, its step 1 of 2;') &
+                     == 1, 'status: ' // hist%status)
     call assert_true(index(hist%status, 'no s_T carries sigma_T') > 0, 'reason: ' // hist%status)
     call assert_equal(0.01_dp, hist%traction(2, 2), 1.0e-13_dp, 'row 2 carries sigma_T')
     ! Beyond H_N the traction is identically 0: the reason names the separation (SPEC D7).
@@ -160,6 +162,37 @@ contains
     call assert_true(stat /= status_ok, 'no shear beyond H_N')
     call assert_true(index(message, 'separated') > 0, 'reason: ' // trim(message))
   end subroutine separated_interface_stops_history
+
+  !> Issue 10 item 10: a step that fails names the step's own target (not the target of its
+  !> last halved sub-step, 0.01 MPa / 2**30 here) and why no solution exists: a fully damaged
+  !> interface (infinite H_N) or one separated beyond H_N carries no tension.
+  subroutine failed_step_names_its_target_and_place()
+    type(interlock_material_t) :: mat
+    type(interlock_solver_t) :: solver
+    type(interlock_state_t) :: old, new
+    type(control_t) :: ctl
+    real(dp) :: sigma(2)
+    integer :: it, sub, stat
+    character(len=512) :: message
+    call flat_material(mat, huge(1.0_dp), .false.)
+    call interlock_state_init(mat, old)
+    old%damage = 1.0_dp
+    old%beta = 1.0e3_dp
+    old%s = [0.5_dp, 0.0_dp]
+    old%sigma = 0.0_dp
+    ctl%traction = [.true., .false.]
+    call solve_step(mat, solver, ctl, old, [0.0_dp, 0.0_dp], [0.01_dp, 0.0_dp], new, sigma, it, &
+                    sub, stat, message)
+    call assert_true(stat /= status_ok, 'no tension on a fully damaged interface')
+    call assert_true(index(message, 'cannot reach sigma_N = 0.01 MPa') == 1, &
+                     'the step''s target first: ' // trim(message))
+    call assert_true(index(message, 'fully damaged') > 0, 'says why: ' // trim(message))
+    call flat_material(mat, 0.1_dp, .false.)
+    call solve_step(mat, solver, ctl, old, [0.0_dp, 0.0_dp], [0.01_dp, 0.0_dp], new, sigma, it, &
+                    sub, stat, message)
+    call assert_true(stat /= status_ok .and. index(message, 'has separated (s_N = 0.5 >= H_N') > 0, &
+                     'beyond H_N: says the interface has separated: ' // trim(message))
+  end subroutine failed_step_names_its_target_and_place
 
   !> Richardson extrapolation on a wearing RIA (Table 2, theta_0 = 30, theta_f = 7 deg,
   !> zeta_0 = 1 N/mm, H_N = 1 mm; implicit; a one-step preload, then 20 slip steps): row i is
@@ -259,7 +292,8 @@ contains
                      [2, 2], initial, hist)
     call assert_true(hist%n_rows == 2, 'two rows kept')
     call assert_true(index(hist%status, 'stopped at step 3 ') == 1, 'status: ' // hist%status)
-    call assert_true(index(hist%status, 'the run with the deck''s steps: no s_T carries sigma_T') > 0, &
+    call assert_true(index(hist%status, 'the run with the deck''s steps: cannot reach') > 0 .and. &
+                     index(hist%status, 'no s_T carries sigma_T') > 0, &
                      'reason: ' // hist%status)
     call assert_equal(0.01_dp, hist%traction(2, 2), 3.0e-13_dp, 'row 2 carries sigma_T')
   end subroutine extrapolated_history_stops_naming_the_run

@@ -427,7 +427,8 @@ contains
       attempts = attempts + 1
       if (attempts > max_attempts) then
         stat = 2
-        message = 'the step needed more than ' // format_integer(max_attempts) // ' attempts'
+        message = 'cannot reach ' // targets_text(ctl, target_end) // ' at the end of the ' // &
+                  'step: more than ' // format_integer(max_attempts) // ' attempts'
         exit
       end if
       f_next = min(1.0_dp, f + h)
@@ -447,8 +448,9 @@ contains
         h = 0.5_dp * h
         if (h < h_min) then
           stat = 2
-          message = trim(message) // ' (after cutting the step ' // format_integer(ctl%max_cuts) // &
-                    ' times)'
+          message = 'cannot reach ' // targets_text(ctl, target_end) // ' at the end of the ' // &
+                    'step: the step cut ' // format_integer(ctl%max_cuts) // ' times, its ' // &
+                    'sub-step to ' // targets_text(ctl, target) // ' fails: ' // trim(message)
           exit
         end if
       end if
@@ -461,6 +463,24 @@ contains
       sigma = old%sigma
     end if
   end subroutine solve_step
+
+  !> "sigma_N = 0.01 MPa", "sigma_N = -2 MPa, sigma_T = 0.3 MPa", or the prescribed separations
+  !> when no component is traction-driven: the values a (sub-)step is to reach.
+  function targets_text(ctl, target) result(text)
+    type(control_t), intent(in) :: ctl
+    real(dp), intent(in) :: target(2)
+    character(len=:), allocatable :: text
+    integer :: i
+    text = ''
+    do i = 1, 2
+      if (len(text) > 0) text = text // ', '
+      if (ctl%traction(i)) then
+        text = text // trim(traction_names(i)) // ' = ' // format_real(target(i)) // ' MPa'
+      else
+        text = text // trim(separation_names(i)) // ' = ' // format_real(target(i)) // ' mm'
+      end if
+    end do
+  end function targets_text
 
   !> Find s such that the driven components of the traction take `target` (the others are
   !> prescribed separations), from the state `old`, starting from s = old%s.
@@ -623,6 +643,13 @@ contains
       if (mat%use_depth .and. s(1) >= mat%h_n .and. i == 2) then
         reason = trim(reason) // ': the interface has separated (s_N = ' // format_real(s(1)) // &
                  ' >= H_N = ' // format_real(mat%h_n) // ' mm) and transmits no traction'
+      else if (mat%use_depth .and. old%s(1) >= mat%h_n .and. i == 1 .and. target > 0.0_dp) then
+        reason = trim(reason) // ': the interface has separated (s_N = ' // format_real(old%s(1)) // &
+                 ' >= H_N = ' // format_real(mat%h_n) // ' mm) and carries no tension'
+      else if (i == 1 .and. target > 0.0_dp .and. r_max + target <= 0.0_dp .and. &
+               all(old%damage(1:mat%n_planes) >= 1.0_dp)) then
+        reason = trim(reason) // ': the interface is fully damaged (D = 1 on every ' // &
+                 'microplane) and carries no tension'
       end if
     else
       reason = 'the ' // trim(traction_names(i)) // ' Newton iteration did not converge in ' // &
