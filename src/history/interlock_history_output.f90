@@ -254,7 +254,7 @@ contains
 
     subroutine property_planes(ip, values)
       integer, intent(in) :: ip
-      real(dp), intent(in) :: values(:)
+      real(dp), intent(in), contiguous :: values(:)
       call ok(h5_real_1d(g, trim(properties(ip)%name), values))
       call ok(h5_text(g, trim(properties(ip)%name) // '_unit', trim(properties(ip)%unit)))
     end subroutine property_planes
@@ -438,7 +438,7 @@ contains
   integer function h5_real_1d(g, name, x) result(stat)
     type(h5_file_t), intent(in) :: g
     character(len=*), intent(in) :: name
-    real(dp), intent(in) :: x(:)
+    real(dp), intent(in), contiguous :: x(:)
     call h5_attribute(g, name, x, stat)
   end function h5_real_1d
 
