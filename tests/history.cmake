@@ -123,3 +123,18 @@ foreach(mode overwrite fulldisk tmpfs signals memory)
   set_tests_properties(history_reliability_${mode} PROPERTIES LABELS history TIMEOUT 600
     SKIP_RETURN_CODE 77)
 endforeach()
+
+# Usage errors of the programs (issue 10 item 11): message and usage on stderr, status 2
+# (interlock-history: 1), no ERROR STOP or backtrace; --help and --version on stdout, status 0;
+# nothing written into the working folder (interlock-bench needs --out).
+# (interlock-fuzz is defined in stability.cmake, after this file: generator expressions resolve
+# it at generate time.)
+set(cli_programs history=$<TARGET_FILE:interlock-history> query=$<TARGET_FILE:interlock_query>
+    fuzz=$<TARGET_FILE:interlock-fuzz>)
+if(INTERLOCK_BUILD_BENCH AND EXISTS ${PROJECT_SOURCE_DIR}/bench/CMakeLists.txt)
+  list(APPEND cli_programs bench=$<TARGET_FILE:interlock-bench>)
+endif()
+add_test(NAME cli_usage
+  COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_usage.py
+          ${CMAKE_CURRENT_BINARY_DIR}/cli_usage ${cli_programs})
+set_tests_properties(cli_usage PROPERTIES LABELS history TIMEOUT 120)

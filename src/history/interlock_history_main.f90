@@ -52,6 +52,7 @@ program interlock_history
         case ('-d', '--output-dir')
           if (i == nargs) then
             write (error_unit, '(a)') 'interlock-history: error: ' // arg // ' needs a folder'
+            call usage(error_unit)
             call finish(1)
           end if
           i = i + 1
@@ -74,6 +75,7 @@ program interlock_history
     decks(n_decks) = arg
   end do
   if (n_decks == 0) then
+    write (error_unit, '(a)') 'interlock-history: error: no deck given'
     call usage(error_unit)
     call finish(1)
   end if

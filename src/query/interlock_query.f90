@@ -3,22 +3,34 @@
 !> docs/material.md is the output of `interlock-query --markdown`.
 program interlock_query
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+  use, intrinsic :: iso_c_binding, only: c_int
   use interlock, only: properties, statevars, n_properties, n_required_properties, &
       n_statevars_per_plane, n_statevars_global, umat_planes, umat_nstatv, statevar_index, &
       format_range, format_real, property_t, statevar_t, kind_real, kind_flag, kind_choice, &
       interlock_version_string, format_integer
   implicit none
-  character(len=64) :: arg
-  integer :: iarg, n
+  character(len=:), allocatable :: arg
+  integer :: iarg, n, length
+
+  interface
+    !> C exit: ends with a status and no "ERROR STOP" text or backtrace.
+    subroutine c_exit(status) bind(C, name='exit')
+      import :: c_int
+      integer(c_int), value :: status
+    end subroutine c_exit
+  end interface
 
   n = command_argument_count()
   if (n == 0) then
+    write (error_unit, '(a)') 'interlock-query: error: no option given'
     call usage(error_unit)
-    error stop 2
+    call finish(2)
   end if
   do iarg = 1, n
-    call get_command_argument(iarg, arg)
-    select case (trim(arg))
+    call get_command_argument(iarg, length=length)
+    allocate (character(len=length) :: arg)
+    if (length > 0) call get_command_argument(iarg, arg)
+    select case (arg)
     case ('--help', '-h')
       call usage(output_unit)
     case ('--version')
@@ -34,11 +46,13 @@ program interlock_query
     case ('--markdown')
       call print_markdown()
     case default
-      write (error_unit, '(a)') "interlock-query: unknown option '" // trim(arg) // &
-        "' (see interlock-query --help)"
-      error stop 2
+      write (error_unit, '(a)') "interlock-query: error: unknown option '" // arg // "'"
+      call usage(error_unit)
+      call finish(2)
     end select
+    deallocate (arg)
   end do
+  call finish(0)
 
 contains
 
@@ -55,8 +69,17 @@ contains
       '  --statev           the UMAT STATEV layout: index, name, plane, unit, description', &
       '  --markdown         the whole reference page (docs/material.md)', &
       '  --version          the library version', &
-      '  --help             this text'
+      '  --help             this text', &
+      '  Exit status: 0 done, 2 a usage error (no option, an unknown option), 3 an internal', &
+      '  inconsistency of the material table.'
   end subroutine usage
+
+  subroutine finish(code)
+    integer, intent(in) :: code
+    flush (output_unit)
+    flush (error_unit)
+    call c_exit(int(code, c_int))
+  end subroutine finish
 
   !> Text padded (or cut) to width w.
   pure function pad(text, w) result(out)
@@ -192,7 +215,7 @@ contains
     ivar = 1
     k = 0
     write (error_unit, '(a)') 'interlock-query: STATEV(' // format_integer(slot) // ') is not in the table'
-    error stop 3
+    call finish(3)
   end subroutine locate
 
   subroutine print_markdown()
