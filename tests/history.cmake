@@ -138,3 +138,10 @@ add_test(NAME cli_usage
   COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_usage.py
           ${CMAKE_CURRENT_BINARY_DIR}/cli_usage ${cli_programs})
 set_tests_properties(cli_usage PROPERTIES LABELS history TIMEOUT 120)
+
+# A UTF-8 byte order mark before the deck is accepted: the same results, the deck attribute is
+# the text without it.
+add_test(NAME history_bom_deck
+  COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_bad_decks.py --bom
+          $<TARGET_FILE:interlock-history> ${PROJECT_SOURCE_DIR}/inputs/fig6.nml)
+set_tests_properties(history_bom_deck PROPERTIES LABELS history)
