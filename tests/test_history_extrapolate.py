@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Global Richardson extrapolation of interlock-history (`&solver extrapolate = .true.`).
 
-usage: test_history_extrapolate.py PROGRAM DATA_DIR WORK_DIR MODE
+usage: test_history_extrapolate.py PROGRAM DATA_DIR WORK_DIR MODE [K_REF K1 K2 ...]
   MODE wear     Fig. 10 scene with wear (tests/data/reference/fig10, case thetaf_7: Table 2,
                 theta_0 = 30, theta_f = 7 deg, zeta_0 = 20 N/mm, H_N = 1 mm, sigma_N = -2 MPa,
                 slip 0 -> 20 mm, implicit). Errors at n = 400 .. 6400 slip steps against an
@@ -19,6 +19,10 @@ usage: test_history_extrapolate.py PROGRAM DATA_DIR WORK_DIR MODE
   preload       Fig. 12 (inputs/fig12.nml), extrapolated at 50, 100, 200 slip steps per mm
                 against 1600: the one-step preload is the same in both runs (its row is the
                 plain row bit for bit) and the error shrinks with the step (issue 10 item 9).
+                `preload K_REF K1 K2 ...` prints the errors at K1, K2, ... steps per mm against
+                K_REF instead (no check; the table of docs/history-output.md: 12800 100 200
+                400 800; the environment variable INTERLOCK_REFERENCE_PROGRAM names another
+                program for the reference run).
   stopped       An overloaded history (tangential traction beyond the interface's capacity):
                 exit status 2, the case stops at the same step as the plain run, its status
                 names the run that failed, and the rows before are kept.
@@ -273,7 +277,7 @@ def mode_stopped(program, data, work):
           f"the rows before the failed step are kept ({int(x['n_rows'])})")
 
 
-def mode_preload(program, data, work):
+def mode_preload(program, data, work, counts=()):
     """Fig. 12 (inputs/fig12.nml: a one-step preload to sigma_N = -2 MPa, then cyclic slip
     0 -> 10 -> -10 -> 10 mm with wear) at k = 50, 100, 200 slip steps per mm, extrapolated,
     against the extrapolation at 1600 steps per mm. The one-step preload is taken alike in both
@@ -286,7 +290,7 @@ def mode_preload(program, data, work):
         check(False, "inputs/fig12.nml: the steps line or the scheme line changed; update the test")
         return
 
-    def deck(k, extrapolate):
+    def deck(k, extrapolate, runner=program):
         stem = f"fig12_{'x' if extrapolate else 'p'}{k}"
         path = os.path.join(work, stem + ".nml")
         with open(path, "w") as f:
@@ -294,11 +298,15 @@ def mode_preload(program, data, work):
                                  f"steps = 1, {10 * k}, {20 * k}, {20 * k}")
                     .replace("scheme = 'implicit'", "scheme = 'implicit', extrapolate = "
                              + (".true." if extrapolate else ".false.")))
-        c, _ = run(program, work, path)
+        c, _ = run(runner, work, path)
         return None if c is None else c[0]
 
     ks, k_ref = [50, 100, 200], 1600
-    ref = deck(k_ref, True)
+    if counts:                      # docs/history-output.md: preload 12800 100 200 400 800
+        k_ref, ks = counts[0], list(counts[1:])
+    # The reference may come from another build (INTERLOCK_REFERENCE_PROGRAM), to measure an
+    # earlier program against the limit of this one (the "before" row of the docs).
+    ref = deck(k_ref, True, os.environ.get("INTERLOCK_REFERENCE_PROGRAM", program))
     plain = deck(ks[0], False)
     extra = [deck(k, True) for k in ks]
     if ref is None or plain is None or any(c is None for c in extra):
@@ -314,6 +322,8 @@ def mode_preload(program, data, work):
         errors.append(e.max() / scale)
         print(f"   k = {k:4d} steps/mm: max |sigma_T - ref| / max |sigma_T| = {errors[-1]:.2e} "
               f"(at time {c['time'][e.argmax()]:.2f})")
+    if counts:
+        return
     check(errors[-1] < 0.1 * errors[0] and errors[-1] < 1e-5,
           f"the extrapolated error shrinks with the step: {errors[0]:.1e} at {ks[0]}, "
           f"{errors[-1]:.1e} at {ks[-1]} steps/mm (< 1/10 of it and < 1e-5; it stayed at 4.3e-5 "
@@ -321,13 +331,18 @@ def mode_preload(program, data, work):
 
 
 def main(argv):
-    if len(argv) != 4 or argv[3] not in ("wear", "nowear", "stopped", "preload"):
+    if len(argv) < 4 or argv[3] not in ("wear", "nowear", "stopped", "preload") or \
+            (len(argv) > 4 and argv[3] != "preload"):
         print(__doc__)
         return 2
-    program, data, work, mode = argv
+    program, data, work, mode = argv[:4]
+    counts = [int(a) for a in argv[4:]]
     os.makedirs(work, exist_ok=True)
-    {"wear": mode_wear, "nowear": mode_nowear, "stopped": mode_stopped,
-     "preload": mode_preload}[mode](program, data, work)
+    if mode == "preload":
+        mode_preload(program, data, work, counts)
+    else:
+        {"wear": mode_wear, "nowear": mode_nowear, "stopped": mode_stopped}[mode](program, data,
+                                                                                  work)
     print(f"history_extrapolate {mode}: {failures} failed")
     return 1 if failures else 0
 

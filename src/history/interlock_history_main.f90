@@ -223,7 +223,10 @@ contains
       'Runs the point history of each deck (a Fortran namelist, docs/deck-format.md) and', &
       'writes one HDF5 file per deck (docs/history-output.md): the &output file, or the', &
       'deck''s name with .h5 in the working folder. The file is written as NAME.h5.tmp-PID', &
-      'and renamed when complete: a rejected deck or a failed write leaves no file.', &
+      'and renamed when complete: a rejected deck or a failed write leaves no file, and', &
+      'SIGINT, SIGTERM or SIGHUP remove the temporary file (SIGKILL leaves it). An existing', &
+      'file is replaced only if it is an earlier result of interlock-history: never the', &
+      'deck or any other file.', &
       '', &
       'Options:', &
       '  -d, --output-dir DIR  write the files into DIR (an existing folder), same base names', &
@@ -249,11 +252,12 @@ contains
       '', &
       'Global Richardson extrapolation (&solver extrapolate = .true.; default .false.):', &
       'each case is run twice from the same initial state, with the deck''s steps (n) and', &
-      'with every segment''s step count doubled (2n). The history is written at the n run''s', &
+      'with the step count of every segment of more than one step doubled (2n; a one-step', &
+      'segment, e.g. the preload, is taken alike in both). The history is written at the n run''s', &
       'steps: separation and traction are 2 u(2n) - u(n) (second order where the scheme is', &
       'first order in the step: scheme = ''implicit'' with wear), the state variables and', &
       'energies are the 2n run''s (not extrapolated), iterations and substeps the sums of', &
-      'both runs (3 steps per row: up to 3x the bounds above); about 3x the CPU time of one', &
+      'both runs (up to 3 steps per row: 3x the bounds above); about 3x the CPU time of one', &
       'run. The case stops at the first step that either run cannot solve (status: which).', &
       '', &
       'What is written (&output): every = k keeps every k-th step (and the last one);', &
