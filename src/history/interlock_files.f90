@@ -1,12 +1,12 @@
-!> Files as the operating system sees them (interlock_posix.c): what a path names, whether two
-!> paths are the same file, and the guard that removes an unfinished output file when the
+!> Files as the operating system sees them (interlock_posix.c and the C library): what a path
+!> names, whether two paths are the same file, removing and renaming, and the guard that removes an unfinished output file when the
 !> program is interrupted (SIGINT, SIGTERM, SIGHUP).
 module interlock_files
   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
   implicit none
   private
   public :: path_absent, path_regular, path_folder, path_other, path_kind, same_file, &
-            guard_file, unguard_file
+            guard_file, unguard_file, remove_file, rename_file, process_id
 
   !> What a path names (path_kind): nothing, a regular file, a folder, anything else (a FIFO,
   !> a device, a socket).
@@ -27,6 +27,17 @@ module interlock_files
     end function c_guard_file
     subroutine c_unguard_file() bind(C, name='interlock_unguard_file')
     end subroutine c_unguard_file
+    integer(c_int) function c_rename(old, new) bind(C, name='rename')
+      import :: c_int, c_char
+      character(kind=c_char), intent(in) :: old(*), new(*)
+    end function c_rename
+    integer(c_int) function c_remove(path) bind(C, name='remove')
+      import :: c_int, c_char
+      character(kind=c_char), intent(in) :: path(*)
+    end function c_remove
+    integer(c_int) function c_getpid() bind(C, name='getpid')
+      import :: c_int
+    end function c_getpid
   end interface
 
 contains
@@ -55,5 +66,25 @@ contains
   subroutine unguard_file()
     call c_unguard_file()
   end subroutine unguard_file
+
+  !> Remove a file if it is there (nothing happens otherwise).
+  subroutine remove_file(path)
+    character(len=*), intent(in) :: path
+    integer(c_int) :: ignore
+    ignore = c_remove(path // c_null_char)
+  end subroutine remove_file
+
+  !> Give file `old` the name `new` (replacing a file of that name in one step). stat /= 0:
+  !> it could not.
+  subroutine rename_file(old, new, stat)
+    character(len=*), intent(in) :: old, new
+    integer, intent(out) :: stat
+    stat = int(c_rename(old // c_null_char, new // c_null_char))
+  end subroutine rename_file
+
+  !> This process's id.
+  integer function process_id()
+    process_id = int(c_getpid())
+  end function process_id
 
 end module interlock_files

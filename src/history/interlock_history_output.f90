@@ -9,7 +9,6 @@
 !> SIGINT, SIGTERM, SIGHUP) and renamed when complete. It never replaces a file that is not an
 !> earlier result of interlock-history (output_check_target).
 module interlock_history_output
-  use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
   use interlock, only: dp, rad_to_deg, interlock_material_t, interlock_solver_t, properties, &
       prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
@@ -20,7 +19,7 @@ module interlock_history_output
   use interlock_deck, only: deck_t, deck_n_cases, n_datasets, history_datasets
   use interlock_mixed_control, only: history_row_t, history_sink_t, history_t
   use interlock_files, only: path_kind, path_absent, path_regular, path_folder, same_file, &
-      guard_file, unguard_file
+      guard_file, unguard_file, remove_file, rename_file, process_id
   implicit none
   private
   public :: output_t, case_writer_t, output_check_target, output_open, output_begin_case, &
@@ -60,19 +59,6 @@ module interlock_history_output
     procedure :: put => writer_put
   end type case_writer_t
 
-  interface
-    integer(c_int) function c_rename(old, new) bind(C, name='rename')
-      import :: c_int, c_char
-      character(kind=c_char), intent(in) :: old(*), new(*)
-    end function c_rename
-    integer(c_int) function c_remove(path) bind(C, name='remove')
-      import :: c_int, c_char
-      character(kind=c_char), intent(in) :: path(*)
-    end function c_remove
-    integer(c_int) function c_getpid() bind(C, name='getpid')
-      import :: c_int
-    end function c_getpid
-  end interface
 
 contains
 
@@ -113,7 +99,7 @@ contains
     character(len=16) :: pid
 
     message = ''
-    write (pid, '(i0)') c_getpid()
+    write (pid, '(i0)') process_id()
     out%final_name = final_name
     out%temp_name = final_name // '.tmp-' // trim(pid)
     call guard_file(out%temp_name, stat)
@@ -394,7 +380,7 @@ contains
       call unguard_file()
       return
     end if
-    stat = c_rename(out%temp_name // c_null_char, out%final_name // c_null_char)
+    call rename_file(out%temp_name, out%final_name, stat)
     if (stat /= 0) then
       message = 'cannot rename ' // out%temp_name // ' to ' // out%final_name
       call remove_file(out%temp_name)
@@ -415,11 +401,6 @@ contains
     call unguard_file()
   end subroutine output_abort
 
-  subroutine remove_file(path)
-    character(len=*), intent(in) :: path
-    integer(c_int) :: ignore
-    ignore = c_remove(path // c_null_char)
-  end subroutine remove_file
 
   ! Function wrappers so that a chain of attribute writes stops at the first failure.
   integer function h5_text(g, name, text) result(stat)
