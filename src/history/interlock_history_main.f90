@@ -1,7 +1,9 @@
 !> interlock-history DECK.nml [more decks]: each deck -> one HDF5 file (docs/history-output.md).
-!> Exit status: 0 every case of every deck completed; 1 a deck was rejected or a file could not
-!> be written (no result file, no temporary file is left for it); 2 every file was written but
-!> some case stopped early (its `status` attribute says why).
+!> Exit status: 0 every case of every deck completed; 1 a deck was rejected, its output would
+!> replace a file that is not an earlier result, or a file could not be written (no result file,
+!> no temporary file is left for it); 2 every file was written but some case stopped early (its
+!> `status` attribute says why). SIGINT, SIGTERM, SIGHUP: the temporary file is removed and the
+!> program ends by the signal (interlock_posix.c).
 program interlock_history
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
   use, intrinsic :: iso_c_binding, only: c_int
