@@ -157,8 +157,13 @@ def mode_fulldisk(program, deck, work, tmpfs=False):
     return None
 
 
-def long_deck(path, steps, every=1):
-    """A separation-driven slip history of `steps` steps on the paper's 3-plane RIA."""
+def long_deck(path, steps, every=1, cases=1):
+    """A separation-driven slip history of `steps` steps on the paper's 3-plane RIA (`cases` > 1:
+    a sweep over mu with that many cases)."""
+    sweep = ""
+    if cases > 1:
+        sweep = ("&sweep\n  parameter = 'mu', values = "
+                 + ", ".join(f"{0.5 + 0.01 * i:.2f}" for i in range(cases)) + "\n/\n")
     with open(path, "w") as f:
         f.write(f"""! written by test_history_reliability.py
 &interface
@@ -177,13 +182,14 @@ def long_deck(path, steps, every=1):
 &output
   every = {every}
 /
-""")
+""" + sweep)
 
 
 def mode_signals(program, deck, work):
     stem = "long"
     deck_path = os.path.join(work, stem + ".nml")
-    long_deck(deck_path, 2000000)
+    # Long (10 x 2e6 steps: seconds even in Release) but small (every = 1000: a few MB).
+    long_deck(deck_path, 2000000, every=1000, cases=10)
     final = os.path.join(work, stem + ".h5")
     # An earlier result, which an interrupted run must leave as it was.
     deck_with_output(deck, os.path.join(work, "earlier.nml"), final)
