@@ -159,8 +159,10 @@ contains
     np = mat%n_planes
     writer%every = deck%every
     writer%wanted = deck%stored
-    ! Rows kept: 0, every, 2 every, ... and the last; a chunk holds at most max_chunk_rows.
-    writer%block_rows = max(1, min(max_chunk_rows, (max(deck%n_steps, 1) - 1) / deck%every + 2))
+    ! Rows kept of a completed case: 0, every, 2 every, ... and the last; a chunk holds them all
+    ! (a small file stays small), or max_chunk_rows.
+    k = max(deck%n_steps, 1) - 1
+    writer%block_rows = min(max_chunk_rows, k / deck%every + 1 + merge(1, 0, mod(k, deck%every) /= 0))
     writer%block%n_planes = np
     call writer%block%reserve(writer%block_rows)
     ! &output store: the datasets written.
