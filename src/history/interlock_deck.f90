@@ -131,8 +131,9 @@ module interlock_deck
     integer :: n_steps = 0
     ! &solver
     type(interlock_solver_t) :: solver
-    !> Global Richardson extrapolation: run each case with the deck's steps and with every
-    !> segment's step count doubled; separation and traction = 2 u(2n) - u(n)
+    !> Global Richardson extrapolation: run each case with the deck's steps and with the step
+    !> count of every segment of more than one step doubled; separation and traction =
+    !> 2 u(2n) - u(n)
     logical :: extrapolate = .false.
     ! &sweep
     character(len=name_len) :: sweep_parameter = ''
