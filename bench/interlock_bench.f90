@@ -13,7 +13,7 @@
 !> usage on stderr and exits with status 2; --help prints it on stdout (status 0).
 program interlock_bench
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
-  use, intrinsic :: iso_c_binding, only: c_int
+  use interlock_cli, only: exit_program
   use interlock, only: dp, max_planes, interlock_material_t, interlock_solver_t, interlock_state_t, &
       interlock_info_t, interlock_update, interlock_state_init, scheme_explicit, scheme_implicit, &
       scheme_name, status_ok, interlock_version_string
@@ -34,13 +34,6 @@ program interlock_bench
   real(dp) :: target_error
   integer :: problems
 
-  interface
-    !> C exit: ends with a status and no "STOP"/"ERROR STOP" text or backtrace.
-    subroutine c_exit(status) bind(C, name='exit')
-      import :: c_int
-      integer(c_int), value :: status
-    end subroutine c_exit
-  end interface
 
   call parse_arguments()
   problems = 0
@@ -82,7 +75,7 @@ contains
       select case (trim(arg))
       case ('--version')
         write (output_unit, '(a)') 'interlock-bench ' // interlock_version_string
-        call finish(0)
+        call exit_program(0)
       case ('--quick')
         quick = .true.
       case ('--out', '--only', '--target')
@@ -168,16 +161,10 @@ contains
     write (unit, '(a)') '  writes DIR/cost.csv, DIR/work_precision.csv, ' // &
       'DIR/reference.csv, DIR/wp_summary.csv (DIR must exist)'
     write (unit, '(a)') '  exit status: 0 done, 1 a problem found (see the output), 2 a usage error'
-    if (len_trim(message) > 0) call finish(2)
-    call finish(0)
+    if (len_trim(message) > 0) call exit_program(2)
+    call exit_program(0)
   end subroutine usage
 
-  subroutine finish(code)
-    integer, intent(in) :: code
-    flush (output_unit)
-    flush (error_unit)
-    call c_exit(int(code, c_int))
-  end subroutine finish
 
   pure function path(name) result(p)
     character(len=*), intent(in) :: name

@@ -6,7 +6,7 @@
 !> program ends by the signal (interlock_posix.c).
 program interlock_history
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-  use, intrinsic :: iso_c_binding, only: c_int
+  use interlock_cli, only: exit_program
   use interlock, only: interlock_material_t, interlock_solver_t, interlock_state_t, &
       interlock_version_string, status_ok
   use interlock_deck, only: deck_t, read_deck, deck_case, deck_n_cases
@@ -17,15 +17,6 @@ program interlock_history
   use interlock_deck_text, only: is_folder
   implicit none
 
-  interface
-    !> _exit: ends the process without the exit handlers (HDF5 1.10's own handler crashes in
-    !> H5F__close_cb on a file whose close failed, e.g. on a full disk; the library is closed
-    !> before, by h5_close_library, and the Fortran units are flushed by `finish`).
-    subroutine c_exit(status) bind(C, name='_exit')
-      import :: c_int
-      integer(c_int), value :: status
-    end subroutine c_exit
-  end interface
 
   character(len=:), allocatable :: arg, command, output_dir
   character(len=4096), allocatable :: decks(:)
@@ -47,15 +38,15 @@ program interlock_history
         select case (arg)
         case ('-h', '--help')
           call usage(output_unit)
-          call finish(0)
+          call exit_program(0)
         case ('--version')
           write (output_unit, '(a)') 'interlock-history ' // interlock_version_string
-          call finish(0)
+          call exit_program(0)
         case ('-d', '--output-dir')
           if (i == nargs) then
             write (error_unit, '(a)') 'interlock-history: error: ' // arg // ' needs a folder'
             call usage(error_unit)
-            call finish(1)
+            call exit_program(1)
           end if
           i = i + 1
           output_dir = argument(i)
@@ -64,14 +55,14 @@ program interlock_history
         case default
           write (error_unit, '(a)') 'interlock-history: error: unknown option ' // arg
           call usage(error_unit)
-          call finish(1)
+          call exit_program(1)
         end select
         cycle
       end if
     end if
     if (len(arg) > len(decks)) then
       write (error_unit, '(a)') 'interlock-history: error: a deck path is longer than 4096 characters'
-      call finish(1)
+      call exit_program(1)
     end if
     n_decks = n_decks + 1
     decks(n_decks) = arg
@@ -79,13 +70,13 @@ program interlock_history
   if (n_decks == 0) then
     write (error_unit, '(a)') 'interlock-history: error: no deck given'
     call usage(error_unit)
-    call finish(1)
+    call exit_program(1)
   end if
   if (len(output_dir) > 0) then
     if (.not. is_folder(output_dir)) then
       write (error_unit, '(a)') 'interlock-history: error: --output-dir ' // output_dir // &
         ': no such folder (it must exist)'
-      call finish(1)
+      call exit_program(1)
     end if
   end if
   command = command_line()
@@ -93,13 +84,13 @@ program interlock_history
   call h5_open_library(stat)
   if (stat /= 0) then
     write (error_unit, '(a)') 'interlock-history: error: cannot initialise the HDF5 library'
-    call finish(1)
+    call exit_program(1)
   end if
   do i = 1, n_decks
     call run_deck(trim(decks(i)), rc)
   end do
   call h5_close_library(stat)
-  call finish(rc)
+  call exit_program(rc)
 
 contains
 
@@ -270,11 +261,5 @@ contains
       '2,000,000 steps per case, 1000 sweep values.'
   end subroutine usage
 
-  subroutine finish(code)
-    integer, intent(in) :: code
-    flush (output_unit)
-    flush (error_unit)
-    call c_exit(int(code, c_int))
-  end subroutine finish
 
 end program interlock_history

@@ -3,7 +3,7 @@
 !> docs/material.md is the output of `interlock-query --markdown`.
 program interlock_query
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-  use, intrinsic :: iso_c_binding, only: c_int
+  use interlock_cli, only: exit_program
   use interlock, only: properties, statevars, n_properties, n_required_properties, &
       n_statevars_per_plane, n_statevars_global, umat_planes, umat_nstatv, statevar_index, &
       format_range, format_real, property_t, statevar_t, kind_real, kind_flag, kind_choice, &
@@ -12,19 +12,12 @@ program interlock_query
   character(len=:), allocatable :: arg
   integer :: iarg, n, length
 
-  interface
-    !> C exit: ends with a status and no "ERROR STOP" text or backtrace.
-    subroutine c_exit(status) bind(C, name='exit')
-      import :: c_int
-      integer(c_int), value :: status
-    end subroutine c_exit
-  end interface
 
   n = command_argument_count()
   if (n == 0) then
     write (error_unit, '(a)') 'interlock-query: error: no option given'
     call usage(error_unit)
-    call finish(2)
+    call exit_program(2)
   end if
   do iarg = 1, n
     call get_command_argument(iarg, length=length)
@@ -48,11 +41,11 @@ program interlock_query
     case default
       write (error_unit, '(a)') "interlock-query: error: unknown option '" // arg // "'"
       call usage(error_unit)
-      call finish(2)
+      call exit_program(2)
     end select
     deallocate (arg)
   end do
-  call finish(0)
+  call exit_program(0)
 
 contains
 
@@ -74,12 +67,6 @@ contains
       '  inconsistency of the material table.'
   end subroutine usage
 
-  subroutine finish(code)
-    integer, intent(in) :: code
-    flush (output_unit)
-    flush (error_unit)
-    call c_exit(int(code, c_int))
-  end subroutine finish
 
   !> Text padded (or cut) to width w.
   pure function pad(text, w) result(out)
@@ -215,7 +202,7 @@ contains
     ivar = 1
     k = 0
     write (error_unit, '(a)') 'interlock-query: STATEV(' // format_integer(slot) // ') is not in the table'
-    call finish(3)
+    call exit_program(3)
   end subroutine locate
 
   subroutine print_markdown()

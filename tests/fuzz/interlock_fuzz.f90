@@ -12,8 +12,8 @@
 !> usage on stderr).
 program interlock_fuzz
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
-  use, intrinsic :: iso_c_binding, only: c_int
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use interlock_cli, only: exit_program
   use interlock
   use interlock_replay, only: interlock_write_replay_deck
   use test_stability_tools
@@ -26,13 +26,6 @@ program interlock_fuzz
   type(rng_t) :: rng
   real(dp) :: t0, t1
 
-  interface
-    !> C exit: ends with a status and no "ERROR STOP" text or backtrace.
-    subroutine c_exit(status) bind(C, name='exit')
-      import :: c_int
-      integer(c_int), value :: status
-    end subroutine c_exit
-  end interface
 
   call parse_arguments()
   call rng_seed(rng, seed)
@@ -63,10 +56,10 @@ contains
       select case (trim(arg))
       case ('-h', '--help')
         call usage(output_unit)
-        call finish(0)
+        call exit_program(0)
       case ('--version')
         write (output_unit, '(a)') 'interlock-fuzz ' // interlock_version_string
-        call finish(0)
+        call exit_program(0)
       case ('--updates', '--seed', '--fd-every', '--deck-dir', '--max-decks')
         if (i == n) call usage_error(trim(arg) // ' needs a value')
         call get_command_argument(i + 1, val)
@@ -106,15 +99,9 @@ contains
     character(len=*), intent(in) :: message
     write (error_unit, '(a)') 'interlock-fuzz: error: ' // message
     call usage(error_unit)
-    call finish(2)
+    call exit_program(2)
   end subroutine usage_error
 
-  subroutine finish(code)
-    integer, intent(in) :: code
-    flush (output_unit)
-    flush (error_unit)
-    call c_exit(int(code, c_int))
-  end subroutine finish
 
   !> A random admissible material and solver.
   subroutine random_material(mat, solver)
