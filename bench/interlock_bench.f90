@@ -7,10 +7,13 @@
 !>    scenes at constant normal traction: error against a converged reference versus CPU time,
 !>    the observed order, and the CPU time each scheme needs for a given error.
 !>
-!> Usage: interlock-bench [--quick] [--out DIR] [--only cost|precision] [--target ERR]
-!> Writes DIR/cost.csv, DIR/work_precision.csv, DIR/reference.csv and DIR/wp_summary.csv.
+!> Usage: interlock-bench --out DIR [--quick] [--only cost|precision] [--target ERR]
+!> Writes DIR/cost.csv, DIR/work_precision.csv, DIR/reference.csv and DIR/wp_summary.csv (DIR
+!> is required: nothing is written into the working folder unasked). A usage error prints the
+!> usage on stderr and exits with status 2; --help prints it on stdout (status 0).
 program interlock_bench
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
+  use interlock_cli, only: exit_program
   use interlock, only: dp, max_planes, interlock_material_t, interlock_solver_t, interlock_state_t, &
       interlock_info_t, interlock_update, interlock_state_init, scheme_explicit, scheme_implicit, &
       scheme_name, status_ok, interlock_version_string
@@ -30,6 +33,7 @@ program interlock_bench
   character(len=512) :: out_dir
   real(dp) :: target_error
   integer :: problems
+
 
   call parse_arguments()
   problems = 0
@@ -58,16 +62,20 @@ contains
     quick = .false.
     do_cost = .true.
     do_precision = .true.
-    out_dir = '.'
+    out_dir = ''
     target_error = 1.0e-4_dp
     dump_scene = ''
     profile_set = -1
     profile_tol = 0.0_dp
     n = command_argument_count()
+    if (n == 0) call usage('no arguments: --out DIR is required')
     i = 1
     do while (i <= n)
       call get_command_argument(i, arg)
       select case (trim(arg))
+      case ('--version')
+        write (output_unit, '(a)') 'interlock-bench ' // interlock_version_string
+        call exit_program(0)
       case ('--quick')
         quick = .true.
       case ('--out', '--only', '--target')
@@ -77,6 +85,7 @@ contains
         select case (trim(arg))
         case ('--out')
           out_dir = val
+          if (len_trim(out_dir) == 0) call usage('--out takes a folder')
         case ('--only')
           do_cost = trim(val) == 'cost'
           do_precision = trim(val) == 'precision'
@@ -126,24 +135,36 @@ contains
       end select
       i = i + 1
     end do
+    if (len_trim(dump_scene) == 0 .and. profile_set < 0 .and. len_trim(out_dir) == 0) &
+      call usage('--out DIR is required: the existing folder for the CSV files')
   end subroutine parse_arguments
 
+  !> Print the usage and end: on stdout with status 0 when `message` is empty (--help), else
+  !> the message and the usage on stderr, status 2.
   subroutine usage(message)
     character(len=*), intent(in) :: message
-    if (len_trim(message) > 0) write (error_unit, '(a)') 'interlock-bench: ' // message
-    write (error_unit, '(a)') 'usage: interlock-bench [--quick] [--out DIR] ' // &
+    integer :: unit
+    unit = output_unit
+    if (len_trim(message) > 0) then
+      unit = error_unit
+      write (unit, '(a)') 'interlock-bench: error: ' // trim(message)
+    end if
+    write (unit, '(a)') 'usage: interlock-bench --out DIR [--quick] ' // &
       '[--only cost|precision] [--target ERR]'
-    write (error_unit, '(a)') '       interlock-bench --profile SET SCHEME PASSES [TOL]  ' // &
+    write (unit, '(a)') '       interlock-bench --profile SET SCHEME PASSES [TOL]  ' // &
       '(one cost configuration only, for valgrind/gprof: SET 0 bilinear, 1..5 effect sets; ' // &
       'SCHEME 1 explicit, 2 implicit; TOL substepping tolerance, default 0; 3 x 4000-point ' // &
       'histories; see bench/profile_updates.py)'
-    write (error_unit, '(a)') '       interlock-bench --history SCENE SCHEME TOL N  ' // &
+    write (unit, '(a)') '       interlock-bench --history SCENE SCHEME TOL N  ' // &
       '(one run of a scene as CSV on stdout; SCENE fig11|fig12|granite, SCHEME explicit|implicit)'
-    write (error_unit, '(a)') '  writes DIR/cost.csv, DIR/work_precision.csv, ' // &
-      'DIR/reference.csv, DIR/wp_summary.csv (DIR must exist; default .)'
-    if (len_trim(message) > 0) error stop 2
-    stop
+    write (unit, '(a)') '       interlock-bench --help | --version'
+    write (unit, '(a)') '  writes DIR/cost.csv, DIR/work_precision.csv, ' // &
+      'DIR/reference.csv, DIR/wp_summary.csv (DIR must exist)'
+    write (unit, '(a)') '  exit status: 0 done, 1 a problem found (see the output), 2 a usage error'
+    if (len_trim(message) > 0) call exit_program(2)
+    call exit_program(0)
   end subroutine usage
+
 
   pure function path(name) result(p)
     character(len=*), intent(in) :: name

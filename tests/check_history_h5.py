@@ -5,7 +5,8 @@ usage: check_history_h5.py [--allow-stopped] FILE.h5 [...]
 Exit status 0 when every file follows the contract; the failures are printed otherwise.
 The datasets checked are those the case's `stored` attribute lists (&output store; it must list
 exactly the datasets of the case, time, separation and traction always); a completed case holds
-the rows that `every` keeps of its n_steps (0, every, 2 every, ... and the last).
+the rows that `every` keeps of its n_steps (0, every, 2 every, ... and the last). Every text
+attribute is a variable-length UTF-8 string (h5py returns str, not bytes).
 """
 import sys
 
@@ -45,9 +46,27 @@ def text(value):
     return value.decode() if isinstance(value, (bytes, np.bytes_)) else str(value)
 
 
+def byte_strings(f):
+    """Every text attribute is a variable-length UTF-8 string, which h5py returns as str: the
+    names of the attributes that come back as bytes (fixed-length byte strings) instead."""
+    found = []
+
+    def visit(name, obj):
+        for a, v in obj.attrs.items():
+            if isinstance(v, (bytes, np.bytes_)) or (isinstance(v, np.ndarray) and v.dtype.kind == "S"):
+                found.append(f"{name or '/'}:{a}")
+    visit("", f)
+    f.visititems(visit)
+    return found
+
+
 def check_file(path, allow_stopped):
     errors = []
     with h5py.File(path, "r") as f:
+        wrong = byte_strings(f)
+        if wrong:
+            errors.append(f"{len(wrong)} text attributes are byte strings, not UTF-8 strings "
+                          f"(h5py returns bytes), e.g. {wrong[:3]}")
         for a in FILE_ATTRS:
             if a not in f.attrs:
                 errors.append(f"file attribute '{a}' missing")

@@ -72,7 +72,7 @@ set_tests_properties(history_stress PROPERTIES LABELS history TIMEOUT 300)
 # composed of the two runs; (b) without wear (Fig. 5) it equals the plain history to round-off;
 # a case that stops names the run that failed; (c) a deck with extrapolated cases (Fig. 12
 # scene, zeta_0 sweep) follows the layout contract.
-foreach(mode wear nowear stopped)
+foreach(mode wear nowear stopped preload)
   add_test(NAME history_extrapolate_${mode}
     COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_extrapolate.py
             $<TARGET_FILE:interlock-history> ${INTERLOCK_TEST_DATA}
@@ -109,3 +109,39 @@ foreach(mode every list stopped)
             ${mode})
   set_tests_properties(history_output_${mode} PROPERTIES LABELS history TIMEOUT 120)
 endforeach()
+
+# Reliability (README "Reliability", issue 10): the output never replaces the deck or a file that
+# is not an earlier result; a full disk (file-size limit; a 64 kB tmpfs where mounting is
+# allowed, else skipped) ends with exit 1 and a message, no crash, no file; SIGINT, SIGTERM and
+# SIGHUP remove the temporary file (SIGKILL leaves it); a 2e6-step history keeps its peak
+# memory below 64 MB (rows streamed to the file).
+foreach(mode overwrite fulldisk tmpfs signals memory)
+  add_test(NAME history_reliability_${mode}
+    COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_reliability.py
+            $<TARGET_FILE:interlock-history> ${PROJECT_SOURCE_DIR}/inputs/fig6.nml
+            ${CMAKE_CURRENT_BINARY_DIR}/history_reliability_${mode} ${mode})
+  set_tests_properties(history_reliability_${mode} PROPERTIES LABELS history TIMEOUT 600
+    SKIP_RETURN_CODE 77)
+endforeach()
+
+# Usage errors of the programs (issue 10 item 11): message and usage on stderr, status 2
+# (interlock-history: 1), no ERROR STOP or backtrace; --help and --version on stdout, status 0;
+# nothing written into the working folder (interlock-bench needs --out).
+# (interlock-fuzz is defined in stability.cmake, after this file: generator expressions resolve
+# it at generate time.)
+set(cli_programs history=$<TARGET_FILE:interlock-history> query=$<TARGET_FILE:interlock_query>
+    fuzz=$<TARGET_FILE:interlock-fuzz>)
+if(INTERLOCK_BUILD_BENCH AND EXISTS ${PROJECT_SOURCE_DIR}/bench/CMakeLists.txt)
+  list(APPEND cli_programs bench=$<TARGET_FILE:interlock-bench>)
+endif()
+add_test(NAME cli_usage
+  COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_usage.py
+          ${CMAKE_CURRENT_BINARY_DIR}/cli_usage ${cli_programs})
+set_tests_properties(cli_usage PROPERTIES LABELS history TIMEOUT 120)
+
+# A UTF-8 byte order mark before the deck is accepted: the same results, the deck attribute is
+# the text without it.
+add_test(NAME history_bom_deck
+  COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_bad_decks.py --bom
+          $<TARGET_FILE:interlock-history> ${PROJECT_SOURCE_DIR}/inputs/fig6.nml)
+set_tests_properties(history_bom_deck PROPERTIES LABELS history)

@@ -18,7 +18,7 @@ set_tests_properties(test_stability_matrix PROPERTIES
 # The fuzzer: `interlock-fuzz --updates 10000000 --seed 7` for a long run; CTest runs 1e5
 # updates with a fixed seed. Failing inputs are written as replay decks in the build tree.
 add_executable(interlock-fuzz fuzz/interlock_fuzz.f90)
-target_link_libraries(interlock-fuzz PRIVATE interlock_stability_tools interlock::interlock)
+target_link_libraries(interlock-fuzz PRIVATE interlock_stability_tools interlock::interlock interlock_cli)
 target_compile_options(interlock-fuzz PRIVATE ${INTERLOCK_FFLAGS})
 set_target_properties(interlock-fuzz PROPERTIES
   Fortran_MODULE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/mod_interlock_fuzz)

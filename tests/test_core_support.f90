@@ -197,7 +197,7 @@ contains
   end function matrix_rel_error
 
   !> The first data row (17 columns, see tests/data/core/README.md) of a reference CSV copied
-  !> from /work/shared/reference; `path` is relative to the test's working directory (tests/).
+  !> from the independent reference curves (tests/data/reference); `path` is relative to the test's working directory (tests/).
   subroutine read_reference_row(path, row)
     character(len=*), intent(in) :: path
     real(dp), intent(out) :: row(17)

@@ -9,6 +9,9 @@ usage: test_history_bad_decks.py PROGRAM NAME.expected|NAME.nml [...]
        test_history_bad_decks.py --crlf PROGRAM DECK.nml
                                   a copy of DECK with Windows (CR LF) line ends gives the same
                                   HDF5 datasets as DECK itself (CR LF decks are accepted)
+       test_history_bad_decks.py --bom PROGRAM DECK.nml
+                                  the same with a UTF-8 byte order mark before the text (the
+                                  deck attribute is the text without it)
 
 NAME.expected (beside NAME.nml, in tests/data/bad_decks/ or the generated folder) holds one line
 per fragment; blank lines and lines starting with '#' are ignored; directives:
@@ -150,11 +153,23 @@ def generate(folder):
     os.makedirs(os.path.join(folder, "folder_deck.nml"), exist_ok=True)
     with open(os.path.join(folder, "folder_deck.expected"), "w") as f:
         f.write("# folder_deck.nml is a folder (written by --generate)\nthe deck is a folder\n")
+    # Not regular files: a FIFO (reading it would block) and the endless /dev/zero.
+    for name, make in (("fifo_deck", lambda p: os.mkfifo(p)),
+                       ("dev_zero_deck", lambda p: os.symlink("/dev/zero", p))):
+        target = os.path.join(folder, name + ".nml")
+        if os.path.lexists(target):
+            os.remove(target)
+        make(target)
+        with open(os.path.join(folder, name + ".expected"), "w") as f:
+            f.write(f"# {name}.nml is not a regular file (written by --generate)\n"
+                    "the deck is not a regular file\n")
+    write_pair(folder, "bom_only", b"\xef\xbb\xbf", ["the deck is empty"],
+               "a UTF-8 byte order mark and nothing else")
     write_pair(folder, "lone_cr", BASE.replace("\n", "\r").encode(),
                ["line ends", "carriage return"], "old Mac line ends (CR alone)")
 
 
-def crlf(program, deck):
+def crlf(program, deck, bom=False):
     import h5py
     import numpy as np
     with open(deck, "rb") as f:
@@ -165,8 +180,13 @@ def crlf(program, deck):
         crlf_deck = os.path.join(work, "crlf.nml")
         with open(lf_deck, "wb") as f:
             f.write(text.replace(b"\r\n", b"\n"))
+        # The variant: CR LF line ends, or (bom) a UTF-8 byte order mark before LF text.
+        want = text.replace(b"\r\n", b"\n")
+        variant = b"\xef\xbb\xbf" + want if bom else want.replace(b"\n", b"\r\n")
+        if not bom:
+            want = variant
         with open(crlf_deck, "wb") as f:
-            f.write(text.replace(b"\r\n", b"\n").replace(b"\n", b"\r\n"))
+            f.write(variant)
         for d in (lf_deck, crlf_deck):
             run = subprocess.run([program, "--output-dir", work, d], cwd=work, capture_output=True,
                                  text=True, errors="replace", timeout=TIMEOUT)
@@ -186,12 +206,15 @@ def crlf(program, deck):
                             problems.append(f"{case}/{name} differs")
                 deck_attr = b.attrs["deck"]
                 if not isinstance(deck_attr, bytes):
-                    deck_attr = deck_attr.encode()
-                if deck_attr != text.replace(b"\r\n", b"\n").replace(b"\n", b"\r\n"):
-                    problems.append("the deck attribute is not the CR LF text byte for byte")
+                    deck_attr = deck_attr.encode("utf-8", "surrogateescape")
+                if deck_attr != want:
+                    problems.append("the deck attribute is not the " +
+                                    ("text without its byte order mark" if bom else "CR LF text") +
+                                    " byte for byte")
     for p in problems:
         print("[FAIL] " + p)
-    print(f"history CR LF deck {os.path.basename(deck)}: " + ("FAILED" if problems else "same results"))
+    print(f"history {'UTF-8 BOM' if bom else 'CR LF'} deck {os.path.basename(deck)}: "
+          + ("FAILED" if problems else "same results"))
     return 1 if problems else 0
 
 
@@ -199,8 +222,8 @@ def main(argv):
     if len(argv) == 2 and argv[0] == "--generate":
         generate(argv[1])
         return 0
-    if len(argv) == 3 and argv[0] == "--crlf":
-        return crlf(argv[1], argv[2])
+    if len(argv) == 3 and argv[0] in ("--crlf", "--bom"):
+        return crlf(argv[1], argv[2], bom=argv[0] == "--bom")
     if len(argv) < 2:
         print(__doc__)
         return 2

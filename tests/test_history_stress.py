@@ -15,7 +15,8 @@ traction) history in 1, 2 or 40 steps per segment; two loadings:
 and both schemes (&sweep over scheme). All decks run in one call of the program.
 
 Checks per case (from the HDF5 file): status is 'completed' (n_rows = n_steps) or
-'stopped at step K (time T): <reason>' with K = n_rows + 1 and a reason of some words; the
+'stopped at step K of N (segment S of M, its step J of L; time T): <reason>' with
+K = n_rows + 1 = (steps of the segments before S) + J and a reason of some words; the
 datasets iterations and substeps exist with one value per row and
   0 <= iterations <= newton_max_iterations * A,  1 <= substeps <= 100000 * A,
   A = 4 (max_cuts + 1) (max_cuts + 2)  (the attempt limit of one step);
@@ -56,7 +57,8 @@ LOADINGS = {
 }
 SUBSTEP_TOLS = {"nosub": 0.0, "sub": 1e-3}
 STEPS = [1, 2, 40]
-STATUS_STOPPED = re.compile(r"^stopped at step (\d+) \(time ([^)]+)\): (.+)$")
+STATUS_STOPPED = re.compile(r"^stopped at step (\d+) of (\d+) \(segment (\d+) of (\d+), its step "
+                            r"(\d+) of (\d+); time ([^)]+)\): (?P<reason>.+)$")
 
 
 def fmt(values):
@@ -107,7 +109,7 @@ def targets(time, times, values):
 
 
 def check_case(label, g, times, normal, tangential, controls, problems, worst):
-    status = g.attrs["status"].decode()
+    status = str(g.attrs["status"])
     n_rows = int(g.attrs["n_rows"])
     n_steps = int(g.attrs["n_steps"])
     if status == "completed" and "overload" in label:
@@ -122,8 +124,17 @@ def check_case(label, g, times, normal, tangential, controls, problems, worst):
         else:
             if int(m.group(1)) != n_rows + 1:
                 problems.append(f"{label}: stopped at step {m.group(1)} but {n_rows} rows")
-            if len(m.group(3).split()) < 4 or "nan" in m.group(3).lower():
-                problems.append(f"{label}: reason '{m.group(3)}' is not a stated reason")
+            # The decks' segments: 1 step (the preload), then n steps each.
+            seg, j, n = int(m.group(3)), int(m.group(5)), int(m.group(6))
+            if int(m.group(1)) != j + (0 if seg == 1 else 1 + (seg - 2) * n):
+                problems.append(f"{label}: step {m.group(1)} is not segment {m.group(3)}'s step "
+                                f"{m.group(5)}")
+            if int(m.group(2)) != n_steps:
+                problems.append(f"{label}: stopped at step {m.group(1)} of {m.group(2)}, but "
+                                f"n_steps = {n_steps}")
+            reason = m.group("reason")
+            if len(reason.split()) < 4 or "nan" in reason.lower():
+                problems.append(f"{label}: reason '{reason}' is not a stated reason")
             worst["stopped"].append(f"{label}: {status}")
     for name in ("iterations", "substeps"):
         if name not in g:
@@ -200,7 +211,7 @@ def main(argv):
         with h5py.File(h5) as f:
             for case in f["cases"]:
                 g = f["cases"][case]
-                label = f"{os.path.basename(path)} {g.attrs['label'].decode()}"
+                label = f"{os.path.basename(path)} {str(g.attrs['label'])}"
                 check_case(label, g, times, normal, tangential, controls, problems, worst)
                 n_cases += 1
     print(f"history stress: {len(decks)} decks, {n_cases} cases, "

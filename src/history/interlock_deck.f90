@@ -18,8 +18,8 @@ module interlock_deck
       is_infinite_value, &
       status_ok, status_bad_input
   use interlock_mixed_control, only: control_t
-  use interlock_deck_text, only: group_scan_t, scan_deck, probe_text, value_text, lower, &
-      is_folder
+  use interlock_files, only: path_kind, path_absent, path_folder, path_other
+  use interlock_deck_text, only: group_scan_t, scan_deck, probe_text, value_text, lower
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_get_halting_mode, &
       ieee_set_halting_mode, ieee_overflow, ieee_invalid, ieee_divide_by_zero
   implicit none
@@ -131,8 +131,9 @@ module interlock_deck
     integer :: n_steps = 0
     ! &solver
     type(interlock_solver_t) :: solver
-    !> Global Richardson extrapolation: run each case with the deck's steps and with every
-    !> segment's step count doubled; separation and traction = 2 u(2n) - u(n)
+    !> Global Richardson extrapolation: run each case with the deck's steps and with the step
+    !> count of every segment of more than one step doubled; separation and traction =
+    !> 2 u(2n) - u(n)
     logical :: extrapolate = .false.
     ! &sweep
     character(len=name_len) :: sweep_parameter = ''
@@ -209,7 +210,8 @@ contains
     end do
     do g = 1, size(deck_groups)
       if (.not. scan(g)%present) cycle
-      call check_assignments(g, scan(g), message)
+      call check_plane_indices(g, scan(g), planes_in_deck(deck%text, scan(2)), message)
+      if (len_trim(message) == 0) call check_assignments(g, scan(g), message)
       if (len_trim(message) > 0) then
         message = path // ': &' // trim(deck_groups(g)) // ': ' // trim(message)
         return
@@ -328,7 +330,30 @@ contains
         d%effect(ip - prop_effect_damage + 1) = v > 0.5_dp
       end select
     end if
-    if (.not. d%thetaf_given) d%thetaf_deg = d%theta0_deg
+    ! thetaf_deg absent: = theta0_deg (no wear), unless it is the swept parameter.
+    if (.not. d%thetaf_given .and. ip /= prop_thetaf) d%thetaf_deg = d%theta0_deg
+    ! A swept angle takes each plane's sign (the paper's RIA: -theta, 0, +theta): say what is
+    ! wrong in the deck's terms (the swept magnitude against each plane's), not with the signed
+    ! angle of a plane.
+    if (ip == prop_theta0 .and. d%thetaf_given .or. ip == prop_thetaf) then
+      do n = 1, merge(1, d%n_planes, d%paper_ria)
+        if (abs(d%thetaf_deg(n)) <= abs(d%theta0_deg(n))) cycle
+        if (ip == prop_thetaf) then
+          why = 'thetaf_deg = ' // short_real(v) // ' deg is inadmissible for plane ' // &
+                format_integer(n) // ' (theta0_deg = ' // short_real(deck%theta0_deg(n)) // &
+                '): admissible 0 <= thetaf_deg <= ' // short_real(abs(deck%theta0_deg(n))) // &
+                ' deg (the swept angle takes the sign of each plane''s theta0_deg)'
+        else
+          why = 'theta0_deg = ' // short_real(v) // ' deg is inadmissible for plane ' // &
+                format_integer(n) // ' (thetaf_deg = ' // short_real(deck%thetaf_deg(n)) // &
+                '): admissible theta0_deg >= ' // short_real(abs(deck%thetaf_deg(n))) // &
+                ' deg (the swept angle takes the sign of each plane''s theta0_deg)'
+        end if
+        message = deck%path // ': ' // trim(case_text(deck, icase)) // ' ' // trim(why)
+        stat = status_bad_input
+        return
+      end do
+    end if
 
     mat%sigma0_n = d%sigma0_n
     mat%sigma0_t = d%sigma0_t
@@ -353,7 +378,7 @@ contains
     if (len_trim(why) == 0) call interlock_material_prepare(mat, stat, why)
     if (len_trim(why) > 0) then
       if (deck%sweep_property > 0) then
-        message = deck%path // ': ' // trim(case_text(deck, icase)) // trim(why)
+        message = deck%path // ': ' // trim(case_text(deck, icase)) // ' ' // trim(why)
       else if (index(why, 'gamma') == 1 .or. index(why, 'theta') == 1 .or. &
                index(why, 'plane') == 1 .or. index(why, 'n_planes') == 1) then
         message = deck%path // ': &microplanes: ' // trim(why)
@@ -451,13 +476,21 @@ contains
     stat = status_bad_input
     message = ''
     text = ''
+    select case (path_kind(path))
+    case (path_absent)
+      message = path // ': no such deck file'
+      return
+    case (path_folder)
+      message = path // ': the deck is a folder, not a file'
+      return
+    case (path_other)
+      message = path // ': the deck is not a regular file (a FIFO, a device such as ' // &
+                '/dev/zero, or a socket): give a deck file'
+      return
+    end select
     inquire (file=path, exist=exists, size=nbytes)
     if (.not. exists) then
       message = path // ': no such deck file'
-      return
-    end if
-    if (is_folder(path)) then
-      message = path // ': the deck is a folder, not a file'
       return
     end if
     if (nbytes == 0) then
@@ -485,6 +518,15 @@ contains
     close (u)
     if (ios /= 0) then
       message = path // ': cannot read the deck: ' // trim(iomsg)
+      return
+    end if
+    ! A UTF-8 byte order mark (EF BB BF, written by some Windows editors) marks the encoding;
+    ! it is not text: dropped.
+    if (len(text) >= 3) then
+      if (text(1:3) == char(239) // char(187) // char(191)) text = text(4:)
+    end if
+    if (len(text) == 0) then
+      message = path // ': the deck is empty (only a UTF-8 byte order mark)'
       return
     end if
     if (len(text) >= 2) then
@@ -568,6 +610,76 @@ contains
       text = text // trim(deck_vars(v)%name)
     end do
   end function group_vars
+
+  !> The number of microplanes the deck declares: &microplanes n_planes when it is given (and
+  !> reads as an integer), else 0 (the paper's RIA, or not readable: left to the namelist read).
+  function planes_in_deck(text, micro) result(n)
+    character(len=*), intent(in) :: text
+    type(group_scan_t), intent(in) :: micro
+    integer :: n, k, ios
+    character(len=:), allocatable :: value
+    n = 0
+    do k = 1, micro%n
+      if (trim(micro%a(k)%name) /= 'n_planes' .or. len_trim(micro%a(k)%subscript) > 0) cycle
+      value = value_text(text, micro%a(k))
+      read (value, *, iostat=ios) n
+      if (ios /= 0) n = 0
+    end do
+  end function planes_in_deck
+
+  !> An element of a per-plane array, `name(k) = value`, must name a plane: 1 <= k <= n_planes
+  !> (the paper's RIA without n_planes: one value in &microplanes, its 3 planes in
+  !> &initial_state), and k <= max_planes in any case. Checked before the duplicates, so that
+  !> `theta0_deg = -10, 10` followed by `theta0_deg(3) = 5` says that plane 3 does not exist.
+  subroutine check_plane_indices(g, scan, n_planes, message)
+    integer, intent(in) :: g, n_planes
+    type(group_scan_t), intent(in) :: scan
+    character(len=*), intent(out) :: message
+    integer :: k, index_value, limit, ios
+    character(len=:), allocatable :: sub, why, digits
+    message = ''
+    why = ''
+    do k = 1, scan%n
+      sub = trim(scan%a(k)%subscript)
+      if (len(sub) < 3) cycle
+      if (.not. is_plane_variable(trim(deck_groups(g)), trim(scan%a(k)%name))) cycle
+      digits = sub(2:len(sub) - 1)
+      read (digits, *, iostat=ios) index_value
+      if (ios /= 0) cycle
+      if (n_planes > 0) then
+        limit = min(n_planes, max_planes)
+        why = 'n_planes = ' // format_integer(n_planes)
+      else if (trim(deck_groups(g)) == 'microplanes') then
+        limit = 1
+        why = 'without n_planes, the paper''s RIA takes one value (give n_planes for a ' // &
+              'general RIA)'
+      else
+        limit = 3
+        why = 'the paper''s RIA has 3 planes (no n_planes in &microplanes)'
+      end if
+      if (index_value < 1 .or. index_value > limit) then
+        message = trim(scan%a(k)%name) // sub // ' (line ' // format_integer(scan%a(k)%line) // &
+                  '): there is no plane ' // format_integer(index_value) // ': admissible ' // &
+                  'indices 1..' // format_integer(limit) // ' (' // why // ')'
+        return
+      end if
+    end do
+  end subroutine check_plane_indices
+
+  !> The variables that take one value per microplane.
+  pure logical function is_plane_variable(group, name)
+    character(len=*), intent(in) :: group, name
+    select case (group)
+    case ('microplanes')
+      is_plane_variable = any(name == [character(len=10) :: 'gamma_hat', 'theta0_deg', &
+                                       'thetaf_deg', 'zeta0'])
+    case ('initial_state')
+      is_plane_variable = any(name == [character(len=17) :: 'damage', 'beta', 'frictional_slip', &
+                                       'zeta', 'theta', 'friction_traction'])
+    case default
+      is_plane_variable = .false.
+    end select
+  end function is_plane_variable
 
   !> Every assignment of group g names a variable of the group, and none is given twice.
   subroutine check_assignments(g, scan, message)
@@ -1211,6 +1323,11 @@ contains
       return
     end if
     file = adjustl(file)
+    if (len_trim(file) == 0 .and. any(scan%a(1:scan%n)%name == 'file')) then
+      message = "file = '" // trim(file) // "' is empty: give a file name, or leave file out " // &
+                "for the default (the deck's name with .h5, in the working folder)"
+      return
+    end if
     if (len_trim(file) > 0) then
       if (file(len_trim(file):len_trim(file)) == '/' .or. trim(file) == '.' .or. &
           trim(file) == '..') then

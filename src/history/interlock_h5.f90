@@ -4,18 +4,21 @@
 !> of docs/history-output.md). Fortran arrays (m, n) appear in h5py as (n, m).
 module interlock_h5
   use, intrinsic :: iso_fortran_env, only: real64, int32
-  use, intrinsic :: iso_c_binding, only: c_ptr, c_loc
-  use hdf5, only: hid_t, hsize_t, h5open_f, h5close_f, h5fcreate_f, h5fclose_f, h5gcreate_f, &
-      h5gclose_f, h5screate_simple_f, h5screate_f, h5sclose_f, h5dcreate_f, h5dwrite_f, &
-      h5dclose_f, h5acreate_f, h5awrite_f, h5aclose_f, h5tcopy_f, h5tset_size_f, &
-      h5tset_strpad_f, h5tclose_f, h5pcreate_f, h5pclose_f, h5pset_libver_bounds_f, &
-      h5eset_auto_f, H5F_ACC_TRUNC_F, H5S_SCALAR_F, H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, &
-      H5T_FORTRAN_S1, H5T_STR_NULLPAD_F, H5P_FILE_ACCESS_F, H5F_LIBVER_V18_F, &
-      H5F_LIBVER_LATEST_F
+  use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char, c_null_char
+  use hdf5, only: hid_t, hsize_t, h5open_f, h5close_f, h5fcreate_f, h5fopen_f, h5fclose_f, &
+      h5fis_hdf5_f, h5gcreate_f, h5gclose_f, h5screate_simple_f, h5screate_f, h5sclose_f, &
+      h5sselect_hyperslab_f, h5dcreate_f, h5dwrite_f, h5dclose_f, h5dset_extent_f, &
+      h5dget_space_f, h5acreate_f, h5awrite_f, h5aclose_f, h5aexists_f, h5lexists_f, &
+      h5tcopy_f, h5tset_cset_f, h5tclose_f, h5pcreate_f, h5pclose_f, h5pset_libver_bounds_f, &
+      h5pset_chunk_f, h5pset_fclose_degree_f, h5eset_auto_f, H5F_ACC_TRUNC_F, &
+      H5F_ACC_RDONLY_F, H5S_SCALAR_F, H5S_UNLIMITED_F, H5S_SELECT_SET_F, H5T_NATIVE_DOUBLE, &
+      H5T_NATIVE_INTEGER, H5T_STRING, H5T_CSET_UTF8_F, H5P_FILE_ACCESS_F, &
+      H5P_DATASET_CREATE_F, H5F_LIBVER_V18_F, H5F_LIBVER_LATEST_F, H5F_CLOSE_STRONG_F
   implicit none
   private
-  public :: h5_file_t, h5_open_library, h5_close_library, h5_create_file, h5_close_file
-  public :: h5_create_group, h5_close_group, h5_write, h5_attribute
+  public :: h5_file_t, h5_series_t, h5_open_library, h5_close_library, h5_create_file, &
+            h5_close_file, h5_has_marks, h5_create_group, h5_close_group, h5_create_series, &
+            h5_append, h5_close_series, h5_attribute
 
   integer, parameter :: dp = real64
 
@@ -24,10 +27,19 @@ module interlock_h5
     integer(hid_t) :: id = -1
   end type h5_file_t
 
-  !> Write a dataset (with `unit` and `description` attributes): real or integer, rank 1 or 2.
-  interface h5_write
-    module procedure write_real_1d, write_real_2d, write_int_1d
-  end interface h5_write
+  !> An extendible dataset written row by row (h5_append): `width` values per row (0: one
+  !> scalar per row, a 1-d dataset), `rows` written so far.
+  type :: h5_series_t
+    integer(hid_t) :: id = -1
+    integer(hid_t) :: mem_type = -1
+    integer :: width = 0
+    integer :: rows = 0
+  end type h5_series_t
+
+  !> Append rows to a series: real (n) or (width, n), integer (n).
+  interface h5_append
+    module procedure append_real_1d, append_real_2d, append_int_1d
+  end interface h5_append
 
   !> Write an attribute: character, real scalar or array, integer scalar.
   interface h5_attribute
@@ -58,9 +70,33 @@ contains
     call h5pcreate_f(H5P_FILE_ACCESS_F, fapl, stat)
     if (stat /= 0) return
     call h5pset_libver_bounds_f(fapl, H5F_LIBVER_V18_F, H5F_LIBVER_LATEST_F, stat)
+    ! Closing the file closes whatever is still open in it (a failed write leaves nothing open
+    ! for the library's exit handlers to trip over).
+    if (stat == 0) call h5pset_fclose_degree_f(fapl, H5F_CLOSE_STRONG_F, stat)
     if (stat == 0) call h5fcreate_f(name, H5F_ACC_TRUNC_F, file%id, stat, access_prp=fapl)
     call h5pclose_f(fapl, ignore)
   end subroutine h5_create_file
+
+  !> `name` is an HDF5 file (signature checked by the library) whose root holds the attribute
+  !> `attribute` and the link `link`: the marks our writer leaves. Only call it for a regular
+  !> file (a FIFO would block).
+  logical function h5_has_marks(name, attribute, link)
+    character(len=*), intent(in) :: name, attribute, link
+    integer(hid_t) :: file
+    logical :: is_hdf5, exists
+    integer :: stat, ignore
+    h5_has_marks = .false.
+    call h5fis_hdf5_f(name, is_hdf5, stat)
+    if (stat /= 0 .or. .not. is_hdf5) return
+    call h5fopen_f(name, H5F_ACC_RDONLY_F, file, stat)
+    if (stat /= 0) return
+    call h5aexists_f(file, attribute, exists, stat)
+    if (stat == 0 .and. exists) then
+      call h5lexists_f(file, link, exists, stat)
+      h5_has_marks = stat == 0 .and. exists
+    end if
+    call h5fclose_f(file, ignore)
+  end function h5_has_marks
 
   subroutine h5_close_file(file, stat)
     type(h5_file_t), intent(inout) :: file
@@ -86,54 +122,107 @@ contains
 
   ! ---------------------------------------------------------------- datasets
 
-  subroutine write_real_1d(loc, name, x, unit, description, stat)
+  !> Create an empty extendible dataset of `width` columns (0: a 1-d dataset) that grows by rows
+  !> (h5_append), chunked by `chunk_rows` rows, with its `unit` and `description`.
+  subroutine h5_create_series(loc, name, integer_values, width, chunk_rows, unit, description, &
+                              series, stat)
     type(h5_file_t), intent(in) :: loc
     character(len=*), intent(in) :: name, unit, description
-    real(dp), intent(in), target, contiguous :: x(:)
+    logical, intent(in) :: integer_values
+    integer, intent(in) :: width, chunk_rows
+    type(h5_series_t), intent(out) :: series
     integer, intent(out) :: stat
-    call write_dataset(loc, name, H5T_NATIVE_DOUBLE, int(shape(x), hsize_t), c_loc(x), unit, &
-                       description, stat)
-  end subroutine write_real_1d
-
-  subroutine write_real_2d(loc, name, x, unit, description, stat)
-    type(h5_file_t), intent(in) :: loc
-    character(len=*), intent(in) :: name, unit, description
-    real(dp), intent(in), target, contiguous :: x(:, :)
-    integer, intent(out) :: stat
-    call write_dataset(loc, name, H5T_NATIVE_DOUBLE, int(shape(x), hsize_t), c_loc(x), unit, &
-                       description, stat)
-  end subroutine write_real_2d
-
-  subroutine write_int_1d(loc, name, x, unit, description, stat)
-    type(h5_file_t), intent(in) :: loc
-    character(len=*), intent(in) :: name, unit, description
-    integer, intent(in), target, contiguous :: x(:)
-    integer, intent(out) :: stat
-    call write_dataset(loc, name, H5T_NATIVE_INTEGER, int(shape(x), hsize_t), c_loc(x), unit, &
-                       description, stat)
-  end subroutine write_int_1d
-
-  !> One dataset of memory type `mem_type` and shape `dims` from the contiguous buffer at `buf`
-  !> (nothing is read from it when the dataset is empty), with its two attributes.
-  subroutine write_dataset(loc, name, mem_type, dims, buf, unit, description, stat)
-    type(h5_file_t), intent(in) :: loc
-    character(len=*), intent(in) :: name, unit, description
-    integer(hid_t), intent(in) :: mem_type
-    integer(hsize_t), intent(in) :: dims(:)
-    type(c_ptr), intent(in) :: buf
-    integer, intent(out) :: stat
-    integer(hid_t) :: space, dset
+    integer(hid_t) :: space, dcpl
+    integer(hsize_t), allocatable :: dims(:), maxdims(:), chunk(:)
     integer :: ignore
-    call h5screate_simple_f(size(dims), dims, space, stat)
+    series%width = width
+    series%mem_type = H5T_NATIVE_DOUBLE
+    if (integer_values) series%mem_type = H5T_NATIVE_INTEGER
+    if (width > 0) then
+      dims = [integer(hsize_t) :: width, 0]
+      maxdims = [integer(hsize_t) :: width, H5S_UNLIMITED_F]
+      chunk = [integer(hsize_t) :: width, max(1, chunk_rows)]
+    else
+      dims = [integer(hsize_t) :: 0]
+      maxdims = [integer(hsize_t) :: H5S_UNLIMITED_F]
+      chunk = [integer(hsize_t) :: max(1, chunk_rows)]
+    end if
+    call h5screate_simple_f(size(dims), dims, space, stat, maxdims)
     if (stat /= 0) return
-    call h5dcreate_f(loc%id, name, mem_type, space, dset, stat)
+    call h5pcreate_f(H5P_DATASET_CREATE_F, dcpl, stat)
     if (stat == 0) then
-      if (product(dims) > 0) call h5dwrite_f(dset, mem_type, buf, stat)
-      if (stat == 0) call describe(dset, unit, description, stat)
-      call h5dclose_f(dset, ignore)
+      call h5pset_chunk_f(dcpl, size(chunk), chunk, stat)
+      if (stat == 0) call h5dcreate_f(loc%id, name, series%mem_type, space, series%id, stat, &
+                                      dcpl_id=dcpl)
+      if (stat == 0) call describe(series%id, unit, description, stat)
+      call h5pclose_f(dcpl, ignore)
     end if
     call h5sclose_f(space, ignore)
-  end subroutine write_dataset
+  end subroutine h5_create_series
+
+  subroutine append_real_1d(series, x, stat)
+    type(h5_series_t), intent(inout) :: series
+    real(dp), intent(in), target, contiguous :: x(:)
+    integer, intent(out) :: stat
+    call append_rows(series, size(x), c_loc(x), stat)
+  end subroutine append_real_1d
+
+  subroutine append_real_2d(series, x, stat)
+    type(h5_series_t), intent(inout) :: series
+    real(dp), intent(in), target, contiguous :: x(:, :)
+    integer, intent(out) :: stat
+    call append_rows(series, size(x, 2), c_loc(x), stat)
+  end subroutine append_real_2d
+
+  subroutine append_int_1d(series, x, stat)
+    type(h5_series_t), intent(inout) :: series
+    integer, intent(in), target, contiguous :: x(:)
+    integer, intent(out) :: stat
+    call append_rows(series, size(x), c_loc(x), stat)
+  end subroutine append_int_1d
+
+  !> Append `n` rows from the contiguous buffer at `buf` (width x n values) to the series.
+  subroutine append_rows(series, n, buf, stat)
+    type(h5_series_t), intent(inout) :: series
+    integer, intent(in) :: n
+    type(c_ptr), intent(in) :: buf
+    integer, intent(out) :: stat
+    integer(hid_t) :: file_space, mem_space
+    integer(hsize_t), allocatable :: total(:), start(:), count(:)
+    integer :: ignore
+    stat = 0
+    if (n < 1) return
+    if (series%width > 0) then
+      total = [integer(hsize_t) :: series%width, series%rows + n]
+      start = [integer(hsize_t) :: 0, series%rows]
+      count = [integer(hsize_t) :: series%width, n]
+    else
+      total = [integer(hsize_t) :: series%rows + n]
+      start = [integer(hsize_t) :: series%rows]
+      count = [integer(hsize_t) :: n]
+    end if
+    call h5dset_extent_f(series%id, total, stat)
+    if (stat /= 0) return
+    call h5dget_space_f(series%id, file_space, stat)
+    if (stat /= 0) return
+    call h5sselect_hyperslab_f(file_space, H5S_SELECT_SET_F, start, count, stat)
+    if (stat == 0) call h5screate_simple_f(size(count), count, mem_space, stat)
+    if (stat == 0) then
+      call h5dwrite_f(series%id, series%mem_type, buf, stat, mem_space_id=mem_space, &
+                      file_space_id=file_space)
+      call h5sclose_f(mem_space, ignore)
+    end if
+    call h5sclose_f(file_space, ignore)
+    if (stat == 0) series%rows = series%rows + n
+  end subroutine append_rows
+
+  subroutine h5_close_series(series, stat)
+    type(h5_series_t), intent(inout) :: series
+    integer, intent(out) :: stat
+    stat = 0
+    if (series%id >= 0) call h5dclose_f(series%id, stat)
+    series%id = -1
+  end subroutine h5_close_series
 
   !> The two attributes every dataset carries.
   subroutine describe(dset, unit, description, stat)
@@ -153,33 +242,70 @@ contains
     call text_attribute(loc%id, name, text, stat)
   end subroutine attr_text
 
-  !> A scalar fixed-length string attribute (null-padded, so h5py shows it without padding).
+  !> A scalar variable-length string attribute, marked UTF-8 when the text is valid UTF-8 (h5py
+  !> returns it as str; text that is not, e.g. a Latin-1 comment in a deck, is marked ASCII and
+  !> keeps its bytes).
   subroutine text_attribute(id, name, text, stat)
     integer(hid_t), intent(in) :: id
     character(len=*), intent(in) :: name, text
     integer, intent(out) :: stat
     integer(hid_t) :: space, attr, stype
-    integer(hsize_t) :: dims(1)
+    character(len=len(text) + 1, kind=c_char), target :: buffer
+    type(c_ptr), target :: pointers(1)
     integer :: ignore
-    character(len=max(1, len(text))) :: buffer
-    buffer = text
-    if (len(text) == 0) buffer = achar(0)
-    dims = 1
-    call h5tcopy_f(H5T_FORTRAN_S1, stype, stat)
+    buffer = text // c_null_char
+    pointers(1) = c_loc(buffer)
+    call h5tcopy_f(H5T_STRING, stype, stat)
     if (stat /= 0) return
-    call h5tset_size_f(stype, int(len(buffer), kind(dims)), stat)
-    if (stat == 0) call h5tset_strpad_f(stype, H5T_STR_NULLPAD_F, stat)
+    if (is_utf8(text)) call h5tset_cset_f(stype, H5T_CSET_UTF8_F, stat)
     if (stat == 0) call h5screate_f(H5S_SCALAR_F, space, stat)
     if (stat == 0) then
       call h5acreate_f(id, name, stype, space, attr, stat)
       if (stat == 0) then
-        call h5awrite_f(attr, stype, buffer, dims, stat)
+        call h5awrite_f(attr, stype, c_loc(pointers), stat)
         call h5aclose_f(attr, ignore)
       end if
       call h5sclose_f(space, ignore)
     end if
     call h5tclose_f(stype, ignore)
   end subroutine text_attribute
+
+  !> Well-formed UTF-8 (RFC 3629: no overlong forms, no surrogates, at most U+10FFFF).
+  pure logical function is_utf8(text)
+    character(len=*), intent(in) :: text
+    integer :: i, k, c, n, lo, hi
+    is_utf8 = .false.
+    i = 1
+    do while (i <= len(text))
+      c = iachar(text(i:i))
+      lo = 128
+      hi = 191
+      if (c < 128) then
+        n = 0
+      else if (c >= 194 .and. c <= 223) then
+        n = 1
+      else if (c >= 224 .and. c <= 239) then
+        n = 2
+        if (c == 224) lo = 160
+        if (c == 237) hi = 159
+      else if (c >= 240 .and. c <= 244) then
+        n = 3
+        if (c == 240) lo = 144
+        if (c == 244) hi = 143
+      else
+        return
+      end if
+      if (i + n > len(text)) return
+      do k = 1, n
+        c = iachar(text(i + k:i + k))
+        if (c < lo .or. c > hi) return
+        lo = 128
+        hi = 191
+      end do
+      i = i + n + 1
+    end do
+    is_utf8 = .true.
+  end function is_utf8
 
   subroutine attr_real(loc, name, x, stat)
     type(h5_file_t), intent(in) :: loc

@@ -1,26 +1,22 @@
 !> interlock-history DECK.nml [more decks]: each deck -> one HDF5 file (docs/history-output.md).
-!> Exit status: 0 every case of every deck completed; 1 a deck was rejected or a file could not
-!> be written (no result file, no temporary file is left for it); 2 every file was written but
-!> some case stopped early (its `status` attribute says why).
+!> Exit status: 0 every case of every deck completed; 1 a deck was rejected, its output would
+!> replace a file that is not an earlier result, or a file could not be written (no result file,
+!> no temporary file is left for it); 2 every file was written but some case stopped early (its
+!> `status` attribute says why). SIGINT, SIGTERM, SIGHUP: the temporary file is removed and the
+!> program ends by the signal (interlock_posix.c).
 program interlock_history
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-  use, intrinsic :: iso_c_binding, only: c_int
+  use interlock_cli, only: exit_program
   use interlock, only: interlock_material_t, interlock_solver_t, interlock_state_t, &
       interlock_version_string, status_ok
   use interlock_deck, only: deck_t, read_deck, deck_case, deck_n_cases
-  use interlock_mixed_control, only: history_t, run_history, run_history_extrapolated
-  use interlock_history_output, only: output_t, output_open, output_write_case, output_close, &
-      output_abort
+  use interlock_mixed_control, only: run_history, run_history_extrapolated
+  use interlock_history_output, only: output_t, case_writer_t, output_check_target, output_open, &
+      output_begin_case, output_end_case, output_close, output_abort
   use interlock_h5, only: h5_open_library, h5_close_library
   use interlock_deck_text, only: is_folder
   implicit none
 
-  interface
-    subroutine c_exit(status) bind(C, name='exit')
-      import :: c_int
-      integer(c_int), value :: status
-    end subroutine c_exit
-  end interface
 
   character(len=:), allocatable :: arg, command, output_dir
   character(len=4096), allocatable :: decks(:)
@@ -42,14 +38,15 @@ program interlock_history
         select case (arg)
         case ('-h', '--help')
           call usage(output_unit)
-          call finish(0)
+          call exit_program(0)
         case ('--version')
           write (output_unit, '(a)') 'interlock-history ' // interlock_version_string
-          call finish(0)
+          call exit_program(0)
         case ('-d', '--output-dir')
           if (i == nargs) then
             write (error_unit, '(a)') 'interlock-history: error: ' // arg // ' needs a folder'
-            call finish(1)
+            call usage(error_unit)
+            call exit_program(1)
           end if
           i = i + 1
           output_dir = argument(i)
@@ -58,27 +55,28 @@ program interlock_history
         case default
           write (error_unit, '(a)') 'interlock-history: error: unknown option ' // arg
           call usage(error_unit)
-          call finish(1)
+          call exit_program(1)
         end select
         cycle
       end if
     end if
     if (len(arg) > len(decks)) then
       write (error_unit, '(a)') 'interlock-history: error: a deck path is longer than 4096 characters'
-      call finish(1)
+      call exit_program(1)
     end if
     n_decks = n_decks + 1
     decks(n_decks) = arg
   end do
   if (n_decks == 0) then
+    write (error_unit, '(a)') 'interlock-history: error: no deck given'
     call usage(error_unit)
-    call finish(1)
+    call exit_program(1)
   end if
   if (len(output_dir) > 0) then
     if (.not. is_folder(output_dir)) then
       write (error_unit, '(a)') 'interlock-history: error: --output-dir ' // output_dir // &
         ': no such folder (it must exist)'
-      call finish(1)
+      call exit_program(1)
     end if
   end if
   command = command_line()
@@ -86,13 +84,13 @@ program interlock_history
   call h5_open_library(stat)
   if (stat /= 0) then
     write (error_unit, '(a)') 'interlock-history: error: cannot initialise the HDF5 library'
-    call finish(1)
+    call exit_program(1)
   end if
   do i = 1, n_decks
     call run_deck(trim(decks(i)), rc)
   end do
   call h5_close_library(stat)
-  call finish(rc)
+  call exit_program(rc)
 
 contains
 
@@ -104,7 +102,7 @@ contains
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver
     type(interlock_state_t) :: state
-    type(history_t) :: hist
+    type(case_writer_t) :: writer
     character(len=:), allocatable :: label, final_name, origin, folder
     character(len=1024) :: message
     integer :: stat, icase, slash
@@ -135,8 +133,9 @@ contains
     if (slash > 1) folder = final_name(1:slash - 1)
     if (slash == 1) folder = '/'
     message = ''
-    if (is_folder(final_name)) then
-      message = 'the output file ' // final_name // ' is a folder' // origin
+    call output_check_target(final_name, path, message)
+    if (len_trim(message) > 0) then
+      message = trim(message) // origin
     else if (.not. is_folder(folder)) then
       message = 'the output folder ' // folder // ' does not exist' // origin
     end if
@@ -157,14 +156,17 @@ contains
         rc = max(rc, 1)
         return
       end if
-      if (deck%extrapolate) then
-        call run_history_extrapolated(mat, solver, deck%control, deck%times, deck%values, &
-                                      deck%steps, state, hist)
-      else
-        call run_history(mat, solver, deck%control, deck%times, deck%values, deck%steps, state, &
-                         hist)
+      call output_begin_case(out, icase, deck, mat, solver, label, writer, stat, message)
+      if (stat == 0) then
+        if (deck%extrapolate) then
+          call run_history_extrapolated(mat, solver, deck%control, deck%times, deck%values, &
+                                        deck%steps, state, writer)
+        else
+          call run_history(mat, solver, deck%control, deck%times, deck%values, deck%steps, &
+                           state, writer)
+        end if
+        call output_end_case(out, writer, stat, message)
       end if
-      call output_write_case(out, icase, deck, mat, solver, label, hist, stat, message)
       if (stat /= 0) then
         write (error_unit, '(a)') 'interlock-history: error: ' // path // ': ' // trim(message)
         call output_abort(out)
@@ -174,11 +176,11 @@ contains
       write (cbuf, '(i4.4)') icase
       if (len(label) > 0) then
         write (output_unit, '(a)') path // ': case ' // trim(cbuf) // ' (' // label // '): ' // &
-          hist%status
+          writer%status
       else
-        write (output_unit, '(a)') path // ': case ' // trim(cbuf) // ': ' // hist%status
+        write (output_unit, '(a)') path // ': case ' // trim(cbuf) // ': ' // writer%status
       end if
-      if (hist%status /= 'completed') rc = max(rc, 2)
+      if (writer%status /= 'completed') rc = max(rc, 2)
     end do
     call output_close(out, stat, message)
     if (stat /= 0) then
@@ -214,7 +216,10 @@ contains
       'Runs the point history of each deck (a Fortran namelist, docs/deck-format.md) and', &
       'writes one HDF5 file per deck (docs/history-output.md): the &output file, or the', &
       'deck''s name with .h5 in the working folder. The file is written as NAME.h5.tmp-PID', &
-      'and renamed when complete: a rejected deck or a failed write leaves no file.', &
+      'and renamed when complete: a rejected deck or a failed write leaves no file, and', &
+      'SIGINT, SIGTERM or SIGHUP remove the temporary file (SIGKILL leaves it). An existing', &
+      'file is replaced only if it is an earlier result of interlock-history: never the', &
+      'deck or any other file.', &
       '', &
       'Options:', &
       '  -d, --output-dir DIR  write the files into DIR (an existing folder), same base names', &
@@ -240,11 +245,12 @@ contains
       '', &
       'Global Richardson extrapolation (&solver extrapolate = .true.; default .false.):', &
       'each case is run twice from the same initial state, with the deck''s steps (n) and', &
-      'with every segment''s step count doubled (2n). The history is written at the n run''s', &
+      'with the step count of every segment of more than one step doubled (2n; a one-step', &
+      'segment, e.g. the preload, is taken alike in both). The history is written at the n run''s', &
       'steps: separation and traction are 2 u(2n) - u(n) (second order where the scheme is', &
       'first order in the step: scheme = ''implicit'' with wear), the state variables and', &
       'energies are the 2n run''s (not extrapolated), iterations and substeps the sums of', &
-      'both runs (3 steps per row: up to 3x the bounds above); about 3x the CPU time of one', &
+      'both runs (up to 3 steps per row: 3x the bounds above); about 3x the CPU time of one', &
       'run. The case stops at the first step that either run cannot solve (status: which).', &
       '', &
       'What is written (&output): every = k keeps every k-th step (and the last one);', &
@@ -255,11 +261,5 @@ contains
       '2,000,000 steps per case, 1000 sweep values.'
   end subroutine usage
 
-  subroutine finish(code)
-    integer, intent(in) :: code
-    flush (output_unit)
-    flush (error_unit)
-    call c_exit(int(code, c_int))
-  end subroutine finish
 
 end program interlock_history

@@ -14,12 +14,13 @@
 !> step count doubled (2n); separation and traction are 2 u(2n) - u(n) at the n run's steps.
 module interlock_mixed_control
   use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
-      interlock_info_t, interlock_update, status_ok, format_real, format_integer, is_nan_value
+      interlock_info_t, interlock_update, status_ok, format_real, format_integer, is_nan_value, &
+      max_planes
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   implicit none
   private
-  public :: control_t, history_t, solve_step, run_history, run_history_extrapolated, &
-            component_names
+  public :: control_t, history_row_t, history_sink_t, history_t, solve_step, run_history, &
+            run_history_extrapolated, component_names
 
   character(len=10), parameter :: component_names(2) = [character(len=10) :: 'normal', 'tangential']
   character(len=7), parameter :: traction_names(2) = [character(len=7) :: 'sigma_N', 'sigma_T']
@@ -33,21 +34,54 @@ module interlock_mixed_control
     integer  :: max_cuts = 30                    !< a step may be cut down to 2**(-max_cuts) of itself
   end type control_t
 
-  !> The computed history of one case: one row per load step (row 1 = after the first step).
-  type :: history_t
-    integer :: n_rows = 0
+  !> One row of a history: the state at the end of a load step.
+  type :: history_row_t
+    real(dp) :: time = 0.0_dp
+    real(dp) :: separation(2) = 0.0_dp, traction(2) = 0.0_dp
+    real(dp), dimension(max_planes) :: damage = 0.0_dp, beta = 0.0_dp, frictional_slip = 0.0_dp, &
+                                       zeta = 0.0_dp, theta = 0.0_dp, friction_traction = 0.0_dp
+    real(dp) :: work = 0.0_dp, stored = 0.0_dp, diss_damage = 0.0_dp, diss_friction = 0.0_dp
+    integer :: iterations = 0, substeps = 0
+  end type history_row_t
+
+  !> Where the rows of a history go as they are computed (run_history, put): kept in memory
+  !> (history_t) or written to a file as they come (interlock_history_output), so that a long
+  !> history never has to be held whole.
+  type, abstract :: history_sink_t
+    integer :: n_rows = 0                         !< rows computed so far
     integer :: n_planes = 0
     character(len=:), allocatable :: status       !< 'completed' or why the case stopped
     !> .true.: separation and traction are Richardson-extrapolated, 2 u(2n) - u(n); the state
     !> variables and energies are those of the run with doubled steps, iterations and substeps
     !> the sums of both runs (run_history_extrapolated)
     logical :: extrapolated = .false.
+  contains
+    procedure(put_row), deferred :: put
+  end type history_sink_t
+
+  abstract interface
+    !> Take row sink%n_rows (already counted). stat /= 0: the row could not be kept (the history
+    !> stops; the sink knows why).
+    subroutine put_row(sink, row, stat)
+      import :: history_sink_t, history_row_t
+      class(history_sink_t), intent(inout) :: sink
+      type(history_row_t), intent(in) :: row
+      integer, intent(out) :: stat
+    end subroutine put_row
+  end interface
+
+  !> A whole history in memory: one row per load step (row 1 = after the first step).
+  type, extends(history_sink_t) :: history_t
     real(dp), allocatable :: time(:)
     real(dp), allocatable :: separation(:, :), traction(:, :)         ! (2, n)
     real(dp), allocatable :: damage(:, :), beta(:, :), frictional_slip(:, :), zeta(:, :), &
                              theta(:, :), friction_traction(:, :)     ! (n_planes, n)
     real(dp), allocatable :: work(:), stored(:), diss_damage(:), diss_friction(:)
     integer, allocatable :: iterations(:), substeps(:)
+  contains
+    procedure :: put => history_put
+    procedure :: reserve => history_reserve
+    procedure :: clear => history_clear
   end type history_t
 
   interface
@@ -64,7 +98,8 @@ contains
 
   !> Run a whole history: the path goes through the points (times(i), values(:, i)) in
   !> `steps(i)` uniform steps per segment, each component's value being a separation [mm] or a
-  !> traction [MPa] as `ctl%traction` says. The history stops early when a step cannot be solved.
+  !> traction [MPa] as `ctl%traction` says. Each row goes to `hist` as soon as it is computed.
+  !> The history stops early when a step cannot be solved or a row cannot be kept.
   subroutine run_history(mat, solver, ctl, times, values, steps, initial, hist)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
@@ -72,15 +107,14 @@ contains
     real(dp), intent(in) :: times(:), values(:, :)
     integer, intent(in) :: steps(:)
     type(interlock_state_t), intent(in) :: initial
-    type(history_t), intent(out) :: hist
+    class(history_sink_t), intent(inout) :: hist
     type(interlock_state_t) :: old, new
     real(dp) :: t_start(2), t_end(2), sigma(2), time
-    integer :: iseg, j, row, iterations, substeps, stat
+    integer :: iseg, j, iterations, substeps, stat
     character(len=512) :: message
 
-    call allocate_history(hist, mat%n_planes, sum(steps))
+    call begin_history(hist, mat%n_planes, .false.)
     old = initial
-    row = 0
     t_end = values(:, 1)
     do iseg = 1, size(steps)
       do j = 1, steps(iseg)
@@ -89,30 +123,31 @@ contains
         call solve_step(mat, solver, ctl, old, t_start, t_end, new, sigma, iterations, substeps, &
                         stat, message)
         if (stat /= status_ok) then
-          hist%status = 'stopped at step ' // format_integer(row + 1) // ' (time ' // &
-                        format_real(time) // '): ' // trim(message)
-          hist%n_rows = row
+          hist%status = 'stopped at ' // step_place(steps, iseg, j, time) // ': ' // trim(message)
           return
         end if
-        row = row + 1
-        call store_row(hist, row, time, new, sigma, iterations, substeps)
+        call keep_row(hist, state_row(time, new, sigma, iterations, substeps), steps, iseg, j, &
+                      stat)
+        if (stat /= 0) return
         old = new
       end do
     end do
-    hist%n_rows = row
   end subroutine run_history
 
   !> Global Richardson extrapolation of a history: the run with the path's steps (n, the
-  !> "coarse" run) and the run with every segment's step count doubled (2n, the "fine" run) go
-  !> in lockstep from the same initial state (each is step for step what run_history computes).
-  !> Row i is at the coarse run's step i (= the fine run's step 2i, the same time and path
-  !> point): separation and traction are 2 u_fine - u_coarse (second order where both runs are
-  !> first order); the state variables and energies are the fine run's (extrapolating them could
-  !> leave their admissible ranges: D in [0, 1], zeta >= 0, theta between theta_f and theta_0);
-  !> iterations and substeps are the sums of the coarse step and the two fine steps. A
-  !> traction-driven component is solved to its target in both runs, so its extrapolated value is
-  !> the target within 3 ctl%tol times the traction scale. The history stops at the first coarse
-  !> step where either run cannot solve its step(s); the status says which run and why.
+  !> "coarse" run) and the run with the step count of every segment of more than one step
+  !> doubled (2n, the "fine" run) go in lockstep from the same initial state (each is step for
+  !> step what run_history computes). A segment of one step is a load jump (the paper's
+  !> preload): both runs take it alike, in one step, so that both start the next segment from
+  !> the same kind of state and the extrapolation converges to the deck's history with that
+  !> jump. Row i is at the coarse run's step i (= the fine run's step that ends at the same time
+  !> and path point): separation and traction are 2 u_fine - u_coarse (second order where both
+  !> runs are first order); the state variables and energies are the fine run's (extrapolating
+  !> them could leave their admissible ranges: D in [0, 1], zeta >= 0, theta between theta_f and
+  !> theta_0); iterations and substeps are the sums of the coarse step and the fine step(s). A
+  !> traction-driven component is solved to its target in both runs, so its extrapolated value
+  !> is the target within 3 ctl%tol times the traction scale. The history stops at the first
+  !> coarse step where either run cannot solve its step(s); the status says which run and why.
   subroutine run_history_extrapolated(mat, solver, ctl, times, values, steps, initial, hist)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
@@ -120,60 +155,222 @@ contains
     real(dp), intent(in) :: times(:), values(:, :)
     integer, intent(in) :: steps(:)
     type(interlock_state_t), intent(in) :: initial
-    type(history_t), intent(out) :: hist
+    class(history_sink_t), intent(inout) :: hist
     type(interlock_state_t) :: old_c, new_c, old_f, new_f
+    type(history_row_t) :: row
     real(dp) :: tc_start(2), tc_end(2), tf_start(2), tf_end(2), sigma_c(2), sigma_f(2), time, &
                 time_f
-    integer :: iseg, j, k, row, step_f, iterations, substeps, it, sub, stat
+    integer :: iseg, j, k, refine, step_f, iterations, substeps, it, sub, stat
     character(len=512) :: message
 
-    call allocate_history(hist, mat%n_planes, sum(steps))
-    hist%extrapolated = .true.
+    call begin_history(hist, mat%n_planes, .true.)
     old_c = initial
     old_f = initial
-    row = 0
     step_f = 0
     tc_end = values(:, 1)
     tf_end = values(:, 1)
     do iseg = 1, size(steps)
+      refine = fine_steps_per_step(steps(iseg))
       do j = 1, steps(iseg)
         tc_start = tc_end
         call path_point(times, values, iseg, j, steps(iseg), tc_end, time)
         call solve_step(mat, solver, ctl, old_c, tc_start, tc_end, new_c, sigma_c, iterations, &
                         substeps, stat, message)
         if (stat /= status_ok) then
-          hist%status = 'stopped at step ' // format_integer(row + 1) // ' (time ' // &
-                        format_real(time) // '): the run with the deck''s steps: ' // trim(message)
-          hist%n_rows = row
+          hist%status = 'stopped at ' // step_place(steps, iseg, j, time) // &
+                        ': the run with the deck''s steps: ' // trim(message)
           return
         end if
-        do k = 1, 2
+        do k = 1, refine
           tf_start = tf_end
           step_f = step_f + 1
-          call path_point(times, values, iseg, 2 * (j - 1) + k, 2 * steps(iseg), tf_end, time_f)
+          call path_point(times, values, iseg, refine * (j - 1) + k, refine * steps(iseg), tf_end, &
+                          time_f)
           call solve_step(mat, solver, ctl, old_f, tf_start, tf_end, new_f, sigma_f, it, sub, &
                           stat, message)
           if (stat /= status_ok) then
-            hist%status = 'stopped at step ' // format_integer(row + 1) // ' (time ' // &
-                          format_real(time) // '): the run with doubled steps, at its step ' // &
+            hist%status = 'stopped at ' // step_place(steps, iseg, j, time) // &
+                          ': the run with doubled steps, at its step ' // &
                           format_integer(step_f) // ' (time ' // format_real(time_f) // '): ' // &
                           trim(message)
-            hist%n_rows = row
             return
           end if
           iterations = iterations + it
           substeps = substeps + sub
           old_f = new_f
         end do
-        row = row + 1
-        call store_row(hist, row, time, new_f, sigma_f, iterations, substeps)
-        hist%separation(:, row) = 2.0_dp * new_f%s - new_c%s
-        hist%traction(:, row) = 2.0_dp * sigma_f - sigma_c
+        row = state_row(time, new_f, sigma_f, iterations, substeps)
+        row%separation = 2.0_dp * new_f%s - new_c%s
+        row%traction = 2.0_dp * sigma_f - sigma_c
+        call keep_row(hist, row, steps, iseg, j, stat)
+        if (stat /= 0) return
         old_c = new_c
       end do
     end do
-    hist%n_rows = row
   end subroutine run_history_extrapolated
+
+  !> Steps of the run with doubled steps per step of a segment of n steps: 2, or 1 for a
+  !> one-step segment (a load jump, taken alike in both runs).
+  pure integer function fine_steps_per_step(n)
+    integer, intent(in) :: n
+    fine_steps_per_step = merge(1, 2, n == 1)
+  end function fine_steps_per_step
+
+  !> "step 3 of 21 (segment 2 of 2, its step 2 of 20; time 1.1)": where a step is on the path,
+  !> counted from the path's first step (a preload segment included).
+  function step_place(steps, iseg, j, time) result(text)
+    integer, intent(in) :: steps(:), iseg, j
+    real(dp), intent(in) :: time
+    character(len=:), allocatable :: text
+    text = 'step ' // format_integer(sum(steps(1:iseg - 1)) + j) // ' of ' // &
+           format_integer(sum(steps)) // ' (segment ' // format_integer(iseg) // ' of ' // &
+           format_integer(size(steps)) // ', its step ' // format_integer(j) // ' of ' // &
+           format_integer(steps(iseg)) // '; time ' // format_real(time) // ')'
+  end function step_place
+
+  !> A history about to be computed: no rows, status 'completed' until a step fails.
+  subroutine begin_history(hist, np, extrapolated)
+    class(history_sink_t), intent(inout) :: hist
+    integer, intent(in) :: np
+    logical, intent(in) :: extrapolated
+    hist%n_planes = np
+    hist%n_rows = 0
+    hist%extrapolated = extrapolated
+    hist%status = 'completed'
+  end subroutine begin_history
+
+  !> Hand the next row (step j of segment iseg) to the sink; stat /= 0 (the sink could not keep
+  !> it): the history stops.
+  subroutine keep_row(hist, row, steps, iseg, j, stat)
+    class(history_sink_t), intent(inout) :: hist
+    type(history_row_t), intent(in) :: row
+    integer, intent(in) :: steps(:), iseg, j
+    integer, intent(out) :: stat
+    hist%n_rows = hist%n_rows + 1
+    call hist%put(row, stat)
+    if (stat /= 0) then
+      hist%n_rows = hist%n_rows - 1
+      hist%status = 'stopped at ' // step_place(steps, iseg, j, row%time) // &
+                    ': the row could not be stored'
+    end if
+  end subroutine keep_row
+
+  !> The row of the state `new` at the end of a step.
+  pure function state_row(time, new, sigma, iterations, substeps) result(row)
+    real(dp), intent(in) :: time, sigma(2)
+    type(interlock_state_t), intent(in) :: new
+    integer, intent(in) :: iterations, substeps
+    type(history_row_t) :: row
+    row%time = time
+    row%separation = new%s
+    row%traction = sigma
+    row%damage = new%damage
+    row%beta = new%beta
+    row%frictional_slip = new%sf
+    row%zeta = new%zeta
+    row%theta = new%theta
+    row%friction_traction = new%tauf
+    row%work = new%work
+    row%stored = new%stored
+    row%diss_damage = new%diss_damage
+    row%diss_friction = new%diss_friction
+    row%iterations = iterations
+    row%substeps = substeps
+  end function state_row
+
+  !> history_t: keep the row (room grows by doubling).
+  subroutine history_put(sink, row, stat)
+    class(history_t), intent(inout) :: sink
+    type(history_row_t), intent(in) :: row
+    integer, intent(out) :: stat
+    integer :: n, np
+    stat = 0
+    n = sink%n_rows
+    np = sink%n_planes
+    if (.not. allocated(sink%time)) call sink%reserve(max(n, 16))
+    if (n > size(sink%time)) call sink%reserve(2 * size(sink%time))
+    sink%time(n) = row%time
+    sink%separation(:, n) = row%separation
+    sink%traction(:, n) = row%traction
+    sink%damage(:, n) = row%damage(1:np)
+    sink%beta(:, n) = row%beta(1:np)
+    sink%frictional_slip(:, n) = row%frictional_slip(1:np)
+    sink%zeta(:, n) = row%zeta(1:np)
+    sink%theta(:, n) = row%theta(1:np)
+    sink%friction_traction(:, n) = row%friction_traction(1:np)
+    sink%work(n) = row%work
+    sink%stored(n) = row%stored
+    sink%diss_damage(n) = row%diss_damage
+    sink%diss_friction(n) = row%diss_friction
+    sink%iterations(n) = row%iterations
+    sink%substeps(n) = row%substeps
+  end subroutine history_put
+
+  !> Room for `capacity` rows, keeping the rows held.
+  subroutine history_reserve(sink, capacity)
+    class(history_t), intent(inout) :: sink
+    integer, intent(in) :: capacity
+    integer :: np
+    np = sink%n_planes
+    call grow_real(sink%time)
+    call grow_real(sink%work)
+    call grow_real(sink%stored)
+    call grow_real(sink%diss_damage)
+    call grow_real(sink%diss_friction)
+    call grow_int(sink%iterations)
+    call grow_int(sink%substeps)
+    call grow_real_2d(sink%separation, 2)
+    call grow_real_2d(sink%traction, 2)
+    call grow_real_2d(sink%damage, np)
+    call grow_real_2d(sink%beta, np)
+    call grow_real_2d(sink%frictional_slip, np)
+    call grow_real_2d(sink%zeta, np)
+    call grow_real_2d(sink%theta, np)
+    call grow_real_2d(sink%friction_traction, np)
+
+  contains
+
+    subroutine grow_real(x)
+      real(dp), allocatable, intent(inout) :: x(:)
+      real(dp), allocatable :: y(:)
+      integer :: m
+      allocate (y(capacity))
+      m = 0
+      if (allocated(x)) m = min(size(x), capacity)
+      if (m > 0) y(1:m) = x(1:m)
+      call move_alloc(y, x)
+    end subroutine grow_real
+
+    subroutine grow_int(x)
+      integer, allocatable, intent(inout) :: x(:)
+      integer, allocatable :: y(:)
+      integer :: m
+      allocate (y(capacity))
+      m = 0
+      if (allocated(x)) m = min(size(x), capacity)
+      if (m > 0) y(1:m) = x(1:m)
+      call move_alloc(y, x)
+    end subroutine grow_int
+
+    subroutine grow_real_2d(x, width)
+      real(dp), allocatable, intent(inout) :: x(:, :)
+      integer, intent(in) :: width
+      real(dp), allocatable :: y(:, :)
+      integer :: m
+      allocate (y(width, capacity))
+      m = 0
+      if (allocated(x)) m = min(size(x, 2), capacity)
+      if (m > 0) y(:, 1:m) = x(:, 1:m)
+      call move_alloc(y, x)
+    end subroutine grow_real_2d
+
+  end subroutine history_reserve
+
+  !> Forget the rows held (the room stays): the next row is row 1 again.
+  subroutine history_clear(sink)
+    class(history_t), intent(inout) :: sink
+    sink%n_rows = 0
+  end subroutine history_clear
 
   !> The path's values and time at the end of step j of segment iseg, in n uniform steps (the
   !> segment's end point exactly at j = n). The same expression for every run, so that the
@@ -192,45 +389,6 @@ contains
       time = times(iseg) + (times(iseg + 1) - times(iseg)) * f
     end if
   end subroutine path_point
-
-  !> Room for n rows of np planes; status 'completed' until a step fails.
-  pure subroutine allocate_history(hist, np, n)
-    type(history_t), intent(inout) :: hist
-    integer, intent(in) :: np, n
-    hist%n_planes = np
-    hist%n_rows = 0
-    allocate (hist%time(n), hist%separation(2, n), hist%traction(2, n), &
-              hist%damage(np, n), hist%beta(np, n), hist%frictional_slip(np, n), &
-              hist%zeta(np, n), hist%theta(np, n), hist%friction_traction(np, n), &
-              hist%work(n), hist%stored(n), hist%diss_damage(n), &
-              hist%diss_friction(n), hist%iterations(n), hist%substeps(n))
-    hist%status = 'completed'
-  end subroutine allocate_history
-
-  !> Row `row` of the history: the state `new` at the end of a step.
-  pure subroutine store_row(hist, row, time, new, sigma, iterations, substeps)
-    type(history_t), intent(inout) :: hist
-    integer, intent(in) :: row, iterations, substeps
-    real(dp), intent(in) :: time, sigma(2)
-    type(interlock_state_t), intent(in) :: new
-    integer :: np
-    np = hist%n_planes
-    hist%time(row) = time
-    hist%separation(:, row) = new%s
-    hist%traction(:, row) = sigma
-    hist%damage(:, row) = new%damage(1:np)
-    hist%beta(:, row) = new%beta(1:np)
-    hist%frictional_slip(:, row) = new%sf(1:np)
-    hist%zeta(:, row) = new%zeta(1:np)
-    hist%theta(:, row) = new%theta(1:np)
-    hist%friction_traction(:, row) = new%tauf(1:np)
-    hist%work(row) = new%work
-    hist%stored(row) = new%stored
-    hist%diss_damage(row) = new%diss_damage
-    hist%diss_friction(row) = new%diss_friction
-    hist%iterations(row) = iterations
-    hist%substeps(row) = substeps
-  end subroutine store_row
 
   !> One load step from `old`: the driven values go linearly from `target_start` to
   !> `target_end`. On failure the step is cut in halves (at most ctl%max_cuts times in a row),
@@ -269,7 +427,8 @@ contains
       attempts = attempts + 1
       if (attempts > max_attempts) then
         stat = 2
-        message = 'the step needed more than ' // format_integer(max_attempts) // ' attempts'
+        message = 'cannot reach ' // targets_text(ctl, target_end) // ' at the end of the ' // &
+                  'step: more than ' // format_integer(max_attempts) // ' attempts'
         exit
       end if
       f_next = min(1.0_dp, f + h)
@@ -289,8 +448,9 @@ contains
         h = 0.5_dp * h
         if (h < h_min) then
           stat = 2
-          message = trim(message) // ' (after cutting the step ' // format_integer(ctl%max_cuts) // &
-                    ' times)'
+          message = 'cannot reach ' // targets_text(ctl, target_end) // ' at the end of the ' // &
+                    'step: the step cut ' // format_integer(ctl%max_cuts) // ' times, its ' // &
+                    'sub-step to ' // targets_text(ctl, target) // ' fails: ' // trim(message)
           exit
         end if
       end if
@@ -303,6 +463,24 @@ contains
       sigma = old%sigma
     end if
   end subroutine solve_step
+
+  !> "sigma_N = 0.01 MPa", "sigma_N = -2 MPa, sigma_T = 0.3 MPa", or the prescribed separations
+  !> when no component is traction-driven: the values a (sub-)step is to reach.
+  function targets_text(ctl, target) result(text)
+    type(control_t), intent(in) :: ctl
+    real(dp), intent(in) :: target(2)
+    character(len=:), allocatable :: text
+    integer :: i
+    text = ''
+    do i = 1, 2
+      if (len(text) > 0) text = text // ', '
+      if (ctl%traction(i)) then
+        text = text // trim(traction_names(i)) // ' = ' // format_real(target(i)) // ' MPa'
+      else
+        text = text // trim(separation_names(i)) // ' = ' // format_real(target(i)) // ' mm'
+      end if
+    end do
+  end function targets_text
 
   !> Find s such that the driven components of the traction take `target` (the others are
   !> prescribed separations), from the state `old`, starting from s = old%s.
@@ -465,6 +643,13 @@ contains
       if (mat%use_depth .and. s(1) >= mat%h_n .and. i == 2) then
         reason = trim(reason) // ': the interface has separated (s_N = ' // format_real(s(1)) // &
                  ' >= H_N = ' // format_real(mat%h_n) // ' mm) and transmits no traction'
+      else if (mat%use_depth .and. old%s(1) >= mat%h_n .and. i == 1 .and. target > 0.0_dp) then
+        reason = trim(reason) // ': the interface has separated (s_N = ' // format_real(old%s(1)) // &
+                 ' >= H_N = ' // format_real(mat%h_n) // ' mm) and carries no tension'
+      else if (i == 1 .and. target > 0.0_dp .and. r_max + target <= 0.0_dp .and. &
+               all(old%damage(1:mat%n_planes) >= 1.0_dp)) then
+        reason = trim(reason) // ': the interface is fully damaged (D = 1 on every ' // &
+                 'microplane) and carries no tension'
       end if
     else
       reason = 'the ' // trim(traction_names(i)) // ' Newton iteration did not converge in ' // &

@@ -3,22 +3,27 @@
 !> docs/material.md is the output of `interlock-query --markdown`.
 program interlock_query
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+  use interlock_cli, only: exit_program
   use interlock, only: properties, statevars, n_properties, n_required_properties, &
       n_statevars_per_plane, n_statevars_global, umat_planes, umat_nstatv, statevar_index, &
       format_range, format_real, property_t, statevar_t, kind_real, kind_flag, kind_choice, &
       interlock_version_string, format_integer
   implicit none
-  character(len=64) :: arg
-  integer :: iarg, n
+  character(len=:), allocatable :: arg
+  integer :: iarg, n, length
+
 
   n = command_argument_count()
   if (n == 0) then
+    write (error_unit, '(a)') 'interlock-query: error: no option given'
     call usage(error_unit)
-    error stop 2
+    call exit_program(2)
   end if
   do iarg = 1, n
-    call get_command_argument(iarg, arg)
-    select case (trim(arg))
+    call get_command_argument(iarg, length=length)
+    allocate (character(len=length) :: arg)
+    if (length > 0) call get_command_argument(iarg, arg)
+    select case (arg)
     case ('--help', '-h')
       call usage(output_unit)
     case ('--version')
@@ -34,11 +39,13 @@ program interlock_query
     case ('--markdown')
       call print_markdown()
     case default
-      write (error_unit, '(a)') "interlock-query: unknown option '" // trim(arg) // &
-        "' (see interlock-query --help)"
-      error stop 2
+      write (error_unit, '(a)') "interlock-query: error: unknown option '" // arg // "'"
+      call usage(error_unit)
+      call exit_program(2)
     end select
+    deallocate (arg)
   end do
+  call exit_program(0)
 
 contains
 
@@ -55,8 +62,11 @@ contains
       '  --statev           the UMAT STATEV layout: index, name, plane, unit, description', &
       '  --markdown         the whole reference page (docs/material.md)', &
       '  --version          the library version', &
-      '  --help             this text'
+      '  --help             this text', &
+      '  Exit status: 0 done, 2 a usage error (no option, an unknown option), 3 an internal', &
+      '  inconsistency of the material table.'
   end subroutine usage
+
 
   !> Text padded (or cut) to width w.
   pure function pad(text, w) result(out)
@@ -192,7 +202,7 @@ contains
     ivar = 1
     k = 0
     write (error_unit, '(a)') 'interlock-query: STATEV(' // format_integer(slot) // ') is not in the table'
-    error stop 3
+    call exit_program(3)
   end subroutine locate
 
   subroutine print_markdown()

@@ -8,10 +8,12 @@
 !>
 !>   interlock-fuzz [--updates N] [--seed S] [--fd-every K] [--deck-dir DIR] [--max-decks M]
 !>
-!> Exit status 0 when no invariant, tangent or status failure was found.
+!> Exit status 0 when no invariant, tangent or status failure was found; 2 on a usage error (the
+!> usage on stderr).
 program interlock_fuzz
-  use, intrinsic :: iso_fortran_env, only: output_unit, int64
+  use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use interlock_cli, only: exit_program
   use interlock
   use interlock_replay, only: interlock_write_replay_deck
   use test_stability_tools
@@ -23,6 +25,7 @@ program interlock_fuzz
   character(len=256) :: deck_dir = '.'
   type(rng_t) :: rng
   real(dp) :: t0, t1
+
 
   call parse_arguments()
   call rng_seed(rng, seed)
@@ -44,38 +47,61 @@ program interlock_fuzz
 contains
 
   subroutine parse_arguments()
-    integer :: i, n
+    integer :: i, n, ios
     character(len=256) :: arg, val
     n = command_argument_count()
     i = 1
     do while (i <= n)
       call get_command_argument(i, arg)
-      val = ''
-      if (i < n) call get_command_argument(i + 1, val)
       select case (trim(arg))
-      case ('--updates')
-        read (val, *) n_updates
-        i = i + 1
-      case ('--seed')
-        read (val, *) seed
-        i = i + 1
-      case ('--fd-every')
-        read (val, *) fd_every
-        i = i + 1
-      case ('--deck-dir')
-        deck_dir = val
-        i = i + 1
-      case ('--max-decks')
-        read (val, *) max_decks
+      case ('-h', '--help')
+        call usage(output_unit)
+        call exit_program(0)
+      case ('--version')
+        write (output_unit, '(a)') 'interlock-fuzz ' // interlock_version_string
+        call exit_program(0)
+      case ('--updates', '--seed', '--fd-every', '--deck-dir', '--max-decks')
+        if (i == n) call usage_error(trim(arg) // ' needs a value')
+        call get_command_argument(i + 1, val)
+        ios = 0
+        select case (trim(arg))
+        case ('--updates')
+          read (val, *, iostat=ios) n_updates
+          if (ios == 0 .and. n_updates < 1) ios = 1
+        case ('--seed')
+          read (val, *, iostat=ios) seed
+        case ('--fd-every')
+          read (val, *, iostat=ios) fd_every
+          if (ios == 0 .and. fd_every < 1) ios = 1
+        case ('--deck-dir')
+          deck_dir = val
+        case ('--max-decks')
+          read (val, *, iostat=ios) max_decks
+          if (ios == 0 .and. max_decks < 0) ios = 1
+        end select
+        if (ios /= 0) call usage_error(trim(arg) // ' ' // trim(val) // ': not an admissible ' // &
+          'value (--updates, --fd-every: integers >= 1; --seed: an integer; --max-decks >= 0)')
         i = i + 1
       case default
-        write (output_unit, '(a)') 'usage: interlock-fuzz [--updates N] [--seed S] ' // &
-          '[--fd-every K] [--deck-dir DIR] [--max-decks M]'
-        error stop 2
+        call usage_error('unknown argument ' // trim(arg))
       end select
       i = i + 1
     end do
   end subroutine parse_arguments
+
+  subroutine usage(unit)
+    integer, intent(in) :: unit
+    write (unit, '(a)') 'usage: interlock-fuzz [--updates N] [--seed S] ' // &
+      '[--fd-every K] [--deck-dir DIR] [--max-decks M] | --help | --version'
+  end subroutine usage
+
+  subroutine usage_error(message)
+    character(len=*), intent(in) :: message
+    write (error_unit, '(a)') 'interlock-fuzz: error: ' // message
+    call usage(error_unit)
+    call exit_program(2)
+  end subroutine usage_error
+
 
   !> A random admissible material and solver.
   subroutine random_material(mat, solver)

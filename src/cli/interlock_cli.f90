@@ -1,0 +1,33 @@
+!> What the command-line programs share (interlock-history, interlock-query, interlock-bench,
+!> interlock-fuzz): ending with an exit status and nothing else. Fortran's `stop 2` and
+!> `error stop 2` print "STOP 2" / "ERROR STOP 2" (and, in the Debug build, a backtrace); a
+!> usage error must print only its message and the usage.
+module interlock_cli
+  use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+  use, intrinsic :: iso_c_binding, only: c_int
+  implicit none
+  private
+  public :: exit_program
+
+  interface
+    !> _exit: ends the process at once, without the C exit handlers (HDF5 1.10's own handler
+    !> crashes in H5F__close_cb on a file whose close failed, e.g. on a full disk; its library is
+    !> closed before by interlock-history, and the Fortran units are flushed here).
+    subroutine c_exit(status) bind(C, name='_exit')
+      import :: c_int
+      integer(c_int), value :: status
+    end subroutine c_exit
+  end interface
+
+contains
+
+  !> Flush standard output and standard error and end the program with exit status `code`.
+  !> Only for the programs' main units, after every file they write is closed.
+  subroutine exit_program(code)
+    integer, intent(in) :: code
+    flush (output_unit)
+    flush (error_unit)
+    call c_exit(int(code, c_int))
+  end subroutine exit_program
+
+end module interlock_cli

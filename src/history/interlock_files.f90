@@ -1,0 +1,90 @@
+!> Files as the operating system sees them (interlock_posix.c and the C library): what a path
+!> names, whether two paths are the same file, removing and renaming, and the guard that removes an unfinished output file when the
+!> program is interrupted (SIGINT, SIGTERM, SIGHUP).
+module interlock_files
+  use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
+  implicit none
+  private
+  public :: path_absent, path_regular, path_folder, path_other, path_kind, same_file, &
+            guard_file, unguard_file, remove_file, rename_file, process_id
+
+  !> What a path names (path_kind): nothing, a regular file, a folder, anything else (a FIFO,
+  !> a device, a socket).
+  integer, parameter :: path_absent = 0, path_regular = 1, path_folder = 2, path_other = 3
+
+  interface
+    integer(c_int) function c_path_kind(path) bind(C, name='interlock_path_kind')
+      import :: c_int, c_char
+      character(kind=c_char), intent(in) :: path(*)
+    end function c_path_kind
+    integer(c_int) function c_same_file(a, b) bind(C, name='interlock_same_file')
+      import :: c_int, c_char
+      character(kind=c_char), intent(in) :: a(*), b(*)
+    end function c_same_file
+    integer(c_int) function c_guard_file(path) bind(C, name='interlock_guard_file')
+      import :: c_int, c_char
+      character(kind=c_char), intent(in) :: path(*)
+    end function c_guard_file
+    subroutine c_unguard_file() bind(C, name='interlock_unguard_file')
+    end subroutine c_unguard_file
+    integer(c_int) function c_rename(old, new) bind(C, name='rename')
+      import :: c_int, c_char
+      character(kind=c_char), intent(in) :: old(*), new(*)
+    end function c_rename
+    integer(c_int) function c_remove(path) bind(C, name='remove')
+      import :: c_int, c_char
+      character(kind=c_char), intent(in) :: path(*)
+    end function c_remove
+    integer(c_int) function c_getpid() bind(C, name='getpid')
+      import :: c_int
+    end function c_getpid
+  end interface
+
+contains
+
+  !> path_absent, path_regular, path_folder or path_other (symbolic links followed).
+  integer function path_kind(path)
+    character(len=*), intent(in) :: path
+    path_kind = int(c_path_kind(path // c_null_char))
+  end function path_kind
+
+  !> Both paths exist and name the same file (the same device and inode).
+  logical function same_file(a, b)
+    character(len=*), intent(in) :: a, b
+    same_file = c_same_file(a // c_null_char, b // c_null_char) /= 0
+  end function same_file
+
+  !> From now on SIGINT, SIGTERM or SIGHUP remove `path` before the program ends (by that
+  !> signal). stat /= 0: the guard could not be set (a path of 8192 bytes or more).
+  subroutine guard_file(path, stat)
+    character(len=*), intent(in) :: path
+    integer, intent(out) :: stat
+    stat = int(c_guard_file(path // c_null_char))
+  end subroutine guard_file
+
+  !> The guarded file is complete or gone: a signal no longer removes it.
+  subroutine unguard_file()
+    call c_unguard_file()
+  end subroutine unguard_file
+
+  !> Remove a file if it is there (nothing happens otherwise).
+  subroutine remove_file(path)
+    character(len=*), intent(in) :: path
+    integer(c_int) :: ignore
+    ignore = c_remove(path // c_null_char)
+  end subroutine remove_file
+
+  !> Give file `old` the name `new` (replacing a file of that name in one step). stat /= 0:
+  !> it could not.
+  subroutine rename_file(old, new, stat)
+    character(len=*), intent(in) :: old, new
+    integer, intent(out) :: stat
+    stat = int(c_rename(old // c_null_char, new // c_null_char))
+  end subroutine rename_file
+
+  !> This process's id.
+  integer function process_id()
+    process_id = int(c_getpid())
+  end function process_id
+
+end module interlock_files
