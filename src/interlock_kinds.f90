@@ -1,10 +1,9 @@
 !> Working precision, constants and the convention for "infinite" parameters.
 module interlock_kinds
   use, intrinsic :: iso_fortran_env, only: real64
-  use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
   implicit none
   private
-  public :: dp, pi, deg_to_rad, rad_to_deg, infinite_threshold
+  public :: dp, pi, deg_to_rad, rad_to_deg, infinite_threshold, separation_bound
   public :: is_infinite_value, is_nan_value, same_value
 
   integer, parameter :: dp = real64
@@ -14,11 +13,20 @@ module interlock_kinds
   !> A parameter at or above this value (or +Inf) means "+infinity", i.e. the effect it
   !> controls is off (H_N, zeta_0). FE input files cannot always hold an IEEE infinity.
   real(dp), parameter :: infinite_threshold = 1.0e30_dp
+  !> The largest admissible |s_N|, |s_T| [mm] (a kilometre: no interface of an FE model opens
+  !> or slides that far; beyond it the input is bad, e.g. a host in other units or a diverged
+  !> iteration). With stiffnesses <= 1e90 MPa/mm and lengths >= 1e-90 mm (what
+  !> interlock_material_prepare admits) every traction, ratio s/s_0 and energy of the update
+  !> stays below 1e200: no overflow, no FP trap.
+  real(dp), parameter :: separation_bound = 1.0e6_dp
 
 contains
 
   !> True for +Inf or a value >= infinite_threshold; never raises an FP exception on NaN.
   elemental logical function is_infinite_value(x)
+    ! (the IEEE module here only: gfortran saves and restores the floating-point state around
+    ! every procedure that uses it, which same_value, on the UMAT's path, need not pay)
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
     real(dp), intent(in) :: x
     if (ieee_is_nan(x)) then
       is_infinite_value = .false.
@@ -30,6 +38,7 @@ contains
   end function is_infinite_value
 
   elemental logical function is_nan_value(x)
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
     real(dp), intent(in) :: x
     is_nan_value = ieee_is_nan(x)
   end function is_nan_value
