@@ -4,7 +4,7 @@ module interlock_kinds
   implicit none
   private
   public :: dp, pi, deg_to_rad, rad_to_deg, infinite_threshold, separation_bound
-  public :: is_infinite_value, is_nan_value, same_value
+  public :: is_infinite_value, is_nan_value, same_value, is_finite_bits
 
   integer, parameter :: dp = real64
   real(dp), parameter :: pi = 3.14159265358979323846264338327950288_dp
@@ -42,6 +42,17 @@ contains
     real(dp), intent(in) :: x
     is_nan_value = ieee_is_nan(x)
   end function is_nan_value
+
+  !> x is finite (not NaN, not +-Inf), from its bits: no comparison of a NaN (an ordered
+  !> comparison raises the invalid flag, a trap in FE codes that run with traps on) and no
+  !> IEEE module (whose save and restore of the FP state would cost the UMAT's checks more
+  !> than the test).
+  elemental logical function is_finite_bits(x)
+    use, intrinsic :: iso_fortran_env, only: int64
+    real(dp), intent(in) :: x
+    integer(int64), parameter :: exponent_mask = shiftl(2047_int64, 52)
+    is_finite_bits = iand(transfer(x, 0_int64), exponent_mask) /= exponent_mask
+  end function is_finite_bits
 
   !> a == b without the compiler's warning on real equality: used where exact equality is meant
   !> (flags stored as reals, a parameter that switches an effect off exactly).

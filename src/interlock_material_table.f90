@@ -4,7 +4,8 @@
 !> validation messages, the names used by decks and HDF5 files, `interlock-query` and
 !> `docs/material.md` are all generated from these two tables.
 module interlock_material_table
-  use interlock_kinds, only: dp, is_nan_value, same_value, infinite_threshold
+  use, intrinsic :: iso_fortran_env, only: int64
+  use interlock_kinds, only: dp, is_nan_value, same_value, infinite_threshold, is_finite_bits
   implicit none
   private
   public :: property_t, statevar_t, properties, statevars
@@ -205,6 +206,10 @@ contains
     do j = 1, size(values)
       i = first + j - 1
       associate (x => values(j))
+        if (.not. is_finite_bits(x)) then   ! only +Inf, and only where infinity is admissible
+          ok = ok .and. infinite_ok(i) .and. transfer(x, 0_int64) == shiftl(2047_int64, 52)
+          cycle
+        end if
         in_range = x >= lower(i) .and. (x > lower(i) .or. .not. lower_open(i)) .and. &
                    x <= upper(i) .and. (x < upper(i) .or. .not. upper_open(i)) .and. &
                    (x < infinite_threshold .or. infinite_ok(i))

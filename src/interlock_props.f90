@@ -2,7 +2,7 @@
 !> UMAT) and the library's material, solver and state types.
 module interlock_props
   use interlock_kinds, only: dp, deg_to_rad
-  use interlock_kinds, only: same_value
+  use interlock_kinds, only: same_value, is_finite_bits
   use interlock_material_table, only: properties, n_properties, n_required_properties, &
       check_property, properties_ok, umat_planes, umat_nstatv, statevars, &
       n_statevars_per_plane, format_integer, format_real, &
@@ -80,7 +80,9 @@ contains
       call props_message(props, 0, message)
       return
     end if
-    if (.not. (properties_ok(props) .and. props(prop_thetaf) <= props(prop_theta0))) then
+    ok = properties_ok(props)
+    if (ok) ok = props(prop_thetaf) <= props(prop_theta0)   ! (no comparison of a NaN)
+    if (.not. ok) then
       call props_message(props, 1, message)
       return
     end if
@@ -165,19 +167,28 @@ contains
     integer :: i
     logical :: ok
     bad = 0
+    if (.not. is_finite_bits(statev(slot_flag))) then
+      bad = slot_flag
+      return
+    end if
     if (statev(slot_flag) < 0.5_dp) then
       if (.not. same_value(statev(slot_flag), 0.0_dp)) bad = slot_flag
       return
     end if
     call statev_bounds(mat, lo, hi)
     lo(slot_flag) = 1.0_dp
-    ok = .true.
-    do i = 1, umat_nstatv
-      ok = ok .and. statev(i) >= lo(i) .and. statev(i) <= hi(i)
-    end do
+    ok = all(is_finite_bits(statev))
+    if (ok) then
+      do i = 1, umat_nstatv
+        ok = ok .and. statev(i) >= lo(i) .and. statev(i) <= hi(i)
+      end do
+    end if
     if (ok) return
     do i = 1, umat_nstatv
-      if (.not. (statev(i) >= lo(i) .and. statev(i) <= hi(i))) then
+      if (.not. is_finite_bits(statev(i))) then
+        bad = i
+        return
+      else if (.not. (statev(i) >= lo(i) .and. statev(i) <= hi(i))) then
         bad = i
         return
       end if

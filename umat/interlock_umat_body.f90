@@ -91,7 +91,7 @@ contains
                             NSHR, NTENS, NSTATV, PROPS, NPROPS, COORDS, DROT, PNEWDT, CELENT, &
                             DFGRD0, DFGRD1, NOEL, NPT, LAYER, KSPT, JSTEP, KINC)
     use interlock, only: props_to_material, statev_to_state, state_to_statev, umat_nstatv, &
-        message_len, separation_bound, state_bound, statev_bad_index
+        message_len, separation_bound, state_bound, statev_bad_index, is_finite_bits
     implicit none
     integer, intent(in) :: NDI                 !< direct components (1 for a 2D cohesive element)
     integer, intent(in) :: NSHR                !< shear components (1 for a 2D cohesive element)
@@ -125,6 +125,7 @@ contains
     type(interlock_info_t) :: info
     real(dp) :: s(2), sigma(2), tangent(2, 2), factor
     integer :: stat, bad
+    logical :: ok
     character(len=message_len) :: message
 
     associate (unused_1 => NDI, unused_2 => NSHR, unused_3 => LAYER, unused_4 => KSPT, &
@@ -154,14 +155,23 @@ contains
       call report(message, pnewdt_bad_input, NOEL, NPT, KINC, CMNAME, PNEWDT)
       return
     end if
-    s = STRAN(1:2) + DSTRAN(1:2)
-    ! abs(x) <= bound is false for NaN and both infinities.
-    if (.not. (abs(s(1)) <= separation_bound .and. abs(s(2)) <= separation_bound .and. &
-               abs(STRAN(1)) <= separation_bound .and. abs(STRAN(2)) <= separation_bound)) then
-      call reject_separation(STRAN(1:2), s, NOEL, NPT, KINC, CMNAME, PNEWDT)
+    ! Finite first (from the bits: an ordered comparison of a NaN, or a sum of huge values,
+    ! would raise a trap), then within the bound (nested tests: Fortran does not short-circuit).
+    ok = all(is_finite_bits([STRAN(1:2), DSTRAN(1:2)]))
+    if (ok) ok = abs(STRAN(1)) <= separation_bound .and. abs(STRAN(2)) <= separation_bound .and. &
+                 abs(DSTRAN(1)) <= 2.0_dp * separation_bound .and. &
+                 abs(DSTRAN(2)) <= 2.0_dp * separation_bound
+    if (ok) then
+      s = STRAN(1:2) + DSTRAN(1:2)
+      ok = abs(s(1)) <= separation_bound .and. abs(s(2)) <= separation_bound
+    end if
+    if (.not. ok) then
+      call reject_separation(STRAN(1:2), DSTRAN(1:2), NOEL, NPT, KINC, CMNAME, PNEWDT)
       return
     end if
-    if (.not. (abs(STRESS(1)) <= state_bound .and. abs(STRESS(2)) <= state_bound)) then
+    ok = all(is_finite_bits(STRESS(1:2)))
+    if (ok) ok = abs(STRESS(1)) <= state_bound .and. abs(STRESS(2)) <= state_bound
+    if (.not. ok) then
       call reject_argument(bad_stress, 0, STRESS(1:2), NOEL, NPT, KINC, CMNAME, PNEWDT)
       return
     end if
@@ -237,7 +247,9 @@ contains
         d_target = old%damage(k) + controls%max_damage_increment
         beta_target = 1.0_dp / (1.0_dp - mat%eta * d_target)
         if (new%beta(k) > zero%beta(k) .and. beta_target > zero%beta(k)) then
-          f = min(f, (beta_target - zero%beta(k)) / (new%beta(k) - zero%beta(k)))
+          ! (the quotient only when below f <= 1: no overflow on a tiny denominator)
+          if (beta_target - zero%beta(k) < f * (new%beta(k) - zero%beta(k))) &
+            f = (beta_target - zero%beta(k)) / (new%beta(k) - zero%beta(k))
         else
           f = 0.0_dp   ! a jump (separation beyond H_N) or no cut helps: as small as allowed
         end if
@@ -254,7 +266,8 @@ contains
           dzeta_target = 0.0_dp
         end if
         if (new%zeta(k) > zero%zeta(k) .and. dzeta_target > dzeta_zero) then
-          f = min(f, (dzeta_target - dzeta_zero) / (new%zeta(k) - zero%zeta(k)))
+          if (dzeta_target - dzeta_zero < f * (new%zeta(k) - zero%zeta(k))) &
+            f = (dzeta_target - dzeta_zero) / (new%zeta(k) - zero%zeta(k))
         else
           f = 0.0_dp
         end if
@@ -285,7 +298,7 @@ contains
 
   !> Reject a bad argument of the host (`what`: bad_*), naming the value.
   subroutine reject_argument(what, n, x, noel, npt, kinc, cmname, pnewdt)
-    use interlock, only: format_integer, format_real, umat_nstatv, state_bound
+    use interlock, only: format_integer, format_real, umat_nstatv, state_bound, is_finite_bits
     integer, intent(in) :: what, n, noel, npt, kinc
     real(dp), intent(in) :: x(2)
     character(len=*), intent(in) :: cmname
@@ -305,7 +318,12 @@ contains
                   // format_integer(umat_nstatv) // ' (*DEPVAR; see interlock-query --statev)', &
                   pnewdt_bad_input, noel, npt, kinc, cmname, pnewdt)
     case (bad_stress)
-      i = merge(1, 2, .not. abs(x(1)) <= state_bound)
+      i = 2
+      if (.not. is_finite_bits(x(1))) then
+        i = 1
+      else if (abs(x(1)) > state_bound) then
+        i = 1
+      end if
       call report('STRESS(' // format_integer(i) // ') = ' // format_real(x(i)) // ' on entry ' // &
                   'is inadmissible: admissible |STRESS| <= ' // format_real(state_bound) // &
                   ' MPa (the traction this UMAT returned for the last increment)', &
@@ -315,22 +333,23 @@ contains
 
   !> Reject a separation: not finite (a diverged global iteration: retry with a smaller
   !> increment) or beyond the admissible bound (bad input).
-  subroutine reject_separation(stran, s, noel, npt, kinc, cmname, pnewdt)
-    use interlock, only: format_real, separation_bound
-    real(dp), intent(in) :: stran(2), s(2)
+  subroutine reject_separation(stran, dstran, noel, npt, kinc, cmname, pnewdt)
+    use interlock, only: format_real, separation_bound, is_finite_bits
+    real(dp), intent(in) :: stran(2), dstran(2)
     integer, intent(in) :: noel, npt, kinc
     character(len=*), intent(in) :: cmname
     real(dp), intent(inout) :: pnewdt
-    if (.not. (abs(s(1)) <= huge(1.0_dp) .and. abs(s(2)) <= huge(1.0_dp))) then
+    if (.not. all(is_finite_bits([stran, dstran]))) then
       call report('the separation STRAN + DSTRAN is not finite (diverged global iteration?): ' &
                   // 'retry with a smaller increment', pnewdt_local_failure, noel, npt, kinc, &
                   cmname, pnewdt)
     else
       call report('the separation STRAN = (' // format_real(stran(1)) // ', ' // &
-                  format_real(stran(2)) // ') mm, STRAN + DSTRAN = (' // format_real(s(1)) // &
-                  ', ' // format_real(s(2)) // ') mm is inadmissible: admissible |s_N|, ' // &
-                  '|s_T| <= ' // format_real(separation_bound) // ' mm (separations, in mm: ' // &
-                  'constitutive thickness 1)', pnewdt_bad_input, noel, npt, kinc, cmname, pnewdt)
+                  format_real(stran(2)) // ') mm, DSTRAN = (' // format_real(dstran(1)) // &
+                  ', ' // format_real(dstran(2)) // ') mm is inadmissible: admissible |s_N|, ' // &
+                  '|s_T| <= ' // format_real(separation_bound) // ' mm for STRAN and STRAN + ' // &
+                  'DSTRAN (separations, in mm: constitutive thickness 1)', pnewdt_bad_input, &
+                  noel, npt, kinc, cmname, pnewdt)
     end if
   end subroutine reject_separation
 
