@@ -1,10 +1,10 @@
 !> Working precision, constants and the convention for "infinite" parameters.
 module interlock_kinds
-  use, intrinsic :: iso_fortran_env, only: real64
+  use, intrinsic :: iso_fortran_env, only: real64, int64
   implicit none
   private
   public :: dp, pi, deg_to_rad, rad_to_deg, infinite_threshold, separation_bound
-  public :: is_infinite_value, is_nan_value, same_value, is_finite_bits
+  public :: is_infinite_value, is_nan_value, same_value, is_finite_bits, exponent_bits
 
   integer, parameter :: dp = real64
   real(dp), parameter :: pi = 3.14159265358979323846264338327950288_dp
@@ -19,6 +19,12 @@ module interlock_kinds
   !> interlock_material_prepare admits) every traction, ratio s/s_0 and energy of the update
   !> stays below 1e200: no overflow, no FP trap.
   real(dp), parameter :: separation_bound = 1.0e6_dp
+  !> The exponent field of a real(dp): all ones in a NaN or an infinity. A finite test from
+  !> the bits, iand(transfer(x, 0_int64), exponent_bits) /= exponent_bits, compares no NaN (an
+  !> ordered comparison of a NaN raises the invalid flag: a trap in FE codes that run with
+  !> traps on) and needs no IEEE module (whose save and restore of the floating-point state
+  !> around each procedure costs more than the test); is_finite_bits is the same as a function.
+  integer(int64), parameter :: exponent_bits = shiftl(2047_int64, 52)
 
 contains
 
@@ -43,15 +49,10 @@ contains
     is_nan_value = ieee_is_nan(x)
   end function is_nan_value
 
-  !> x is finite (not NaN, not +-Inf), from its bits: no comparison of a NaN (an ordered
-  !> comparison raises the invalid flag, a trap in FE codes that run with traps on) and no
-  !> IEEE module (whose save and restore of the FP state would cost the UMAT's checks more
-  !> than the test).
+  !> x is finite (not NaN, not +-Inf), from its bits (exponent_bits).
   elemental logical function is_finite_bits(x)
-    use, intrinsic :: iso_fortran_env, only: int64
     real(dp), intent(in) :: x
-    integer(int64), parameter :: exponent_mask = shiftl(2047_int64, 52)
-    is_finite_bits = iand(transfer(x, 0_int64), exponent_mask) /= exponent_mask
+    is_finite_bits = iand(transfer(x, 0_int64), exponent_bits) /= exponent_bits
   end function is_finite_bits
 
   !> a == b without the compiler's warning on real equality: used where exact equality is meant

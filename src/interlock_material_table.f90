@@ -5,7 +5,7 @@
 !> `docs/material.md` are all generated from these two tables.
 module interlock_material_table
   use, intrinsic :: iso_fortran_env, only: int64
-  use interlock_kinds, only: dp, is_nan_value, same_value, infinite_threshold, is_finite_bits
+  use interlock_kinds, only: dp, is_nan_value, same_value, infinite_threshold, exponent_bits
   implicit none
   private
   public :: property_t, statevar_t, properties, statevars
@@ -127,6 +127,12 @@ module interlock_material_table
   logical, parameter :: upper_open(n_properties) = properties%upper_open
   logical, parameter :: infinite_ok(n_properties) = properties%infinite_ok
   logical, parameter :: integer_valued(n_properties) = properties%kind /= kind_real
+  !> The bounds as closed ones: an open bound moved to the next representable number, and
+  !> values >= infinite_threshold admitted only where infinity is admissible.
+  real(dp), parameter :: lowest(n_properties) = merge(nearest(lower, 1.0_dp), lower, lower_open)
+  real(dp), parameter :: highest(n_properties) = merge(huge(1.0_dp), &
+    min(merge(nearest(upper, -1.0_dp), upper, upper_open), nearest(infinite_threshold, -1.0_dp)), &
+    infinite_ok)
 
   integer, parameter :: n_statevars_per_plane = 6
   integer, parameter :: n_statevars_global = 4
@@ -192,31 +198,30 @@ contains
   end function properties_ok
 
   !> Whether values(j) is admissible for property first + j - 1, for every j: plain
-  !> comparisons only (NaN fails every one), so that a caller that checks every call (the
-  !> UMAT) builds a message only on failure. infinite_threshold and above is "infinite",
-  !> admissible only where it switches an effect off; flags and choices are whole numbers
-  !> (their ranges lie within [0, 2^52), where x + 2^52 - 2^52 rounds x to a whole number).
+  !> comparisons only, so that a caller that checks every call (the UMAT) builds a message
+  !> only on failure. A NaN, -Inf and +Inf where no infinity is admissible fail on their bits
+  !> (no comparison of a NaN); the rest on the table's bounds as closed bounds (lowest, highest)
+  !> with infinite_threshold and above only where infinity is admissible; flags and choices
+  !> are whole numbers (their ranges lie within [0, 2^52), where x + 2^52 - 2^52 rounds x to a
+  !> whole number).
   pure logical function rows_ok(values, first) result(ok)
     real(dp), intent(in) :: values(:)
     integer, intent(in) :: first
     real(dp), parameter :: whole = 2.0_dp**52
+    integer(int64), parameter :: plus_inf = exponent_bits
     integer :: j, i
-    logical :: in_range
+    integer(int64) :: bits
     ok = .true.
     do j = 1, size(values)
       i = first + j - 1
-      associate (x => values(j))
-        if (.not. is_finite_bits(x)) then   ! only +Inf, and only where infinity is admissible
-          ok = ok .and. infinite_ok(i) .and. transfer(x, 0_int64) == shiftl(2047_int64, 52)
-          cycle
-        end if
-        in_range = x >= lower(i) .and. (x > lower(i) .or. .not. lower_open(i)) .and. &
-                   x <= upper(i) .and. (x < upper(i) .or. .not. upper_open(i)) .and. &
-                   (x < infinite_threshold .or. infinite_ok(i))
-        if (integer_valued(i)) in_range = in_range .and. .not. &
-          ((x + whole) - whole < x .or. (x + whole) - whole > x)
-        ok = ok .and. (in_range .or. (infinite_ok(i) .and. x >= infinite_threshold))
-      end associate
+      bits = transfer(values(j), 0_int64)
+      if (iand(bits, exponent_bits) == exponent_bits) then
+        ok = ok .and. bits == plus_inf .and. infinite_ok(i)
+      else
+        ok = ok .and. values(j) >= lowest(i) .and. values(j) <= highest(i)
+        if (integer_valued(i)) ok = ok .and. .not. &
+          ((values(j) + whole) - whole < values(j) .or. (values(j) + whole) - whole > values(j))
+      end if
     end do
   end function rows_ok
 

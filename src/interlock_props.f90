@@ -2,7 +2,8 @@
 !> UMAT) and the library's material, solver and state types.
 module interlock_props
   use interlock_kinds, only: dp, deg_to_rad
-  use interlock_kinds, only: same_value, is_finite_bits
+  use, intrinsic :: iso_fortran_env, only: int64
+  use interlock_kinds, only: same_value, is_finite_bits, exponent_bits
   use interlock_material_table, only: properties, n_properties, n_required_properties, &
       check_property, properties_ok, umat_planes, umat_nstatv, statevars, &
       n_statevars_per_plane, format_integer, format_real, &
@@ -164,10 +165,10 @@ contains
     real(dp), intent(in) :: statev(umat_nstatv)
     type(interlock_material_t), intent(in) :: mat
     real(dp) :: lo(umat_nstatv), hi(umat_nstatv)
-    integer :: i
+    integer :: i, n_bad
     logical :: ok
     bad = 0
-    if (.not. is_finite_bits(statev(slot_flag))) then
+    if (iand(transfer(statev(slot_flag), 0_int64), exponent_bits) == exponent_bits) then
       bad = slot_flag
       return
     end if
@@ -177,12 +178,19 @@ contains
     end if
     call statev_bounds(mat, lo, hi)
     lo(slot_flag) = 1.0_dp
-    ok = all(is_finite_bits(statev))
-    if (ok) then
+    ! Finite first (exponent_bits: no comparison of a NaN), then the ranges; counted, not
+    ! branched, so that the loops vectorise.
+    n_bad = 0
+    do i = 1, umat_nstatv
+      n_bad = n_bad + merge(1, 0, iand(transfer(statev(i), 0_int64), exponent_bits) == &
+                                  exponent_bits)
+    end do
+    if (n_bad == 0) then
       do i = 1, umat_nstatv
-        ok = ok .and. statev(i) >= lo(i) .and. statev(i) <= hi(i)
+        n_bad = n_bad + merge(1, 0, statev(i) < lo(i)) + merge(1, 0, statev(i) > hi(i))
       end do
     end if
+    ok = n_bad == 0
     if (ok) return
     do i = 1, umat_nstatv
       if (.not. is_finite_bits(statev(i))) then

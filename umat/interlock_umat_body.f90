@@ -91,7 +91,8 @@ contains
                             NSHR, NTENS, NSTATV, PROPS, NPROPS, COORDS, DROT, PNEWDT, CELENT, &
                             DFGRD0, DFGRD1, NOEL, NPT, LAYER, KSPT, JSTEP, KINC)
     use interlock, only: props_to_material, statev_to_state, state_to_statev, umat_nstatv, &
-        message_len, separation_bound, state_bound, statev_bad_index, is_finite_bits
+        message_len, separation_bound, state_bound, statev_bad_index, exponent_bits
+    use, intrinsic :: iso_fortran_env, only: int64
     implicit none
     integer, intent(in) :: NDI                 !< direct components (1 for a 2D cohesive element)
     integer, intent(in) :: NSHR                !< shear components (1 for a 2D cohesive element)
@@ -157,7 +158,10 @@ contains
     end if
     ! Finite first (from the bits: an ordered comparison of a NaN, or a sum of huge values,
     ! would raise a trap), then within the bound (nested tests: Fortran does not short-circuit).
-    ok = all(is_finite_bits([STRAN(1:2), DSTRAN(1:2)]))
+    ok = iand(transfer(STRAN(1), 0_int64), exponent_bits) /= exponent_bits .and. &
+         iand(transfer(STRAN(2), 0_int64), exponent_bits) /= exponent_bits .and. &
+         iand(transfer(DSTRAN(1), 0_int64), exponent_bits) /= exponent_bits .and. &
+         iand(transfer(DSTRAN(2), 0_int64), exponent_bits) /= exponent_bits
     if (ok) ok = abs(STRAN(1)) <= separation_bound .and. abs(STRAN(2)) <= separation_bound .and. &
                  abs(DSTRAN(1)) <= 2.0_dp * separation_bound .and. &
                  abs(DSTRAN(2)) <= 2.0_dp * separation_bound
@@ -169,7 +173,8 @@ contains
       call reject_separation(STRAN(1:2), DSTRAN(1:2), NOEL, NPT, KINC, CMNAME, PNEWDT)
       return
     end if
-    ok = all(is_finite_bits(STRESS(1:2)))
+    ok = iand(transfer(STRESS(1), 0_int64), exponent_bits) /= exponent_bits .and. &
+         iand(transfer(STRESS(2), 0_int64), exponent_bits) /= exponent_bits
     if (ok) ok = abs(STRESS(1)) <= state_bound .and. abs(STRESS(2)) <= state_bound
     if (.not. ok) then
       call reject_argument(bad_stress, 0, STRESS(1:2), NOEL, NPT, KINC, CMNAME, PNEWDT)
