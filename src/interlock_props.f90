@@ -64,9 +64,11 @@ contains
   !> call of the UMAT comes here, so the success path is plain comparisons and arithmetic (no
   !> message, no formatted write, no copy of a long string): the messages are built by
   !> props_message only when a check fails. The RIA is the paper's, valid by construction.
+  !> `mat` is intent(inout) only so that the caller's fresh material is not initialised a
+  !> second time on every call: every field the update reads is set here.
   pure subroutine props_to_material(props, mat, solver, controls, stat, message)
     real(dp), intent(in) :: props(:)
-    type(interlock_material_t), intent(out) :: mat
+    type(interlock_material_t), intent(inout) :: mat
     type(interlock_solver_t), intent(out) :: solver
     type(umat_controls_t), intent(out) :: controls
     integer, intent(out) :: stat
@@ -235,11 +237,13 @@ contains
   end subroutine statev_message
 
   !> STATEV -> state; an uninitialised STATEV (all zero, as FE codes start) gives the virgin
-  !> state of the material.
+  !> state of the material. `state` is intent(inout) only so that the caller's fresh state is
+  !> not initialised a second time on every call: every per-plane field and the energies are
+  !> set here (the caller sets s and sigma).
   pure subroutine statev_to_state(statev, mat, state)
     real(dp), intent(in) :: statev(umat_nstatv)
     type(interlock_material_t), intent(in) :: mat
-    type(interlock_state_t), intent(out) :: state
+    type(interlock_state_t), intent(inout) :: state
     if (statev(slot_flag) < 0.5_dp) then
       call interlock_state_init(mat, state)
       return
@@ -253,6 +257,7 @@ contains
     state%work = statev(slot_work)
     state%diss_damage = statev(slot_diss_damage)
     state%diss_friction = statev(slot_diss_friction)
+    state%stored = 0.0_dp
   end subroutine statev_to_state
 
   pure subroutine state_to_statev(state, statev)
