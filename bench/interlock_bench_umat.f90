@@ -6,26 +6,12 @@ module interlock_bench_umat
   use interlock, only: dp, n_properties, properties, umat_nstatv, prop_mu, prop_h_n, &
       prop_theta0, prop_thetaf, prop_zeta0, prop_scheme, prop_effect_interlocking
   use interlock_bench_umat_floor, only: umat_floor_call
+  ! (the explicit interface of the external UMAT, as a host written in modern Fortran declares it)
+  use test_umat_interface, only: UMAT
   implicit none
   private
   public :: umat_props, time_umat, time_umat_floor
 
-  !> The external UMAT, as a host written in modern Fortran declares it.
-  interface
-    recursive subroutine UMAT(STRESS, STATEV, DDSDDE, SSE, SPD, SCD, RPL, DDSDDT, DRPLDE, &
-                              DRPLDT, STRAN, DSTRAN, TIME, DTIME, TEMP, DTEMP, PREDEF, DPRED, &
-                              CMNAME, NDI, NSHR, NTENS, NSTATV, PROPS, NPROPS, COORDS, DROT, &
-                              PNEWDT, CELENT, DFGRD0, DFGRD1, NOEL, NPT, LAYER, KSPT, JSTEP, KINC)
-      import :: dp
-      integer, intent(in) :: NDI, NSHR, NTENS, NSTATV, NPROPS, NOEL, NPT, LAYER, KSPT, JSTEP(4), KINC
-      character(len=*), intent(in) :: CMNAME
-      real(dp), intent(inout) :: STRESS(NTENS), STATEV(NSTATV), DDSDDE(NTENS, NTENS), SSE, SPD, &
-                                 SCD, RPL, DRPLDT, DDSDDT(NTENS), DRPLDE(NTENS), PNEWDT
-      real(dp), intent(in) :: STRAN(NTENS), DSTRAN(NTENS), TIME(2), DTIME, TEMP, DTEMP, &
-                              PREDEF(*), DPRED(*), PROPS(NPROPS), COORDS(3), DROT(3, 3), CELENT, &
-                              DFGRD0(3, 3), DFGRD1(3, 3)
-    end subroutine UMAT
-  end interface
 
 contains
 
@@ -52,6 +38,15 @@ contains
     real(dp), intent(in) :: props(:), h(:, :, :)
     real(dp), intent(inout) :: chk
     integer, intent(inout) :: fails, cuts
+    call run_umat_histories(props, h, chk, fails, cuts, .false.)
+  end subroutine time_umat
+
+  !> The host's loop of time_umat (floor false) and time_umat_floor (floor true).
+  subroutine run_umat_histories(props, h, chk, fails, cuts, floor)
+    real(dp), intent(in) :: props(:), h(:, :, :)
+    real(dp), intent(inout) :: chk
+    integer, intent(inout) :: fails, cuts
+    logical, intent(in) :: floor
     real(dp) :: stress(2), statev(umat_nstatv), ddsdde(2, 2), sse, spd, scd, rpl, ddsddt(2), &
                 drplde(2), drpldt, stran(2), dstran(2), time(2), dtime, temp, dtemp, predef(1), &
                 dpred(1), coords(3), drot(3, 3), pnewdt, celent, dfgrd0(3, 3), dfgrd1(3, 3), acc
@@ -82,10 +77,14 @@ contains
       do i = 1, size(h, 2)
         dstran = h(:, i, ih) - stran
         pnewdt = 1.0_dp
-        call UMAT(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpldt, stran, &
-                  dstran, time, dtime, temp, dtemp, predef, dpred, 'BENCH', 1, 1, 2, umat_nstatv, &
-                  props, size(props), coords, drot, pnewdt, celent, dfgrd0, dfgrd1, 1, 1, 1, 1, &
-                  [1, 1, 0, 0], i)
+        if (floor) then
+          call umat_floor_call(props, size(props), statev, stress, stran, dstran, ddsdde, fails)
+        else
+          call UMAT(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpldt, stran, &
+                    dstran, time, dtime, temp, dtemp, predef, dpred, 'BENCH', 1, 1, 2, &
+                    umat_nstatv, props, size(props), coords, drot, pnewdt, celent, dfgrd0, &
+                    dfgrd1, 1, 1, 1, 1, [1, 1, 0, 0], i)
+        end if
         if (pnewdt < 0.0_dp) fails = fails + 1   ! bad input (accuracy cuts propose 0.1 .. 1)
         if (pnewdt < 1.0_dp) cuts = cuts + 1
         stran = h(:, i, ih)
@@ -94,30 +93,19 @@ contains
       end do
     end do
     chk = chk + acc
-  end subroutine time_umat
+  end subroutine run_umat_histories
 
-  !> The floor of the UMAT's overhead over its law, on the same histories: what any UMAT of
-  !> this law must do per call besides the update (interlock_bench_umat_floor), with the same
-  !> host side as time_umat.
+  !> The floor of the UMAT's overhead over its law, on the same histories and with the same
+  !> host side as time_umat: what any UMAT of this law must do per call besides the update
+  !> (interlock_bench_umat_floor).
   subroutine time_umat_floor(props, h, chk)
     real(dp), intent(in) :: props(:), h(:, :, :)
     real(dp), intent(inout) :: chk
-    real(dp) :: stress(2), statev(umat_nstatv), ddsdde(2, 2), stran(2), dstran(2), acc
-    integer :: ih, i, bad
-    acc = 0.0_dp
-    bad = 0
-    do ih = 1, size(h, 3)
-      statev = 0.0_dp
-      stress = 0.0_dp
-      stran = 0.0_dp
-      do i = 1, size(h, 2)
-        dstran = h(:, i, ih) - stran
-        call umat_floor_call(props, size(props), statev, stress, stran, dstran, ddsdde, bad)
-        stran = h(:, i, ih)
-        acc = acc + (stress(1) + stress(2)) + (ddsdde(1, 1) + ddsdde(2, 2))
-      end do
-    end do
-    chk = chk + acc + bad
+    integer :: fails, cuts
+    fails = 0
+    cuts = 0
+    call run_umat_histories(props, h, chk, fails, cuts, .true.)
+    chk = chk + fails   ! (states the floor's checks refused: none on these histories)
   end subroutine time_umat_floor
 
 end module interlock_bench_umat

@@ -174,22 +174,32 @@ contains
                 ': the area fractions must sum to 1 (within 1e-9)'
       return
     end if
-    call interlock_material_derive(mat, ok)
-    if (.not. ok) then
-      message = derived_range_message(mat)
-      return
-    end if
-    stat = status_ok
-    message = ''
+    call interlock_material_derive(mat, stat, message)
+    if (stat == status_ok) message = ''
   end subroutine interlock_material_prepare
 
   !> Derive what the update needs from given parameters that are each in their range (the
   !> checks of interlock_material_prepare; the UMAT makes its own, cheaper ones on PROPS): the
   !> lengths and stiffnesses (SPEC section 2), the effect set and the kernel. `ok` is false
   !> (and the material not prepared) when the lengths or stiffnesses fall outside double
-  !> precision's safe range (derived_range_message says so). Arithmetic only: no message, no
-  !> formatted write, one sine and cosine per distinct |theta_0|.
-  pure subroutine interlock_material_derive(mat, ok)
+  !> precision's safe range, or eta, H_N or zeta_0 is too small to invert: then `stat` =
+  !> status_bad_input and `message` says why (it is set only then). Arithmetic only on
+  !> success: no message, no formatted write, one sine and cosine per distinct |theta_0|.
+  pure subroutine interlock_material_derive(mat, stat, message)
+    type(interlock_material_t), intent(inout) :: mat
+    integer, intent(out) :: stat
+    character(len=*), intent(inout) :: message
+    logical :: ok
+    stat = status_ok
+    call derive(mat, ok)
+    if (.not. ok) then
+      stat = status_bad_input
+      message = derived_range_message(mat)
+    end if
+  end subroutine interlock_material_derive
+
+  !> interlock_material_derive's arithmetic; `ok` false when the parameters cannot be derived.
+  pure subroutine derive(mat, ok)
     type(interlock_material_t), intent(inout) :: mat
     logical, intent(out) :: ok
     integer :: k, j
@@ -270,7 +280,7 @@ contains
       mat%kernel = kernel_inclined
     end if
     mat%prepared = .true.
-  end subroutine interlock_material_derive
+  end subroutine derive
 
   !> Why interlock_material_derive refused the parameters.
   pure function derived_range_message(mat) result(message)

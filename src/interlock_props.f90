@@ -13,7 +13,7 @@ module interlock_props
       sv_damage, sv_beta, sv_frictional_slip, sv_zeta, sv_theta, sv_friction_traction, &
       sv_work, sv_damage_dissipation, sv_friction_dissipation, sv_initialized
   use interlock_material, only: interlock_material_t, interlock_solver_t, &
-      interlock_material_derive, derived_range_message, interlock_paper_ria, n_effects
+      interlock_material_derive, interlock_paper_ria, n_effects
   use interlock_state, only: interlock_state_t, interlock_state_init
   use interlock_status, only: status_ok, status_bad_input
   implicit none
@@ -107,12 +107,7 @@ contains
     solver%substep_tol = v(prop_substep_tol)
     controls%max_damage_increment = v(prop_max_dd)
     controls%max_angle_increment = v(prop_max_dtheta) * deg_to_rad
-    call interlock_material_derive(mat, ok)
-    if (.not. ok) then
-      message = derived_range_message(mat)
-      return
-    end if
-    stat = status_ok
+    call interlock_material_derive(mat, stat, message)
   end subroutine props_to_material
 
   !> The message of a PROPS that props_to_material refused (`what` 0: NPROPS, 1: a value).
