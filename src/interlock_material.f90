@@ -2,7 +2,7 @@
 !> derived from them once, when the material is prepared (stiffnesses, the resolved effect set,
 !> constant sines and cosines), so that an update pays only for the effects a scene uses.
 module interlock_material
-  use interlock_kinds, only: dp, deg_to_rad, pi, is_nan_value, same_value, infinite_threshold
+  use interlock_kinds, only: dp, deg_to_rad, pi, is_nan_value, infinite_threshold
   use interlock_material_table, only: check_property, format_real, format_integer, &
       prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_zeta0
   use interlock_status, only: status_ok, status_bad_input
@@ -250,18 +250,18 @@ contains
         mat%thetaf_eff(k) = 0.0_dp
       end if
       mat%plane_wears(k) = mat%effect(effect_wear) .and. .not. mat%zeta0(k) >= infinite_threshold &
-                           .and. .not. same_value(mat%theta_init(k), mat%thetaf_eff(k))
+                           .and. .not. equal(mat%theta_init(k), mat%thetaf_eff(k))
       mat%inv_zeta0(k) = 0.0_dp
       if (mat%plane_wears(k)) mat%inv_zeta0(k) = 1.0_dp / mat%zeta0(k)
       ! cos and sin are even and odd to the bit: one evaluation per distinct |theta|.
       mat%cos0(k) = 1.0_dp
       mat%sin0(k) = 0.0_dp
-      if (.not. same_value(mat%theta_init(k), 0.0_dp)) then
+      if (.not. equal(mat%theta_init(k), 0.0_dp)) then
         do j = 1, k
           if (j == k) then
             mat%cos0(k) = cos(mat%theta_init(k))
             mat%sin0(k) = sin(mat%theta_init(k))
-          else if (same_value(abs(mat%theta_init(j)), abs(mat%theta_init(k)))) then
+          else if (equal(abs(mat%theta_init(j)), abs(mat%theta_init(k)))) then
             mat%cos0(k) = mat%cos0(j)
             mat%sin0(k) = sign(mat%sin0(j), mat%theta_init(k))
             exit
@@ -271,7 +271,7 @@ contains
     end do
     mat%plane_wears(mat%n_planes + 1:) = .false.
     mat%use_wear = any(mat%plane_wears(1:mat%n_planes))
-    mat%flat = all(same_value(mat%theta_init(1:mat%n_planes), 0.0_dp)) .and. .not. mat%use_wear
+    mat%flat = all(equal(mat%theta_init(1:mat%n_planes), 0.0_dp)) .and. .not. mat%use_wear
     if (mat%flat .and. .not. mat%use_depth) then
       mat%kernel = kernel_cohesive
     else if (mat%flat) then
@@ -299,6 +299,13 @@ contains
               'or stiffnesses K = sigma0/s_0 outside 1e-90 .. 1e90 (mm, MPa/mm): not a ' // &
               'physical interface'
   end function derived_range_message
+
+  !> same_value of interlock_kinds for derive, where a call into another module would cost more
+  !> than the comparison (derive runs on every UMAT call; the angles are checked, not NaN).
+  elemental logical function equal(a, b)
+    real(dp), intent(in) :: a, b
+    equal = .not. (a < b .or. a > b)
+  end function equal
 
   !> eta, H_N and zeta_0 >= smallest_inverted: the law takes their inverses (1/eta, 1/H_N,
   !> 1/zeta_0), which then stay below 1e100, so that no product with a separation, a stiffness

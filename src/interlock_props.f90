@@ -103,7 +103,7 @@ contains
     do i = 1, n_effects
       mat%effect(i) = v(prop_effect_damage + i - 1) > 0.5_dp
     end do
-    solver%scheme = nint(v(prop_scheme))
+    solver%scheme = int(v(prop_scheme))   ! a whole number (checked): no rounding call
     solver%substep_tol = v(prop_substep_tol)
     controls%max_damage_increment = v(prop_max_dd)
     controls%max_angle_increment = v(prop_max_dtheta) * deg_to_rad
