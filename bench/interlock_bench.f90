@@ -16,10 +16,12 @@ program interlock_bench
   use interlock_cli, only: exit_program
   use interlock, only: dp, max_planes, interlock_material_t, interlock_solver_t, interlock_state_t, &
       interlock_info_t, interlock_update, interlock_state_init, scheme_explicit, scheme_implicit, &
-      scheme_name, status_ok, interlock_version_string
+      scheme_name, status_ok, interlock_version_string, n_properties, props_to_material, &
+      umat_controls_t
   use interlock_bench_bilinear, only: bilinear_t, bilinear_state_t, bilinear_setup, bilinear_update
   use interlock_bench_scenes, only: scene_t, make_scene, run_scene, slip_at, n_effect_sets, &
       effect_set_names, make_effect_set, make_histories
+  use interlock_bench_umat, only: umat_props, time_umat, time_umat_floor
   implicit none
 
   integer, parameter :: n_scenes = 3
@@ -29,11 +31,24 @@ program interlock_bench
   character(len=16) :: dump_scene, dump_scheme
   real(dp) :: dump_tol
   integer :: dump_steps, profile_set, profile_scheme, profile_passes
+  logical :: profile_umat
   real(dp) :: profile_tol
   character(len=512) :: out_dir
   real(dp) :: target_error
   integer :: problems
 
+  !> The UMAT rows of the cost study: 1..10 UMAT calls (effect set, scheme), 11..20 the updates
+  !> they wrap, 21..25 the floor of the UMAT's overhead per effect set.
+  integer, parameter :: n_umat_cols = 5 * n_effect_sets
+  type :: umat_rows_t
+    real(dp) :: props(n_properties, 2 * n_effect_sets)
+    type(interlock_material_t) :: mats(2 * n_effect_sets)
+    type(interlock_solver_t) :: solvers(2 * n_effect_sets)
+    type(umat_controls_t) :: controls
+    real(dp), allocatable :: times(:, :)
+    real(dp) :: chk(0:n_umat_cols)
+    integer :: inner(0:n_umat_cols), cuts(2 * n_effect_sets), fails
+  end type umat_rows_t
 
   call parse_arguments()
   problems = 0
@@ -67,6 +82,7 @@ contains
     dump_scene = ''
     profile_set = -1
     profile_tol = 0.0_dp
+    profile_umat = .false.
     n = command_argument_count()
     if (n == 0) call usage('no arguments: --out DIR is required')
     i = 1
@@ -128,6 +144,11 @@ contains
             i = i + 1
           end if
         end if
+      case ('--umat')
+        profile_umat = .true.
+      case ('--umat-floor')
+        profile_umat = .true.
+        profile_tol = -1.0_dp
       case ('-h', '--help')
         call usage('')
       case default
@@ -154,7 +175,8 @@ contains
     write (unit, '(a)') '       interlock-bench --profile SET SCHEME PASSES [TOL]  ' // &
       '(one cost configuration only, for valgrind/gprof: SET 0 bilinear, 1..5 effect sets; ' // &
       'SCHEME 1 explicit, 2 implicit; TOL substepping tolerance, default 0; 3 x 4000-point ' // &
-      'histories; see bench/profile_updates.py)'
+      'histories; see bench/profile_updates.py); with --umat: through the UMAT, ' // &
+      'with --umat-floor: the floor of the UMAT''s overhead'
     write (unit, '(a)') '       interlock-bench --history SCENE SCHEME TOL N  ' // &
       '(one run of a scene as CSV on stdout; SCENE fig11|fig12|granite, SCHEME explicit|implicit)'
     write (unit, '(a)') '       interlock-bench --help | --version'
@@ -241,19 +263,25 @@ contains
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver
     real(dp), allocatable :: h(:, :, :)
-    real(dp) :: chk
-    integer :: k, stat, fails, nsub
+    real(dp) :: chk, props(n_properties)
+    integer :: k, stat, fails, nsub, cuts
     character(len=256) :: message
     allocate (h(2, 4000, 3))
     call make_histories(4000, h)
     call make_effect_set(max(1, profile_set), mat, stat, message)
     if (stat /= status_ok) call usage(trim(message))
     solver%scheme = profile_scheme
-    solver%substep_tol = profile_tol
+    solver%substep_tol = max(0.0_dp, profile_tol)
     chk = 0.0_dp
     fails = 0
+    cuts = 0
+    if (profile_umat) call umat_props(max(1, profile_set), profile_scheme, props)
     do k = 1, profile_passes
-      if (profile_set == 0) then
+      if (profile_umat .and. profile_tol < 0.0_dp) then
+        call time_umat_floor(props, h, chk)
+      else if (profile_umat) then
+        call time_umat(props, h, chk, fails, cuts)
+      else if (profile_set == 0) then
         call time_bilinear(mat, h, chk)
       else
         call time_interlock(mat, solver, h, chk, fails, nsub)
@@ -280,6 +308,7 @@ contains
     real(dp) :: subs(n_cfg), chk_pass
     character(len=256) :: message
     character(len=24) :: label
+    type(umat_rows_t) :: um
 
     npts = merge(100, 4000, quick)
     reps = merge(3, 21, quick)
@@ -348,6 +377,7 @@ contains
       end do
       call cpu_time(t1)
       call record_time(rep, floor_cfg, t1 - t0, min_rep, inner, times)
+      call time_umat_rows(rep, reps, min_rep, h, um)
       if (rep == 0) chk_pass = sum(chk)   ! one pass of everything: reproducible
     end do
     if (fails > 0) then
@@ -394,7 +424,123 @@ contains
       verdict(ns(2 * n_effect_sets - 1) / ns(0) <= 4.0_dp) // ' (' // &
       fmt_ratio(ns(2 * n_effect_sets - 1) / ns(0)) // '; its floor alone ' // &
       fmt_ratio(ns(floor_cfg) / ns(0)) // ')'
+    call report_umat_rows(um, ns(0), calls)
   end subroutine cost_study
+
+  !> One repetition of the UMAT rows (interleaved with the others in cost_study): for every
+  !> effect set and scheme the UMAT call, the update it wraps (the material the UMAT builds from
+  !> the same PROPS, same history) and, per effect set, the floor of the UMAT's overhead.
+  subroutine time_umat_rows(rep, reps, min_rep, h, um)
+    integer, intent(in) :: rep, reps
+    real(dp), intent(in) :: min_rep, h(:, :, :)
+    type(umat_rows_t), intent(inout) :: um
+    real(dp) :: t0, t1
+    integer :: c, k, j, stat, nsub, cuts
+    character(len=256) :: message
+    if (rep == 0) then
+      allocate (um%times(reps, 0:n_umat_cols))
+      um%chk = 0.0_dp
+      um%fails = 0
+      um%cuts = 0
+      um%inner = 1
+      do c = 1, n_effect_sets
+        do j = 1, 2
+          call umat_props(c, j, um%props(:, 2 * c - 2 + j))
+          call props_to_material(um%props(:, 2 * c - 2 + j), um%mats(2 * c - 2 + j), &
+                                 um%solvers(2 * c - 2 + j), um%controls, stat, message)
+          if (stat /= status_ok) then
+            write (error_unit, '(a)') 'UMAT rows, effect set ' // trim(effect_set_names(c)) // &
+              ': ' // trim(message)
+            error stop 2
+          end if
+        end do
+      end do
+    end if
+    do j = 1, 2 * n_effect_sets
+      call cpu_time(t0)
+      cuts = 0
+      do k = 1, um%inner(j)
+        call time_umat(um%props(:, j), h, um%chk(j), um%fails, cuts)
+      end do
+      call cpu_time(t1)
+      if (rep == 0) um%cuts(j) = cuts   ! one pass
+      call record_time(rep, j, t1 - t0, min_rep, um%inner, um%times)
+      call cpu_time(t0)
+      do k = 1, um%inner(2 * n_effect_sets + j)
+        call time_interlock(um%mats(j), um%solvers(j), h, um%chk(2 * n_effect_sets + j), &
+                            um%fails, nsub)
+      end do
+      call cpu_time(t1)
+      call record_time(rep, 2 * n_effect_sets + j, t1 - t0, min_rep, um%inner, um%times)
+    end do
+    do c = 1, n_effect_sets
+      j = 4 * n_effect_sets + c
+      call cpu_time(t0)
+      do k = 1, um%inner(j)
+        call time_umat_floor(um%props(:, 2 * c - 1), h, um%chk(j))
+      end do
+      call cpu_time(t1)
+      call record_time(rep, j, t1 - t0, min_rep, um%inner, um%times)
+    end do
+  end subroutine time_umat_rows
+
+  !> The UMAT table (stdout and DIR/umat_cost.csv) and the verdicts on the issue's targets:
+  !> overhead (UMAT call - update) <= 5 bilinear calls for every row, full model's UMAT call
+  !> <= 1.5 x its update.
+  subroutine report_umat_rows(um, ns_bilinear, calls)
+    type(umat_rows_t), intent(in) :: um
+    real(dp), intent(in) :: ns_bilinear, calls
+    real(dp) :: ns(0:n_umat_cols), umat_ns, update_ns, over, floor_ns, worst, full_ratio
+    integer :: c, j, sch, u
+    logical :: ok_over, ok_full
+    do j = 1, n_umat_cols
+      ns(j) = 1.0e9_dp * median(um%times(:, j)) / calls
+    end do
+    if (um%fails > 0) then
+      write (error_unit, '(a,i0,a)') 'UMAT rows: ', um%fails, ' calls failed'
+      problems = problems + 1
+    end if
+    write (output_unit, '(/,a)') '== UMAT call (Abaqus calling sequence, PROPS parsed every ' // &
+      'call) against the update it wraps, same histories, same run; ns per call'
+    write (output_unit, '(a24,1x,a8,5(1x,a10),1x,a8)') 'effect set', 'scheme', 'UMAT', 'update', &
+      'overhead', 'x bilinear', 'UMAT/upd.', 'cuts'
+    call open_csv('umat_cost.csv', u, 'effect_set,scheme,umat_ns,update_ns,overhead_ns,' // &
+      'overhead_bilinear_calls,umat_over_update,floor_ns,floor_bilinear_calls,pnewdt_cuts,' // &
+      'calls_per_rep,checksum')
+    ok_over = .true.
+    worst = 0.0_dp
+    full_ratio = 0.0_dp
+    do c = 1, n_effect_sets
+      floor_ns = ns(4 * n_effect_sets + c)
+      do sch = 1, 2
+        j = 2 * c - 2 + sch
+        umat_ns = ns(j)
+        update_ns = ns(2 * n_effect_sets + j)
+        over = umat_ns - update_ns
+        worst = max(worst, over / ns_bilinear)
+        ok_over = ok_over .and. over <= 5.0_dp * ns_bilinear
+        if (c == n_effect_sets) full_ratio = max(full_ratio, umat_ns / update_ns)
+        write (output_unit, '(a24,1x,a8,3(1x,f10.1),2(1x,f10.2),1x,i8)') effect_set_names(c), &
+          scheme_name(sch), umat_ns, update_ns, over, over / ns_bilinear, umat_ns / update_ns, &
+          um%cuts(j)
+        write (u, '(a,",",a,7(",",es12.5),2(",",i0),",",es22.15)') trim(effect_set_names(c)), &
+          scheme_name(sch), umat_ns, update_ns, over, over / ns_bilinear, umat_ns / update_ns, &
+          floor_ns, floor_ns / ns_bilinear, um%cuts(j), nint(calls), um%chk(j)
+      end do
+      write (output_unit, '(a24,1x,a8,1x,a10,1x,a10,1x,f10.1,1x,f10.2)') effect_set_names(c), &
+        'floor', '-', '-', floor_ns, floor_ns / ns_bilinear
+    end do
+    close (u)
+    ok_full = full_ratio <= 1.5_dp
+    write (output_unit, '(a)') '(overhead = UMAT - update, x bilinear = overhead in calls of ' // &
+      'the bilinear law; floor = what any UMAT must do per call besides its law: read and ' // &
+      'check PROPS and STATEV, derive the constants and the sine and cosine of theta_0, write ' // &
+      'STATEV back; cuts = calls per pass proposing PNEWDT < 1)'
+    write (output_unit, '(a)') 'targets: UMAT overhead <= 5 x bilinear for every row: ' // &
+      verdict(ok_over) // ' (largest ' // fmt_ratio(worst) // '); full model UMAT <= 1.5 x ' // &
+      'its update: ' // verdict(ok_full) // ' (' // fmt_ratio(full_ratio) // ')'
+  end subroutine report_umat_rows
+
 
   !> Store the time of one repetition (per pass); rep 0 (warm-up) sets the passes per repetition.
   pure subroutine record_time(rep, c, dt, min_rep, inner, times)

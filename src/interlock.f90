@@ -4,7 +4,7 @@
 !> the PROPS/STATEV packing of the UMAT.
 module interlock
   use interlock_kinds, only: dp, pi, deg_to_rad, rad_to_deg, infinite_threshold, &
-      is_infinite_value, is_nan_value, same_value
+      separation_bound, is_infinite_value, is_nan_value, same_value, is_finite_bits, exponent_bits
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure, &
       message_len
   use interlock_material_table
@@ -15,7 +15,8 @@ module interlock
       kernel_cohesive
   use interlock_state, only: interlock_state_t, interlock_state_init
   use interlock_integrate, only: interlock_update
-  use interlock_props, only: props_to_material, statev_to_state, state_to_statev, umat_controls_t
+  use interlock_props, only: props_to_material, statev_to_state, state_to_statev, umat_controls_t, &
+      statev_bounds, statev_bad_index, statev_message, state_bound
   use interlock_host_tangent, only: interlock_symmetric_tangent
   use interlock_version, only: interlock_version_string
   use interlock_replay, only: interlock_write_replay_deck

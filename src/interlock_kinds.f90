@@ -1,11 +1,10 @@
 !> Working precision, constants and the convention for "infinite" parameters.
 module interlock_kinds
-  use, intrinsic :: iso_fortran_env, only: real64
-  use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
+  use, intrinsic :: iso_fortran_env, only: real64, int64
   implicit none
   private
-  public :: dp, pi, deg_to_rad, rad_to_deg, infinite_threshold
-  public :: is_infinite_value, is_nan_value, same_value
+  public :: dp, pi, deg_to_rad, rad_to_deg, infinite_threshold, separation_bound
+  public :: is_infinite_value, is_nan_value, same_value, is_finite_bits, exponent_bits
 
   integer, parameter :: dp = real64
   real(dp), parameter :: pi = 3.14159265358979323846264338327950288_dp
@@ -14,11 +13,26 @@ module interlock_kinds
   !> A parameter at or above this value (or +Inf) means "+infinity", i.e. the effect it
   !> controls is off (H_N, zeta_0). FE input files cannot always hold an IEEE infinity.
   real(dp), parameter :: infinite_threshold = 1.0e30_dp
+  !> The largest admissible |s_N|, |s_T| [mm] (a kilometre: no interface of an FE model opens
+  !> or slides that far; beyond it the input is bad, e.g. a host in other units or a diverged
+  !> iteration). With stiffnesses <= 1e90 MPa/mm and lengths >= 1e-90 mm (what
+  !> interlock_material_prepare admits) every traction, ratio s/s_0 and energy of the update
+  !> stays below 1e200: no overflow, no FP trap.
+  real(dp), parameter :: separation_bound = 1.0e6_dp
+  !> The exponent field of a real(dp): all ones in a NaN or an infinity. A finite test from
+  !> the bits, iand(transfer(x, 0_int64), exponent_bits) /= exponent_bits, compares no NaN (an
+  !> ordered comparison of a NaN raises the invalid flag: a trap in FE codes that run with
+  !> traps on) and needs no IEEE module (whose save and restore of the floating-point state
+  !> around each procedure costs more than the test); is_finite_bits is the same as a function.
+  integer(int64), parameter :: exponent_bits = shiftl(2047_int64, 52)
 
 contains
 
   !> True for +Inf or a value >= infinite_threshold; never raises an FP exception on NaN.
   elemental logical function is_infinite_value(x)
+    ! (the IEEE module here only: gfortran saves and restores the floating-point state around
+    ! every procedure that uses it, which same_value, on the UMAT's path, need not pay)
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
     real(dp), intent(in) :: x
     if (ieee_is_nan(x)) then
       is_infinite_value = .false.
@@ -30,9 +44,16 @@ contains
   end function is_infinite_value
 
   elemental logical function is_nan_value(x)
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
     real(dp), intent(in) :: x
     is_nan_value = ieee_is_nan(x)
   end function is_nan_value
+
+  !> x is finite (not NaN, not +-Inf), from its bits (exponent_bits).
+  elemental logical function is_finite_bits(x)
+    real(dp), intent(in) :: x
+    is_finite_bits = iand(transfer(x, 0_int64), exponent_bits) /= exponent_bits
+  end function is_finite_bits
 
   !> a == b without the compiler's warning on real equality: used where exact equality is meant
   !> (flags stored as reals, a parameter that switches an effect off exactly).

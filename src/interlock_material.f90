@@ -2,14 +2,15 @@
 !> derived from them once, when the material is prepared (stiffnesses, the resolved effect set,
 !> constant sines and cosines), so that an update pays only for the effects a scene uses.
 module interlock_material
-  use interlock_kinds, only: dp, deg_to_rad, pi, is_infinite_value, is_nan_value, same_value
-  use interlock_material_table, only: check_property, format_real, &
+  use interlock_kinds, only: dp, deg_to_rad, pi, is_nan_value, infinite_threshold
+  use interlock_material_table, only: check_property, format_real, format_integer, &
       prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_zeta0
   use interlock_status, only: status_ok, status_bad_input
   implicit none
   private
   public :: interlock_material_t, interlock_solver_t, max_planes
-  public :: interlock_material_prepare, interlock_paper_ria
+  public :: interlock_material_prepare, interlock_paper_ria, interlock_material_derive, &
+            derived_range_message
   public :: scheme_explicit, scheme_implicit, scheme_name
   public :: effect_damage, effect_friction, effect_interlocking, effect_finite_depth, effect_wear
   public :: effect_names, n_effects
@@ -55,7 +56,9 @@ module interlock_material
     real(dp) :: mu_eff = 0.0_dp       !< mu, or 0 with friction off
     real(dp) :: inv_h_n = 0.0_dp      !< 1/H_N, or 0 with infinite depth
     real(dp) :: d_frozen = 0.0_dp     !< the constant damage when damage does not evolve
-    logical  :: use_damage = .true.   !< damage evolves (damage on, not pre-fractured)
+    !> the damage law runs (damage on): beta is the running maximum (SPEC 4.3), also on a
+    !> pre-fractured interface, whose D stays 1 since beta starts at 1/(1 - eta)
+    logical  :: use_damage = .true.
     logical  :: use_friction = .true. !< mu_eff > 0
     logical  :: use_depth = .true.    !< finite H_N
     logical  :: use_wear = .true.     !< some plane's angle can change
@@ -121,7 +124,6 @@ contains
     character(len=*), intent(out) :: message
     logical :: ok
     integer :: k
-    character(len=8) :: kbuf
     real(dp) :: gsum
 
     stat = status_bad_input
@@ -134,35 +136,36 @@ contains
     call check_property(prop_mu, mat%mu, ok, message); if (.not. ok) return
     call check_property(prop_h_n, mat%h_n, ok, message); if (.not. ok) return
     if (mat%n_planes < 1 .or. mat%n_planes > max_planes) then
-      write (kbuf, '(i0)') mat%n_planes
-      message = "n_planes = " // trim(kbuf) // " is inadmissible: admissible 1 <= n_planes <= 8"
+      message = "n_planes = " // format_integer(mat%n_planes) // &
+                " is inadmissible: admissible 1 <= n_planes <= 8"
       return
     end if
     gsum = 0.0_dp
     do k = 1, mat%n_planes
-      write (kbuf, '(i0)') k
       if (is_nan_value(mat%gamma_hat(k)) .or. .not. (mat%gamma_hat(k) > 0.0_dp .and. &
           mat%gamma_hat(k) <= 1.0_dp)) then
-        message = 'gamma_hat(' // trim(kbuf) // ') = ' // format_real(mat%gamma_hat(k)) // &
-                  ' is inadmissible: admissible 0 < gamma_hat <= 1'
+        message = 'gamma_hat(' // format_integer(k) // ') = ' // format_real(mat%gamma_hat(k)) &
+                  // ' is inadmissible: admissible 0 < gamma_hat <= 1'
         return
       end if
       gsum = gsum + mat%gamma_hat(k)
       if (is_nan_value(mat%theta0(k)) .or. .not. (abs(mat%theta0(k)) < 0.5_dp * pi)) then
-        message = 'theta0(' // trim(kbuf) // ') = ' // format_real(mat%theta0(k) / deg_to_rad) // &
+        message = 'theta0(' // format_integer(k) // ') = ' // &
+                  format_real(mat%theta0(k) / deg_to_rad) // &
                   ' deg is inadmissible: admissible -90 < theta0 < 90 deg'
         return
       end if
       if (is_nan_value(mat%thetaf(k)) .or. .not. (abs(mat%thetaf(k)) <= abs(mat%theta0(k)) .and. &
           mat%thetaf(k) * mat%theta0(k) >= 0.0_dp)) then
-        message = 'thetaf(' // trim(kbuf) // ') = ' // format_real(mat%thetaf(k) / deg_to_rad) // &
+        message = 'thetaf(' // format_integer(k) // ') = ' // &
+                  format_real(mat%thetaf(k) / deg_to_rad) // &
                   ' deg is inadmissible: admissible 0 <= |thetaf| <= |theta0| = ' // &
                   format_real(abs(mat%theta0(k)) / deg_to_rad) // ' deg, same sign as theta0'
         return
       end if
       call check_property(prop_zeta0, mat%zeta0(k), ok, message)
       if (.not. ok) then
-        message = 'plane ' // trim(kbuf) // ': ' // message
+        message = 'plane ' // format_integer(k) // ': ' // message
         return
       end if
     end do
@@ -171,27 +174,46 @@ contains
                 ': the area fractions must sum to 1 (within 1e-9)'
       return
     end if
+    call interlock_material_derive(mat, stat, message)
+    if (stat == status_ok) message = ''
+  end subroutine interlock_material_prepare
 
-    ! Derived (SPEC section 2). First their binary exponents, so that no division below can
-    ! overflow or underflow (FE codes may run with floating-point traps on): the lengths
-    ! s_c, s_0 and the stiffnesses K must lie within 2^(+-300) (about 1e(+-90)).
-    if (.not. (representable(exponent(mat%gc) - exponent(mat%sigma0_n)) .and. &
-               representable(exponent(mat%gc) - exponent(mat%sigma0_t)) .and. &
-               representable(exponent(mat%gc) - exponent(mat%sigma0_n) + &
-                             exponent(1.0_dp - mat%eta)) .and. &
-               representable(exponent(mat%gc) - exponent(mat%sigma0_t) + &
-                             exponent(1.0_dp - mat%eta)) .and. &
-               representable(2 * exponent(mat%sigma0_n) - exponent(mat%gc) - &
-                             exponent(1.0_dp - mat%eta)) .and. &
-               representable(2 * exponent(mat%sigma0_t) - exponent(mat%gc) - &
-                             exponent(1.0_dp - mat%eta)))) then
-      message = 'sigma0_n = ' // format_real(mat%sigma0_n) // ', sigma0_t = ' // &
-                format_real(mat%sigma0_t) // ', gc = ' // format_real(mat%gc) // ' and eta = ' // &
-                format_real(mat%eta) // ' give lengths s_c = 2 gc/sigma0, s_0 = (1-eta) s_c ' // &
-                'or stiffnesses K = sigma0/s_0 outside 1e-90 .. 1e90 (mm, MPa/mm): not a ' // &
-                'physical interface'
-      return
+  !> Derive what the update needs from given parameters that are each in their range (the
+  !> checks of interlock_material_prepare; the UMAT makes its own, cheaper ones on PROPS): the
+  !> lengths and stiffnesses (SPEC section 2), the effect set and the kernel. `ok` is false
+  !> (and the material not prepared) when the lengths or stiffnesses fall outside double
+  !> precision's safe range, or eta, H_N or zeta_0 is too small to invert: then `stat` =
+  !> status_bad_input and `message` says why (it is set only then). Arithmetic only on
+  !> success: no message, no formatted write, one sine and cosine per distinct |theta_0|.
+  pure subroutine interlock_material_derive(mat, stat, message)
+    type(interlock_material_t), intent(inout) :: mat
+    integer, intent(out) :: stat
+    character(len=*), intent(inout) :: message
+    logical :: ok
+    stat = status_ok
+    call derive(mat, ok)
+    if (.not. ok) then
+      stat = status_bad_input
+      message = derived_range_message(mat)
     end if
+  end subroutine interlock_material_derive
+
+  !> interlock_material_derive's arithmetic; `ok` false when the parameters cannot be derived.
+  pure subroutine derive(mat, ok)
+    type(interlock_material_t), intent(inout) :: mat
+    logical, intent(out) :: ok
+    integer :: k, j
+
+    mat%prepared = .false.
+    mat%kernel = kernel_general
+    ! First the ranges of what the divisions below give, by products (no division can then
+    ! overflow or underflow; FE codes may run with floating-point traps on, and the properties
+    ! are below 1e30, so the products cannot overflow): the lengths s_c = 2 gc / sigma0,
+    ! s_0 = (1 - eta) s_c and the stiffnesses K = sigma0 / s_0 must lie within 2^(+-300)
+    ! (about 1e(+-90)).
+    ok = lengths_in_range(mat%sigma0_n, mat%gc, mat%eta) .and. &
+         lengths_in_range(mat%sigma0_t, mat%gc, mat%eta) .and. inverses_in_range(mat)
+    if (.not. ok) return
     mat%scn = 2.0_dp * mat%gc / mat%sigma0_n
     mat%sct = 2.0_dp * mat%gc / mat%sigma0_t
     mat%s0n = (1.0_dp - mat%eta) * mat%scn
@@ -204,19 +226,19 @@ contains
     mat%inv_eta = 1.0_dp / mat%eta
     mat%inv_kt = 1.0_dp / mat%kt
     mat%decohesion_energy_factor = 0.5_dp * mat%kn * mat%s0n**2 / mat%eta
-    if (.not. (mat%kn < huge(1.0_dp) .and. mat%kt < huge(1.0_dp) .and. mat%s0n > 0.0_dp .and. &
-               mat%s0t > 0.0_dp)) then
-      message = 'the parameters give a stiffness K_n = sigma0_n^2/(2 Gc_bar (1-eta)) or K_t ' // &
-                'that is not a finite positive number: check sigma0_n, sigma0_t, gc and eta'
-      return
-    end if
+    ok = mat%kn < huge(1.0_dp) .and. mat%kt < huge(1.0_dp) .and. mat%s0n > 0.0_dp .and. &
+         mat%s0t > 0.0_dp
+    if (.not. ok) return
 
-    ! The effect set, resolved once (SPEC section 7).
-    mat%use_damage = mat%effect(effect_damage) .and. .not. mat%prefractured
+    ! The effect set, resolved once (SPEC section 7). The damage law runs on a pre-fractured
+    ! interface too: beta stays the running maximum, D = 1 (beta >= 1/(1 - eta) from the start).
+    mat%use_damage = mat%effect(effect_damage)
     mat%d_frozen = merge(1.0_dp, 0.0_dp, mat%prefractured)
     mat%mu_eff = merge(mat%mu, 0.0_dp, mat%effect(effect_friction))
     mat%use_friction = mat%mu_eff > 0.0_dp
-    mat%use_depth = mat%effect(effect_finite_depth) .and. .not. is_infinite_value(mat%h_n)
+    ! (x >= infinite_threshold: is_infinite_value for the checked, non-NaN parameters, without
+    ! the IEEE module's save and restore of the floating-point state)
+    mat%use_depth = mat%effect(effect_finite_depth) .and. .not. mat%h_n >= infinite_threshold
     mat%inv_h_n = 0.0_dp
     if (mat%use_depth) mat%inv_h_n = 1.0_dp / mat%h_n
     do k = 1, mat%n_planes
@@ -227,16 +249,29 @@ contains
         mat%theta_init(k) = 0.0_dp
         mat%thetaf_eff(k) = 0.0_dp
       end if
-      mat%plane_wears(k) = mat%effect(effect_wear) .and. .not. is_infinite_value(mat%zeta0(k)) &
-                           .and. .not. same_value(mat%theta_init(k), mat%thetaf_eff(k))
+      mat%plane_wears(k) = mat%effect(effect_wear) .and. .not. mat%zeta0(k) >= infinite_threshold &
+                           .and. .not. equal(mat%theta_init(k), mat%thetaf_eff(k))
       mat%inv_zeta0(k) = 0.0_dp
       if (mat%plane_wears(k)) mat%inv_zeta0(k) = 1.0_dp / mat%zeta0(k)
-      mat%cos0(k) = cos(mat%theta_init(k))
-      mat%sin0(k) = sin(mat%theta_init(k))
+      ! cos and sin are even and odd to the bit: one evaluation per distinct |theta|.
+      mat%cos0(k) = 1.0_dp
+      mat%sin0(k) = 0.0_dp
+      if (.not. equal(mat%theta_init(k), 0.0_dp)) then
+        do j = 1, k
+          if (j == k) then
+            mat%cos0(k) = cos(mat%theta_init(k))
+            mat%sin0(k) = sin(mat%theta_init(k))
+          else if (equal(abs(mat%theta_init(j)), abs(mat%theta_init(k)))) then
+            mat%cos0(k) = mat%cos0(j)
+            mat%sin0(k) = sign(mat%sin0(j), mat%theta_init(k))
+            exit
+          end if
+        end do
+      end if
     end do
     mat%plane_wears(mat%n_planes + 1:) = .false.
     mat%use_wear = any(mat%plane_wears(1:mat%n_planes))
-    mat%flat = all(same_value(mat%theta_init(1:mat%n_planes), 0.0_dp)) .and. .not. mat%use_wear
+    mat%flat = all(equal(mat%theta_init(1:mat%n_planes), 0.0_dp)) .and. .not. mat%use_wear
     if (mat%flat .and. .not. mat%use_depth) then
       mat%kernel = kernel_cohesive
     else if (mat%flat) then
@@ -245,14 +280,53 @@ contains
       mat%kernel = kernel_inclined
     end if
     mat%prepared = .true.
-    stat = status_ok
-    message = ''
-  end subroutine interlock_material_prepare
+  end subroutine derive
 
-  !> A binary exponent well inside double precision's range.
-  pure logical function representable(e)
-    integer, intent(in) :: e
-    representable = abs(e) <= 300
-  end function representable
+  !> Why interlock_material_derive refused the parameters.
+  pure function derived_range_message(mat) result(message)
+    type(interlock_material_t), intent(in) :: mat
+    character(len=:), allocatable :: message
+    if (.not. inverses_in_range(mat)) then
+      message = 'eta = ' // format_real(mat%eta) // ', h_n = ' // format_real(mat%h_n) // &
+                ', zeta0 = ' // format_real(minval(mat%zeta0(1:mat%n_planes))) // &
+                ' is inadmissible: eta, h_n and zeta0 must be >= 1e-100 (the law takes ' // &
+                'their inverses; a denormal number would overflow them)'
+      return
+    end if
+    message = 'sigma0_n = ' // format_real(mat%sigma0_n) // ', sigma0_t = ' // &
+              format_real(mat%sigma0_t) // ', gc = ' // format_real(mat%gc) // ' and eta = ' // &
+              format_real(mat%eta) // ' give lengths s_c = 2 gc/sigma0, s_0 = (1-eta) s_c ' // &
+              'or stiffnesses K = sigma0/s_0 outside 1e-90 .. 1e90 (mm, MPa/mm): not a ' // &
+              'physical interface'
+  end function derived_range_message
+
+  !> same_value of interlock_kinds for derive, where a call into another module would cost more
+  !> than the comparison (derive runs on every UMAT call; the angles are checked, not NaN).
+  elemental logical function equal(a, b)
+    real(dp), intent(in) :: a, b
+    equal = .not. (a < b .or. a > b)
+  end function equal
+
+  !> eta, H_N and zeta_0 >= smallest_inverted: the law takes their inverses (1/eta, 1/H_N,
+  !> 1/zeta_0), which then stay below 1e100, so that no product with a separation, a stiffness
+  !> or a work overflows (a denormal zeta_0 would make 1/zeta_0 infinite).
+  pure logical function inverses_in_range(mat) result(ok)
+    type(interlock_material_t), intent(in) :: mat
+    real(dp), parameter :: smallest_inverted = 1.0e-100_dp
+    ok = mat%eta >= smallest_inverted .and. mat%h_n >= smallest_inverted .and. &
+         all(mat%zeta0(1:mat%n_planes) >= smallest_inverted)
+  end function inverses_in_range
+
+  !> 2^-300 <= s_0 <= s_c <= 2^300 and 2^-300 <= K <= 2^300 for peak traction sigma0 (s_c =
+  !> 2 gc / sigma0, s_0 = (1 - eta) s_c, K = sigma0 / s_0), by products only.
+  pure logical function lengths_in_range(sigma0, gc, eta) result(ok)
+    real(dp), intent(in) :: sigma0, gc, eta
+    real(dp), parameter :: lo = 2.0_dp**(-300), hi = 2.0_dp**300
+    real(dp) :: two_gc, two_gc_s0
+    two_gc = 2.0_dp * gc
+    two_gc_s0 = two_gc * (1.0_dp - eta)      ! sigma0 s_0
+    ok = two_gc <= hi * sigma0 .and. two_gc_s0 >= lo * sigma0 .and. &
+         sigma0 * sigma0 <= hi * two_gc_s0 .and. sigma0 * sigma0 >= lo * two_gc_s0
+  end function lengths_in_range
 
 end module interlock_material

@@ -4,13 +4,14 @@
 !> validation messages, the names used by decks and HDF5 files, `interlock-query` and
 !> `docs/material.md` are all generated from these two tables.
 module interlock_material_table
-  use interlock_kinds, only: dp, is_infinite_value, is_nan_value, same_value
+  use, intrinsic :: iso_fortran_env, only: int64
+  use interlock_kinds, only: dp, is_nan_value, same_value, infinite_threshold, exponent_bits
   implicit none
   private
   public :: property_t, statevar_t, properties, statevars
   public :: n_properties, n_required_properties, n_statevars_per_plane, n_statevars_global
   public :: umat_planes, umat_nstatv, property_index, statevar_index
-  public :: check_property, format_range, format_real, format_integer
+  public :: check_property, property_ok, properties_ok, format_range, format_real, format_integer
   public :: kind_real, kind_flag, kind_choice
   public :: prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
             prop_thetaf, prop_zeta0, prop_prefractured, prop_scheme, prop_substep_tol, &
@@ -126,6 +127,20 @@ module interlock_material_table
                1.0_dp, .false., 2.0_dp, .false., .false., &
                'UMAT: DDSDDE 1 exact, 2 symmetric, for hosts that symmetrize (CalculiX)') ]
 
+  !> The columns of the table that property_ok compares with, as plain arrays.
+  real(dp), parameter :: lower(n_properties) = properties%lower
+  real(dp), parameter :: upper(n_properties) = properties%upper
+  logical, parameter :: lower_open(n_properties) = properties%lower_open
+  logical, parameter :: upper_open(n_properties) = properties%upper_open
+  logical, parameter :: infinite_ok(n_properties) = properties%infinite_ok
+  logical, parameter :: integer_valued(n_properties) = properties%kind /= kind_real
+  !> The bounds as closed ones: an open bound moved to the next representable number, and
+  !> values >= infinite_threshold admitted only where infinity is admissible.
+  real(dp), parameter :: lowest(n_properties) = merge(nearest(lower, 1.0_dp), lower, lower_open)
+  real(dp), parameter :: highest(n_properties) = merge(huge(1.0_dp), &
+    min(merge(nearest(upper, -1.0_dp), upper, upper_open), nearest(infinite_threshold, -1.0_dp)), &
+    infinite_ok)
+
   integer, parameter :: n_statevars_per_plane = 6
   integer, parameter :: n_statevars_global = 4
   integer, parameter :: sv_damage = 1, sv_beta = 2, sv_frictional_slip = 3, sv_zeta = 4, &
@@ -176,6 +191,47 @@ contains
     end if
   end function statevar_index
 
+  !> Whether `value` is admissible for property i (rows_ok).
+  pure logical function property_ok(i, value) result(ok)
+    integer, intent(in) :: i
+    real(dp), intent(in) :: value
+    ok = rows_ok([value], i)
+  end function property_ok
+
+  !> Whether values(i) is admissible for property i, for every i (one call for a whole PROPS).
+  pure logical function properties_ok(values) result(ok)
+    real(dp), intent(in) :: values(:)
+    ok = rows_ok(values(1:min(size(values), n_properties)), 1)
+  end function properties_ok
+
+  !> Whether values(j) is admissible for property first + j - 1, for every j: plain
+  !> comparisons only, so that a caller that checks every call (the UMAT) builds a message
+  !> only on failure. A NaN, -Inf and +Inf where no infinity is admissible fail on their bits
+  !> (no comparison of a NaN); the rest on the table's bounds as closed bounds (lowest, highest)
+  !> with infinite_threshold and above only where infinity is admissible; flags and choices
+  !> are whole numbers (their ranges lie within [0, 2^52), where x + 2^52 - 2^52 rounds x to a
+  !> whole number).
+  pure logical function rows_ok(values, first) result(ok)
+    real(dp), intent(in) :: values(:)
+    integer, intent(in) :: first
+    real(dp), parameter :: whole = 2.0_dp**52
+    integer(int64), parameter :: plus_inf = exponent_bits
+    integer :: j, i
+    integer(int64) :: bits
+    ok = .true.
+    do j = 1, size(values)
+      i = first + j - 1
+      bits = transfer(values(j), 0_int64)
+      if (iand(bits, exponent_bits) == exponent_bits) then
+        ok = ok .and. bits == plus_inf .and. infinite_ok(i)
+      else
+        ok = ok .and. values(j) >= lowest(i) .and. values(j) <= highest(i)
+        if (integer_valued(i)) ok = ok .and. .not. &
+          ((values(j) + whole) - whole < values(j) .or. (values(j) + whole) - whole > values(j))
+      end if
+    end do
+  end function rows_ok
+
   !> Check one value against its table row. On failure `ok` is false and `message` names the
   !> property, the value and the admissible range.
   pure subroutine check_property(i, value, ok, message)
@@ -183,32 +239,11 @@ contains
     real(dp), intent(in) :: value
     logical, intent(out) :: ok
     character(len=*), intent(out) :: message
-    type(property_t) :: p
-    p = properties(i)
-    ok = .true.
+    ok = property_ok(i, value)
     message = ''
-    if (is_nan_value(value)) then
-      ok = .false.
-    else if (is_infinite_value(value)) then
-      ok = p%infinite_ok
-    else if (abs(value) > huge(1.0_dp)) then
-      ok = .false.
-    else
-      if (p%lower_open) then
-        ok = value > p%lower
-      else
-        ok = value >= p%lower
-      end if
-      if (p%upper_open) then
-        ok = ok .and. value < p%upper
-      else
-        ok = ok .and. value <= p%upper
-      end if
-      if (ok .and. p%kind /= kind_real) ok = same_value(value, anint(value))
-    end if
     if (.not. ok) then
-      message = "property '" // trim(p%name) // "' = " // trim(format_real(value)) // &
-                ' is inadmissible: admissible ' // trim(format_range(i))
+      message = "property '" // trim(properties(i)%name) // "' = " // trim(format_real(value)) &
+                // ' is inadmissible: admissible ' // trim(format_range(i))
     end if
   end subroutine check_property
 

@@ -2,20 +2,55 @@
 !> UMAT) and the library's material, solver and state types.
 module interlock_props
   use interlock_kinds, only: dp, deg_to_rad
+  use, intrinsic :: iso_fortran_env, only: int64
+  use interlock_kinds, only: same_value, is_finite_bits, exponent_bits
   use interlock_material_table, only: properties, n_properties, n_required_properties, &
-      check_property, umat_planes, umat_nstatv, statevar_index, &
+      check_property, properties_ok, umat_planes, umat_nstatv, statevars, &
+      n_statevars_per_plane, format_integer, format_real, &
       prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
       prop_thetaf, prop_zeta0, prop_prefractured, prop_scheme, prop_substep_tol, prop_max_dd, &
       prop_max_dtheta, prop_effect_damage, &
       sv_damage, sv_beta, sv_frictional_slip, sv_zeta, sv_theta, sv_friction_traction, &
       sv_work, sv_damage_dissipation, sv_friction_dissipation, sv_initialized
   use interlock_material, only: interlock_material_t, interlock_solver_t, &
-      interlock_material_prepare, interlock_paper_ria, n_effects
+      interlock_material_derive, interlock_paper_ria, n_effects
   use interlock_state, only: interlock_state_t, interlock_state_init
   use interlock_status, only: status_ok, status_bad_input
   implicit none
   private
   public :: props_to_material, statev_to_state, state_to_statev, umat_controls_t
+  public :: statev_bounds, statev_bad_index, statev_message, state_bound
+
+  !> Largest magnitude admitted for a state variable that is not otherwise bounded (slips,
+  !> works, energies, friction tractions) and for the traction STRESS on entry: far beyond any
+  !> value the law reaches from separations within separation_bound (tractions <= 1e100 MPa,
+  !> works <= 1e110 N/mm for stiffnesses <= 1e90 MPa/mm), and far enough below overflow that
+  !> no product of the update with such a value overflows.
+  real(dp), parameter :: state_bound = 1.0e150_dp
+
+  ! The STATEV layout of interlock_material_table:statevar_index as constants, for the path
+  ! every UMAT call takes: per-plane variable `v` of plane k in slot slot_v + k.
+  integer, parameter :: slot_damage = (sv_damage - 1) * umat_planes, &
+                        slot_beta = (sv_beta - 1) * umat_planes, &
+                        slot_sf = (sv_frictional_slip - 1) * umat_planes, &
+                        slot_zeta = (sv_zeta - 1) * umat_planes, &
+                        slot_theta = (sv_theta - 1) * umat_planes, &
+                        slot_tauf = (sv_friction_traction - 1) * umat_planes, &
+                        slot_global = n_statevars_per_plane * umat_planes - n_statevars_per_plane, &
+                        slot_work = slot_global + sv_work, &
+                        slot_diss_damage = slot_global + sv_damage_dissipation, &
+                        slot_diss_friction = slot_global + sv_friction_dissipation, &
+                        slot_flag = slot_global + sv_initialized
+  !> The ranges of the STATEV slots that do not depend on the material (statev_bounds).
+  real(dp), parameter :: statev_lo(umat_nstatv) = [ &
+    [0.0_dp, 0.0_dp, 0.0_dp], [0.0_dp, 0.0_dp, 0.0_dp], [-state_bound, -state_bound, -state_bound], &
+    [0.0_dp, 0.0_dp, 0.0_dp], [0.0_dp, 0.0_dp, 0.0_dp], [-state_bound, -state_bound, -state_bound], &
+    [-state_bound, -state_bound, -state_bound], 0.0_dp]
+  real(dp), parameter :: statev_hi(umat_nstatv) = [ &
+    [1.0_dp, 1.0_dp, 1.0_dp], [state_bound, state_bound, state_bound], &
+    [state_bound, state_bound, state_bound], [state_bound, state_bound, state_bound], &
+    [0.0_dp, 0.0_dp, 0.0_dp], [state_bound, state_bound, state_bound], &
+    [state_bound, state_bound, state_bound], 1.0_dp]
 
   !> What the UMAT needs besides the material: the accuracy bounds behind PNEWDT.
   type :: umat_controls_t
@@ -25,43 +60,37 @@ module interlock_props
 
 contains
 
-  !> Read and validate PROPS(1:nprops). Missing optional properties take their defaults.
+  !> Read and validate PROPS(1:nprops). Missing optional properties take their defaults. Every
+  !> call of the UMAT comes here, so the success path is plain comparisons and arithmetic (no
+  !> message, no formatted write, no copy of a long string): the messages are built by
+  !> props_message only when a check fails. The RIA is the paper's, valid by construction.
+  !> `mat` is intent(inout) only so that the caller's fresh material is not initialised a
+  !> second time on every call: every field the update reads is set here.
   pure subroutine props_to_material(props, mat, solver, controls, stat, message)
     real(dp), intent(in) :: props(:)
-    type(interlock_material_t), intent(out) :: mat
+    type(interlock_material_t), intent(inout) :: mat
     type(interlock_solver_t), intent(out) :: solver
     type(umat_controls_t), intent(out) :: controls
     integer, intent(out) :: stat
     character(len=*), intent(out) :: message
     real(dp) :: v(n_properties)
-    integer :: i
+    integer :: i, n
     logical :: ok
-    character(len=16) :: b1, b2, b3
 
     stat = status_bad_input
-    if (size(props) < n_required_properties .or. size(props) > n_properties) then
-      write (b1, '(i0)') size(props)
-      write (b2, '(i0)') n_required_properties
-      write (b3, '(i0)') n_properties
-      message = 'NPROPS = ' // trim(b1) // ' is inadmissible: admissible ' // trim(b2) // &
-                ' <= NPROPS <= ' // trim(b3) // ' (see interlock-query --props)'
+    n = size(props)
+    if (n < n_required_properties .or. n > n_properties) then
+      call props_message(props, 0, message)
       return
     end if
-    v = properties%default
-    v(1:size(props)) = props
-    do i = 1, n_properties
-      call check_property(i, v(i), ok, message)
-      if (.not. ok) then
-        write (b1, '(i0)') i
-        message = 'PROPS(' // trim(b1) // '): ' // trim(message)
-        return
-      end if
-    end do
-    if (v(prop_thetaf) > v(prop_theta0)) then
-      message = "property 'thetaf_deg' must not exceed 'theta0_deg': admissible 0 <= thetaf_deg" &
-                // ' <= theta0_deg'
+    ok = properties_ok(props)
+    if (ok) ok = props(prop_thetaf) <= props(prop_theta0)   ! (no comparison of a NaN)
+    if (.not. ok) then
+      call props_message(props, 1, message)
       return
     end if
+    v(1:n) = props
+    v(n + 1:) = properties(n + 1:)%default
     mat%sigma0_n = v(prop_sigma0_n)
     mat%sigma0_t = v(prop_sigma0_t)
     mat%gc = v(prop_gc)
@@ -74,53 +103,171 @@ contains
     do i = 1, n_effects
       mat%effect(i) = v(prop_effect_damage + i - 1) > 0.5_dp
     end do
-    solver%scheme = nint(v(prop_scheme))
+    solver%scheme = int(v(prop_scheme))   ! a whole number (checked): no rounding call
     solver%substep_tol = v(prop_substep_tol)
     controls%max_damage_increment = v(prop_max_dd)
     controls%max_angle_increment = v(prop_max_dtheta) * deg_to_rad
-    call interlock_material_prepare(mat, stat, message)
+    call interlock_material_derive(mat, stat, message)
   end subroutine props_to_material
 
+  !> The message of a PROPS that props_to_material refused (`what` 0: NPROPS, 1: a value).
+  pure subroutine props_message(props, what, message)
+    real(dp), intent(in) :: props(:)
+    integer, intent(in) :: what
+    character(len=*), intent(out) :: message
+    integer :: i
+    logical :: ok
+    if (what == 0) then
+      message = 'NPROPS = ' // format_integer(size(props)) // ' is inadmissible: admissible ' // &
+                format_integer(n_required_properties) // ' <= NPROPS <= ' // &
+                format_integer(n_properties) // ' (see interlock-query --props)'
+      return
+    end if
+    do i = 1, size(props)
+      call check_property(i, props(i), ok, message)
+      if (.not. ok) then
+        message = 'PROPS(' // format_integer(i) // '): ' // trim(message)
+        return
+      end if
+    end do
+    message = "property 'thetaf_deg' must not exceed 'theta0_deg': admissible 0 <= thetaf_deg" &
+              // ' <= theta0_deg'
+  end subroutine props_message
+
+  !> The admissible range of every STATEV slot for material `mat` (NaN lies in none): damage in
+  !> [0, 1] (exactly 1 when pre-fractured, with beta >= 1/(1 - eta)), beta and zeta >= 0, theta
+  !> between theta_f and theta_0 of its plane (4 ulps of slack for the rounding of the wear
+  !> law), the other values finite within +-state_bound, the flag 0 or 1.
+  pure subroutine statev_bounds(mat, lo, hi)
+    type(interlock_material_t), intent(in) :: mat
+    real(dp), intent(out) :: lo(umat_nstatv), hi(umat_nstatv)
+    real(dp) :: slack
+    integer :: k
+    lo = statev_lo
+    hi = statev_hi
+    if (mat%prefractured) then
+      lo(slot_damage + 1:slot_damage + umat_planes) = 1.0_dp
+      lo(slot_beta + 1:slot_beta + umat_planes) = mat%beta_break
+    end if
+    do k = 1, umat_planes
+      slack = 4.0_dp * epsilon(1.0_dp) * abs(mat%theta_init(k))
+      lo(slot_theta + k) = min(mat%theta_init(k), mat%thetaf_eff(k)) - slack
+      hi(slot_theta + k) = max(mat%theta_init(k), mat%thetaf_eff(k)) + slack
+    end do
+  end subroutine statev_bounds
+
+  !> The first STATEV slot outside its range (statev_bounds), 0 when every one is admissible.
+  !> An uninitialised STATEV (flag 0, as FE codes start) is admissible whatever its other slots.
+  pure integer function statev_bad_index(statev, mat) result(bad)
+    real(dp), intent(in) :: statev(umat_nstatv)
+    type(interlock_material_t), intent(in) :: mat
+    real(dp) :: lo(umat_nstatv), hi(umat_nstatv)
+    integer :: i, n_bad
+    logical :: ok
+    bad = 0
+    if (iand(transfer(statev(slot_flag), 0_int64), exponent_bits) == exponent_bits) then
+      bad = slot_flag
+      return
+    end if
+    if (statev(slot_flag) < 0.5_dp) then
+      if (.not. same_value(statev(slot_flag), 0.0_dp)) bad = slot_flag
+      return
+    end if
+    call statev_bounds(mat, lo, hi)
+    lo(slot_flag) = 1.0_dp
+    ! Finite first (exponent_bits: no comparison of a NaN), then the ranges; counted, not
+    ! branched, so that the loops vectorise.
+    n_bad = 0
+    do i = 1, umat_nstatv
+      n_bad = n_bad + merge(1, 0, iand(transfer(statev(i), 0_int64), exponent_bits) == &
+                                  exponent_bits)
+    end do
+    if (n_bad == 0) then
+      do i = 1, umat_nstatv
+        n_bad = n_bad + merge(1, 0, statev(i) < lo(i)) + merge(1, 0, statev(i) > hi(i))
+      end do
+    end if
+    ok = n_bad == 0
+    if (ok) return
+    do i = 1, umat_nstatv
+      if (.not. is_finite_bits(statev(i))) then
+        bad = i
+        return
+      else if (.not. (statev(i) >= lo(i) .and. statev(i) <= hi(i))) then
+        bad = i
+        return
+      end if
+    end do
+  end function statev_bad_index
+
+  !> The message for STATEV(i) outside its range: index, name, plane, value, range.
+  pure subroutine statev_message(statev, i, mat, message)
+    real(dp), intent(in) :: statev(umat_nstatv)
+    integer, intent(in) :: i
+    type(interlock_material_t), intent(in) :: mat
+    character(len=*), intent(out) :: message
+    real(dp) :: lo(umat_nstatv), hi(umat_nstatv)
+    integer :: ivar
+    character(len=:), allocatable :: name
+    call statev_bounds(mat, lo, hi)
+    if (i <= n_statevars_per_plane * umat_planes) then
+      ivar = (i - 1) / umat_planes + 1
+      name = trim(statevars(ivar)%name) // ' of plane ' // &
+             format_integer(i - (ivar - 1) * umat_planes)
+    else
+      ivar = n_statevars_per_plane + i - n_statevars_per_plane * umat_planes
+      name = trim(statevars(ivar)%name)
+    end if
+    if (ivar == sv_initialized) then
+      message = 'STATEV(' // format_integer(i) // ') = ' // format_real(statev(i)) // ' (' // &
+                name // ') is inadmissible: admissible 0 (first increment) or 1'
+    else
+      message = 'STATEV(' // format_integer(i) // ') = ' // format_real(statev(i)) // ' (' // &
+                name // ') is inadmissible: admissible ' // format_real(lo(i)) // ' <= ' // &
+                trim(statevars(ivar)%name) // ' <= ' // format_real(hi(i)) // ' [' // &
+                trim(statevars(ivar)%unit) // ']' // &
+                trim(merge(' (pre-fractured: PROPS(10) = 1)', '                               ', &
+                           mat%prefractured .and. (ivar == sv_damage .or. ivar == sv_beta)))
+    end if
+  end subroutine statev_message
+
   !> STATEV -> state; an uninitialised STATEV (all zero, as FE codes start) gives the virgin
-  !> state of the material.
+  !> state of the material. `state` is intent(inout) only so that the caller's fresh state is
+  !> not initialised a second time on every call: every per-plane field and the energies are
+  !> set here (the caller sets s and sigma).
   pure subroutine statev_to_state(statev, mat, state)
     real(dp), intent(in) :: statev(umat_nstatv)
     type(interlock_material_t), intent(in) :: mat
-    type(interlock_state_t), intent(out) :: state
-    integer :: k
-    if (statev(statevar_index(sv_initialized, 0)) < 0.5_dp) then
+    type(interlock_state_t), intent(inout) :: state
+    if (statev(slot_flag) < 0.5_dp) then
       call interlock_state_init(mat, state)
       return
     end if
-    do k = 1, umat_planes
-      state%damage(k) = statev(statevar_index(sv_damage, k))
-      state%beta(k) = statev(statevar_index(sv_beta, k))
-      state%sf(k) = statev(statevar_index(sv_frictional_slip, k))
-      state%zeta(k) = statev(statevar_index(sv_zeta, k))
-      state%theta(k) = statev(statevar_index(sv_theta, k))
-      state%tauf(k) = statev(statevar_index(sv_friction_traction, k))
-    end do
-    state%work = statev(statevar_index(sv_work, 0))
-    state%diss_damage = statev(statevar_index(sv_damage_dissipation, 0))
-    state%diss_friction = statev(statevar_index(sv_friction_dissipation, 0))
+    state%damage(1:umat_planes) = statev(slot_damage + 1:slot_damage + umat_planes)
+    state%beta(1:umat_planes) = statev(slot_beta + 1:slot_beta + umat_planes)
+    state%sf(1:umat_planes) = statev(slot_sf + 1:slot_sf + umat_planes)
+    state%zeta(1:umat_planes) = statev(slot_zeta + 1:slot_zeta + umat_planes)
+    state%theta(1:umat_planes) = statev(slot_theta + 1:slot_theta + umat_planes)
+    state%tauf(1:umat_planes) = statev(slot_tauf + 1:slot_tauf + umat_planes)
+    state%work = statev(slot_work)
+    state%diss_damage = statev(slot_diss_damage)
+    state%diss_friction = statev(slot_diss_friction)
+    state%stored = 0.0_dp
   end subroutine statev_to_state
 
   pure subroutine state_to_statev(state, statev)
     type(interlock_state_t), intent(in) :: state
     real(dp), intent(inout) :: statev(umat_nstatv)
-    integer :: k
-    do k = 1, umat_planes
-      statev(statevar_index(sv_damage, k)) = state%damage(k)
-      statev(statevar_index(sv_beta, k)) = state%beta(k)
-      statev(statevar_index(sv_frictional_slip, k)) = state%sf(k)
-      statev(statevar_index(sv_zeta, k)) = state%zeta(k)
-      statev(statevar_index(sv_theta, k)) = state%theta(k)
-      statev(statevar_index(sv_friction_traction, k)) = state%tauf(k)
-    end do
-    statev(statevar_index(sv_work, 0)) = state%work
-    statev(statevar_index(sv_damage_dissipation, 0)) = state%diss_damage
-    statev(statevar_index(sv_friction_dissipation, 0)) = state%diss_friction
-    statev(statevar_index(sv_initialized, 0)) = 1.0_dp
+    statev(slot_damage + 1:slot_damage + umat_planes) = state%damage(1:umat_planes)
+    statev(slot_beta + 1:slot_beta + umat_planes) = state%beta(1:umat_planes)
+    statev(slot_sf + 1:slot_sf + umat_planes) = state%sf(1:umat_planes)
+    statev(slot_zeta + 1:slot_zeta + umat_planes) = state%zeta(1:umat_planes)
+    statev(slot_theta + 1:slot_theta + umat_planes) = state%theta(1:umat_planes)
+    statev(slot_tauf + 1:slot_tauf + umat_planes) = state%tauf(1:umat_planes)
+    statev(slot_work) = state%work
+    statev(slot_diss_damage) = state%diss_damage
+    statev(slot_diss_friction) = state%diss_friction
+    statev(slot_flag) = 1.0_dp
   end subroutine state_to_statev
 
 end module interlock_props

@@ -17,8 +17,9 @@ set_tests_properties(test_stability_matrix PROPERTIES
 
 # The fuzzer: `interlock-fuzz --updates 10000000 --seed 7` for a long run; CTest runs 1e5
 # updates with a fixed seed. Failing inputs are written as replay decks in the build tree.
-add_executable(interlock-fuzz fuzz/interlock_fuzz.f90)
-target_link_libraries(interlock-fuzz PRIVATE interlock_stability_tools interlock::interlock interlock_cli)
+add_executable(interlock-fuzz test_umat_interface.f90 fuzz/interlock_fuzz.f90)
+target_link_libraries(interlock-fuzz PRIVATE interlock_stability_tools interlock::interlock
+  interlock_umat interlock_cli)
 target_compile_options(interlock-fuzz PRIVATE ${INTERLOCK_FFLAGS})
 set_target_properties(interlock-fuzz PROPERTIES
   Fortran_MODULE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/mod_interlock_fuzz)
@@ -27,6 +28,12 @@ add_test(NAME interlock_fuzz
   COMMAND interlock-fuzz --updates 100000 --seed 1 --deck-dir ${CMAKE_CURRENT_BINARY_DIR}/fuzz_decks
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 set_tests_properties(interlock_fuzz PROPERTIES TIMEOUT 600)
+# Garbage through the UMAT (issue 10 item 7): rejected with outputs untouched, or finite; in the
+# Debug build any FP trap (invalid, zero, overflow) fails the test.
+add_test(NAME interlock_fuzz_garbage COMMAND interlock-fuzz --garbage 20000 --seed 3)
+set_tests_properties(interlock_fuzz_garbage PROPERTIES TIMEOUT 600
+  PASS_REGULAR_EXPRESSION "--garbage: seed 3, 20000 UMAT calls, [0-9]+ rejected, failures 0"
+  FAIL_REGULAR_EXPRESSION "FAIL|ERROR STOP|Floating-point exception")
 
 # Replay decks: write one for a failing update, read it back, re-run it.
 interlock_add_suite(test_stability_replay test_stability_replay.f90)

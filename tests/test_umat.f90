@@ -3,6 +3,7 @@
 !> STRESS and STATEV; PNEWDT proposes a step that meets the accuracy bounds.
 module test_umat_cases
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
+  use, intrinsic :: iso_fortran_env, only: int64
   use interlock
   use interlock_assert
   use test_umat_interface, only: umat_point_t, call_umat
@@ -36,6 +37,11 @@ contains
     call run_case('pnewdt_damage_bound_mixed_mode', pnewdt_damage_bound_mixed_mode)
     call run_case('pnewdt_clamped', pnewdt_clamped)
     call run_case('pnewdt_angle_bound', pnewdt_angle_bound)
+    call run_case('bad_statev_rejected', bad_statev_rejected)
+    call run_case('bad_stress_rejected', bad_stress_rejected)
+    call run_case('separation_beyond_bound_rejected', separation_beyond_bound_rejected)
+    call run_case('tiny_inverted_properties_rejected', tiny_inverted_properties_rejected)
+    call run_case('prefractured_beta_running_maximum', prefractured_beta_running_maximum)
   end subroutine collect_umat
 
   !> The separation at step j of the test history (piecewise linear legs from 0).
@@ -179,8 +185,8 @@ contains
     trial%pnewdt = 1.0e36_dp
     call call_umat(trial, props, stran, dstran, 7, 3, 1)
     call assert_equal(expect, trial%pnewdt, 0.0_dp, what // ': PNEWDT')
-    call assert_true(all(same_value(trial%stress, pt%stress)), what // ': STRESS untouched')
-    call assert_true(all(same_value(trial%statev, pt%statev)), what // ': STATEV untouched')
+    call assert_true(all(same_bits(trial%stress, pt%stress)), what // ': STRESS untouched')
+    call assert_true(all(same_bits(trial%statev, pt%statev)), what // ': STATEV untouched')
     call assert_true(all(same_value(trial%ddsdde, pt%ddsdde)), what // ': DDSDDE untouched')
     call assert_true(same_value(trial%sse, pt%sse) .and. same_value(trial%scd, pt%scd), &
                      what // ': SSE, SCD untouched')
@@ -379,6 +385,134 @@ contains
     call assert_true(dth_retry >= 0.5_dp * bound, 'the retry is not far below the bound')
     call assert_equal(1.0e36_dp, retry%pnewdt, 0.0_dp, 'the retry is accepted')
   end subroutine pnewdt_angle_bound
+
+  !> a and b have the same bits (NaN garbage included; no comparison of a NaN, which traps in
+  !> the Debug build).
+  elemental logical function same_bits(a, b)
+    real(dp), intent(in) :: a, b
+    same_bits = transfer(a, 1_int64) == transfer(b, 1_int64)
+  end function same_bits
+
+  !> Garbage STATEV on entry (issue 10 item 5): each slot out of its range is rejected as bad
+  !> input, STRESS and STATEV untouched (was: NaN or carried-on garbage with PNEWDT = 1).
+  subroutine bad_statev_rejected()
+    type(umat_point_t) :: pt, bad
+    real(dp) :: nan, inf
+    integer, parameter :: n_cases = 14
+    integer, parameter :: slot(n_cases) = [1, 2, 3, 4, 7, 10, 13, 13, 15, 16, 19, 22, 22, 22]
+    real(dp) :: value(n_cases), props(10)
+    character(len=64) :: what
+    integer :: c
+    nan = ieee_value(1.0_dp, ieee_quiet_nan)
+    inf = ieee_value(1.0_dp, ieee_positive_inf)
+    ! damage < 0, > 1, NaN; beta < 0; slip Inf; zeta < 0; theta of plane 1 (-30 .. -7 deg)
+    ! positive, and beyond -theta_0; theta of plane 3 NaN; friction traction NaN; work -Inf;
+    ! the flag 0.5, 2, NaN
+    value = [-0.1_dp, 1.5_dp, nan, -1.0_dp, inf, -1.0_dp, 0.1_dp, -0.6_dp, nan, nan, -inf, &
+             0.5_dp, 2.0_dp, nan]
+    pt = loaded_point()
+    do c = 1, n_cases
+      bad = pt
+      bad%statev(slot(c)) = value(c)
+      write (what, '(a,i0,a,a)') 'STATEV(', slot(c), ') = ', format_real(value(c))
+      call expect_rejected(bad, props_wear, history_point(5), &
+                           history_point(6) - history_point(5), -1.0_dp, trim(what))
+    end do
+    ! A pre-fractured interface has D = 1 and beta >= 1/(1 - eta).
+    props(1:9) = props_wear
+    props(10) = 1.0_dp
+    call expect_rejected(pt, props, history_point(5), history_point(6) - history_point(5), &
+                         -1.0_dp, 'pre-fractured with STATEV damage < 1')
+  end subroutine bad_statev_rejected
+
+  !> A non-finite or absurd traction on entry is rejected (it enters the work increment).
+  subroutine bad_stress_rejected()
+    type(umat_point_t) :: pt, bad
+    real(dp) :: nan, inf
+    nan = ieee_value(1.0_dp, ieee_quiet_nan)
+    inf = ieee_value(1.0_dp, ieee_positive_inf)
+    pt = loaded_point()
+    bad = pt
+    bad%stress(1) = nan
+    call expect_rejected(bad, props_wear, history_point(5), history_point(6) - history_point(5), &
+                         -1.0_dp, 'STRESS(1) = NaN')
+    bad = pt
+    bad%stress(2) = -inf
+    call expect_rejected(bad, props_wear, history_point(5), history_point(6) - history_point(5), &
+                         -1.0_dp, 'STRESS(2) = -Inf')
+    bad = pt
+    bad%stress(2) = 1.0e200_dp
+    call expect_rejected(bad, props_wear, history_point(5), history_point(6) - history_point(5), &
+                         -1.0_dp, 'STRESS(2) = 1e200')
+  end subroutine bad_stress_rejected
+
+  !> Separations beyond the admissible 1e6 mm are bad input (issue 10 item 6: 1e100 mm gave
+  !> beta = Inf and NaN energies with PNEWDT = 0.1); 1e6 mm itself runs to a finite answer.
+  subroutine separation_beyond_bound_rejected()
+    type(umat_point_t) :: pt, ok_pt
+    pt = loaded_point()
+    call expect_rejected(pt, props_wear, [0.0_dp, 0.0_dp], [1.0e100_dp, 0.0_dp], -1.0_dp, &
+                         'DSTRAN = (1e100, 0)')
+    call expect_rejected(pt, props_wear, [0.0_dp, 0.0_dp], [0.0_dp, -1.0e100_dp], -1.0_dp, &
+                         'DSTRAN = (0, -1e100)')
+    call expect_rejected(pt, props_wear, [2.0e6_dp, 0.0_dp], [-2.0e6_dp, 0.0_dp], -1.0_dp, &
+                         'STRAN = (2e6, 0)')
+    ok_pt = pt
+    call call_umat(ok_pt, props_wear, [0.0_dp, 0.0_dp], [1.0e6_dp, -1.0e6_dp], 1, 1, 6)
+    call assert_true(ok_pt%pnewdt > 0.0_dp .and. all(abs(ok_pt%stress) <= huge(1.0_dp)) .and. &
+                     all(abs(ok_pt%statev) <= huge(1.0_dp)) .and. abs(ok_pt%sse) <= huge(1.0_dp) &
+                     .and. abs(ok_pt%scd) <= huge(1.0_dp), 'separation 1e6 mm: finite answer')
+  end subroutine separation_beyond_bound_rejected
+
+  !> eta, H_N, zeta_0 whose inverse would overflow (a denormal) are rejected (issue 10 item 7:
+  !> zeta_0 = 1e-310 trapped in the Debug build).
+  subroutine tiny_inverted_properties_rejected()
+    type(umat_point_t) :: pt
+    real(dp) :: props(9)
+    integer :: i
+    integer, parameter :: which(3) = [prop_eta, prop_h_n, prop_zeta0]
+    pt = loaded_point()
+    do i = 1, 3
+      props = props_wear
+      props(which(i)) = 1.0e-310_dp
+      call expect_rejected(pt, props, history_point(5), history_point(6) - history_point(5), &
+                           -1.0_dp, 'PROPS(' // format_integer(which(i)) // ') = 1e-310')
+    end do
+  end subroutine tiny_inverted_properties_rejected
+
+  !> Issue 10 item 8: a pre-fractured interface keeps beta as the running maximum (SPEC 4.3).
+  !> Table 1 values, theta_0 = 25 deg, H_N infinite, virgin STATEV, STRAN = 0, DSTRAN =
+  !> (0.5, 0): on each plane s_k = 0.5 (cos theta_k, -sin theta_k) mm, and with s_0n = s_0t =
+  !> 0.02 mm beta_k = 0.5 / 0.02 = 25 (was 1/(1 - eta) = 10); D = 1. For both schemes, with
+  !> substepping (the general path) and flat (interlocking off: the inlined flat law).
+  subroutine prefractured_beta_running_maximum()
+    type(umat_point_t) :: pt
+    real(dp) :: props(n_properties)
+    integer :: variant
+    character(len=40) :: what
+    do variant = 1, 4
+      props = properties%default
+      props(1:10) = [3.0_dp, 3.0_dp, 0.3_dp, 0.9_dp, 0.5_dp, 1.0e30_dp, 25.0_dp, 25.0_dp, &
+                     1.0e30_dp, 1.0_dp]
+      select case (variant)
+      case (2)
+        props(prop_scheme) = 2.0_dp
+      case (3)
+        props(prop_substep_tol) = 1.0e-3_dp
+      case (4)
+        props(prop_effect_interlocking) = 0.0_dp
+      end select
+      write (what, '(a,i0)') 'pre-fractured, variant ', variant
+      pt = new_point(umat_nstatv, ntens)
+      call call_umat(pt, props, [0.0_dp, 0.0_dp], [0.5_dp, 0.0_dp], 1, 1, 1)
+      call assert_true(pt%pnewdt > 0.0_dp, trim(what) // ': accepted')
+      call assert_equal(25.0_dp, pt%statev(4), 1.0e-12_dp, trim(what) // ': beta plane 1')
+      call assert_equal(25.0_dp, pt%statev(5), 1.0e-12_dp, trim(what) // ': beta plane 2')
+      call assert_equal(25.0_dp, pt%statev(6), 1.0e-12_dp, trim(what) // ': beta plane 3')
+      call assert_true(all(same_value(pt%statev(1:3), 1.0_dp)), trim(what) // ': D = 1')
+      call assert_true(all(abs(pt%stress) <= 1.0e-12_dp), trim(what) // ': open, no traction')
+    end do
+  end subroutine prefractured_beta_running_maximum
 
 end module test_umat_cases
 

@@ -7,7 +7,7 @@ interlock_add_suite(test_umat test_umat_interface.f90 test_umat.f90)
 target_link_libraries(test_umat PRIVATE interlock_umat)
 # The rejections must also be reported: one line each, naming element, point and the property.
 set_tests_properties(test_umat PROPERTIES
-  PASS_REGULAR_EXPRESSION "interlock UMAT: element 7, point 3 \\(material 'TEST', increment 1\\): PROPS\\(4\\): property 'eta' = 0 is inadmissible: admissible 0 < +eta < +1.*NPROPS = 8 is inadmissible.*NSTATV = 21 is inadmissible.*NTENS = 3 is inadmissible.*separation STRAN \\+ DSTRAN is not finite.*umat: [0-9]+ checks, 0 failed"
+  PASS_REGULAR_EXPRESSION "interlock UMAT: element 7, point 3 \\(material 'TEST', increment 1\\): PROPS\\(4\\): property 'eta' = 0 is inadmissible: admissible 0 < +eta < +1.*NPROPS = 8 is inadmissible.*NSTATV = 21 is inadmissible.*NTENS = 3 is inadmissible.*separation STRAN \\+ DSTRAN is not finite.*STATEV\\(1\\) = -0.1 \\(damage of plane 1\\) is inadmissible: admissible 0 <= damage <= 1 \\[-\\].*STRESS\\(1\\) = NaN on entry is inadmissible.*DSTRAN = \\(1e\\+100, 0\\) mm is inadmissible: admissible \\|s_N\\|, \\|s_T\\| <= 1000000 mm.*umat: [0-9]+ checks, 0 failed"
   FAIL_REGULAR_EXPRESSION "FAIL|ERROR STOP")
 
 # --- The table tells the truth (defaults, PROPS slots, STATEV layout).

@@ -23,8 +23,13 @@
 !>
 !> **PNEWDT.** PNEWDT is only ever lowered, never raised:
 !>  - bad input (precision of the reals < 15, NTENS /= 2, NSTATV < 22, NPROPS or a property out
-!>    of its range, NaN): one line `interlock UMAT: element E, point P (...): <why>` on the
-!>    output unit, PNEWDT = -1 (repeating the increment cannot help: stop the analysis);
+!>    of its range, NaN; a STATEV slot out of its range: damage outside [0, 1], negative beta
+!>    or zeta, theta outside [theta_f, theta_0] of its plane, the flag STATEV(22) not 0 or 1,
+!>    a slip, work or friction traction beyond 1e150 or not finite; STRESS on entry not finite
+!>    or beyond 1e150 MPa; |STRAN| or |STRAN + DSTRAN| beyond the admissible 1e6 mm): one line
+!>    `interlock UMAT: element E, point P (...): <why>` on the output unit naming the value
+!>    (STATEV by index) and its admissible range, PNEWDT = -1 (repeating the increment cannot
+!>    help: stop the analysis);
 !>  - local integration failure (or a non-finite separation from a diverged global iteration):
 !>    one line as above, PNEWDT = min(PNEWDT, 0.5);
 !>  in both cases STRESS, STATEV, DDSDDE, SSE, SPD, SCD are left untouched.
@@ -58,12 +63,28 @@
 !> `interlock-history` to reproduce the failure at that single point. Off by default, since an
 !> FE run calls the UMAT from many threads and points.
 !>
+!> **Cost.** A host calls this once per integration point and iteration, so the success path
+!> costs what the law costs plus what any UMAT must do (read and check PROPS and STATEV, derive
+!> the constants, write STATEV back): plain comparisons, no message, no formatted write, no
+!> long string copy, no heap allocation. Messages are built only on failure, in the
+!> procedures after the body (interlock-bench measures the UMAT call against its update).
+!>
 !> **Threads.** No SAVE'd, module or COMMON state is written; the procedure is `recursive` so
 !> that every local lives on the stack: safe to call from many threads at once.
 module interlock_umat_body
+  use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
+      interlock_info_t, interlock_update, umat_controls_t, status_ok, status_local_failure
   implicit none
   private
   public :: interlock_umat_cohesive
+
+  real(dp), parameter :: pnewdt_bad_input = -1.0_dp
+  real(dp), parameter :: pnewdt_local_failure = 0.5_dp
+  real(dp), parameter :: pnewdt_min_factor = 0.1_dp
+
+  !> What reject_argument reports.
+  integer, parameter :: bad_precision = 1, bad_ntens = 2, bad_nstatv = 3, bad_stran = 4, &
+                        bad_separation = 5, bad_stress = 6, non_finite_separation = 7
 
 contains
 
@@ -71,13 +92,10 @@ contains
                             STRAN, DSTRAN, TIME, DTIME, TEMP, DTEMP, PREDEF, DPRED, CMNAME, NDI, &
                             NSHR, NTENS, NSTATV, PROPS, NPROPS, COORDS, DROT, PNEWDT, CELENT, &
                             DFGRD0, DFGRD1, NOEL, NPT, LAYER, KSPT, JSTEP, KINC)
-    use, intrinsic :: iso_fortran_env, only: output_unit
-    use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
-        interlock_info_t, interlock_update, umat_controls_t, props_to_material, statev_to_state, &
-        state_to_statev, umat_nstatv, status_ok, status_local_failure, message_len, is_nan_value, &
-        interlock_write_replay_deck, format_integer, prop_tangent, tangent_symmetric, &
-        interlock_symmetric_tangent
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+    use interlock, only: props_to_material, statev_to_state, state_to_statev, umat_nstatv, &
+        message_len, separation_bound, state_bound, statev_bad_index, exponent_bits, &
+        prop_tangent, tangent_symmetric, interlock_symmetric_tangent
+    use, intrinsic :: iso_fortran_env, only: int64
     implicit none
     integer, intent(in) :: NDI                 !< direct components (1 for a 2D cohesive element)
     integer, intent(in) :: NSHR                !< shear components (1 for a 2D cohesive element)
@@ -104,18 +122,15 @@ contains
     real(dp), intent(in) :: COORDS(3), DROT(3, 3), CELENT, DFGRD0(3, 3), DFGRD1(3, 3) !< unused
     real(dp), intent(inout) :: PNEWDT          !< suggested time-step ratio (only lowered here)
 
-    real(dp), parameter :: pnewdt_bad_input = -1.0_dp
-    real(dp), parameter :: pnewdt_local_failure = 0.5_dp
-    real(dp), parameter :: pnewdt_min_factor = 0.1_dp
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver
     type(umat_controls_t) :: controls
-    type(interlock_state_t) :: old, new, anchor
+    type(interlock_state_t) :: old, new
     type(interlock_info_t) :: info
     real(dp) :: s(2), sigma(2), tangent(2, 2), factor
-    integer :: stat
+    integer :: stat, bad
+    logical :: ok
     character(len=message_len) :: message
-    character(len=96) :: buf
 
     associate (unused_1 => NDI, unused_2 => NSHR, unused_3 => LAYER, unused_4 => KSPT, &
                unused_5 => JSTEP, unused_6 => TIME, unused_7 => DTIME, unused_8 => TEMP, &
@@ -124,46 +139,66 @@ contains
                unused_15 => DFGRD0, unused_16 => DFGRD1)
     end associate
 
-    ! --- Bad input: the host's arguments, then every property by name and range.
+    ! --- Bad input: the host's arguments, every property by its range, the separations, the
+    ! traction and the state on entry. Plain comparisons; the messages only on failure.
     if (precision(STRESS) < 15 .or. precision(PROPS) < 15 .or. precision(PNEWDT) < 15) then
-      write (buf, '(i0)') min(precision(STRESS), precision(PROPS), precision(PNEWDT))
-      call fail('the real arguments have ' // trim(buf) // ' significant digits, fewer than 15: ' &
-                // 'compile the host and the UMAT in double precision', pnewdt_bad_input)
+      call reject_argument(bad_precision, min(precision(STRESS), precision(PROPS), &
+                           precision(PNEWDT)), [0.0_dp, 0.0_dp], NOEL, NPT, KINC, CMNAME, PNEWDT)
       return
     end if
     if (NTENS /= 2) then
-      write (buf, '(i0)') NTENS
-      call fail('NTENS = ' // trim(buf) // ' is inadmissible: admissible NTENS = 2 (2D ' // &
-                'cohesive element: 1 normal, 2 shear)', pnewdt_bad_input)
+      call reject_argument(bad_ntens, NTENS, [0.0_dp, 0.0_dp], NOEL, NPT, KINC, CMNAME, PNEWDT)
       return
     end if
     if (NSTATV < umat_nstatv) then
-      write (buf, '(i0,a,i0)') NSTATV, ' is inadmissible: admissible NSTATV >= ', umat_nstatv
-      call fail('NSTATV = ' // trim(buf) // ' (*DEPVAR; see interlock-query --statev)', &
-                pnewdt_bad_input)
+      call reject_argument(bad_nstatv, NSTATV, [0.0_dp, 0.0_dp], NOEL, NPT, KINC, CMNAME, PNEWDT)
       return
     end if
     call props_to_material(PROPS, mat, solver, controls, stat, message)
     if (stat /= status_ok) then
-      call fail(message, pnewdt_bad_input)
+      call report(message, pnewdt_bad_input, NOEL, NPT, KINC, CMNAME, PNEWDT)
+      return
+    end if
+    ! Finite first (from the bits: an ordered comparison of a NaN, or a sum of huge values,
+    ! would raise a trap), then within the bound (nested tests: Fortran does not short-circuit).
+    ok = iand(transfer(STRAN(1), 0_int64), exponent_bits) /= exponent_bits .and. &
+         iand(transfer(STRAN(2), 0_int64), exponent_bits) /= exponent_bits .and. &
+         iand(transfer(DSTRAN(1), 0_int64), exponent_bits) /= exponent_bits .and. &
+         iand(transfer(DSTRAN(2), 0_int64), exponent_bits) /= exponent_bits
+    if (ok) ok = abs(STRAN(1)) <= separation_bound .and. abs(STRAN(2)) <= separation_bound .and. &
+                 abs(DSTRAN(1)) <= 2.0_dp * separation_bound .and. &
+                 abs(DSTRAN(2)) <= 2.0_dp * separation_bound
+    if (ok) then
+      s = STRAN(1:2) + DSTRAN(1:2)
+      ok = abs(s(1)) <= separation_bound .and. abs(s(2)) <= separation_bound
+    end if
+    if (.not. ok) then
+      call reject_separation(STRAN(1:2), DSTRAN(1:2), NOEL, NPT, KINC, CMNAME, PNEWDT)
+      return
+    end if
+    ok = iand(transfer(STRESS(1), 0_int64), exponent_bits) /= exponent_bits .and. &
+         iand(transfer(STRESS(2), 0_int64), exponent_bits) /= exponent_bits
+    if (ok) ok = abs(STRESS(1)) <= state_bound .and. abs(STRESS(2)) <= state_bound
+    if (.not. ok) then
+      call reject_argument(bad_stress, 0, STRESS(1:2), NOEL, NPT, KINC, CMNAME, PNEWDT)
+      return
+    end if
+    bad = statev_bad_index(STATEV(1:umat_nstatv), mat)
+    if (bad /= 0) then
+      call reject_statev(STATEV(1:umat_nstatv), bad, mat, NOEL, NPT, KINC, CMNAME, PNEWDT)
       return
     end if
 
     ! --- The update: state at the start from STATEV, STRAN and STRESS.
-    s = STRAN(1:2) + DSTRAN(1:2)
-    if (.not. all(ieee_is_finite(s))) then
-      call fail('the separation STRAN + DSTRAN is not finite (diverged global iteration?): ' // &
-                'retry with a smaller increment', pnewdt_local_failure)
-      return
-    end if
     call statev_to_state(STATEV(1:umat_nstatv), mat, old)
     old%s = STRAN(1:2)
     old%sigma = STRESS(1:2)
     call interlock_update(mat, solver, s, old, new, sigma, tangent, info)
     if (info%status /= status_ok) then
-      call fail(info%message, merge(pnewdt_local_failure, pnewdt_bad_input, &
-                                    info%status == status_local_failure))
-      if (info%status == status_local_failure) call write_replay(info%message)
+      call report(info%message, merge(pnewdt_local_failure, pnewdt_bad_input, &
+                  info%status == status_local_failure), NOEL, NPT, KINC, CMNAME, PNEWDT)
+      if (info%status == status_local_failure) &
+        call write_replay(info%message, mat, solver, old, s, NOEL, NPT, KINC)
       return
     end if
 
@@ -185,97 +220,187 @@ contains
 
     ! --- Accuracy control: propose the fraction of the increment that meets the bounds.
     factor = step_factor(mat, controls, old, old, new)
-    if (factor < 1.0_dp .and. mat%use_wear) then
-      ! With wear, a zero increment is not a no-op in the explicit scheme (the angle stored at
-      ! the end of the last increment turns the local frame): interpolate from the state that
-      ! the zero increment gives instead (one more update, only when a bound is exceeded).
-      call interlock_update(mat, solver, STRAN(1:2), old, anchor, sigma, tangent, info)
-      if (info%status == status_ok) factor = step_factor(mat, controls, old, anchor, new)
-    end if
-    if (factor < 1.0_dp) call lower_pnewdt(max(pnewdt_min_factor, factor))
-
-  contains
-
-    !> Write one line naming the point, lower PNEWDT; STRESS and STATEV stay as they came.
-    subroutine fail(why, proposal)
-      character(len=*), intent(in) :: why
-      real(dp), intent(in) :: proposal
-      character(len=64) :: where
-      write (where, '(a,i0,a,i0)') 'element ', NOEL, ', point ', NPT
-      write (output_unit, '(a)') 'interlock UMAT: ' // trim(where) // " (material '" // &
-        trim(CMNAME) // "', increment " // trim(format_integer(KINC)) // '): ' // trim(why)
-      call lower_pnewdt(proposal)
-    end subroutine fail
-
-    !> The replay deck of a failed increment, when INTERLOCK_REPLAY_DIR asks for it.
-    subroutine write_replay(why)
-      character(len=*), intent(in) :: why
-      character(len=4096) :: dir
-      character(len=96) :: name
-      integer :: length, env_stat, ios
-      call get_environment_variable('INTERLOCK_REPLAY_DIR', dir, length, env_stat)
-      if (env_stat /= 0 .or. length == 0) return
-      write (name, '(a,i0,a,i0,a,i0,a)') 'interlock_replay_e', NOEL, '_p', NPT, '_k', KINC, '.nml'
-      call interlock_write_replay_deck(trim(dir) // '/' // trim(name), mat, solver, old, s, &
-        'UMAT element ' // format_integer(NOEL) // ', point ' // format_integer(NPT) // ', increment ' // &
-        format_integer(KINC) // ': ' // why, ios)
-      if (ios /= 0) write (output_unit, '(a)') 'interlock UMAT: could not write the replay deck ' &
-        // trim(dir) // '/' // trim(name)
-    end subroutine write_replay
-
-    !> PNEWDT = min(PNEWDT, proposal); a NaN on entry is replaced.
-    subroutine lower_pnewdt(proposal)
-      real(dp), intent(in) :: proposal
-      if (is_nan_value(PNEWDT)) then
-        PNEWDT = proposal
-      else if (proposal < PNEWDT) then
-        PNEWDT = proposal
-      end if
-    end subroutine lower_pnewdt
-
-
-    !> Fraction f of the increment old -> new that meets the damage and angle bounds (1 when
-    !> both hold), interpolating the drivers beta and zeta linearly between `zero` (the state a
-    !> zero increment gives) and `new` (see the header).
-    pure real(dp) function step_factor(mat, controls, old, zero, new) result(f)
-      type(interlock_material_t), intent(in) :: mat
-      type(umat_controls_t), intent(in) :: controls
-      type(interlock_state_t), intent(in) :: old, zero, new
-      real(dp), parameter :: slack = 1.0e-6_dp  !< a bound exceeded by less (relative) is met
-      integer :: k
-      real(dp) :: d_target, beta_target, span, dzeta_target, dzeta_zero
-      f = 1.0_dp
-      do k = 1, mat%n_planes
-        if (new%damage(k) - old%damage(k) > controls%max_damage_increment * (1.0_dp + slack)) then
-          ! D = (beta - 1) / (eta beta)  <=>  beta = 1 / (1 - eta D)
-          d_target = old%damage(k) + controls%max_damage_increment
-          beta_target = 1.0_dp / (1.0_dp - mat%eta * d_target)
-          if (new%beta(k) > zero%beta(k) .and. beta_target > zero%beta(k)) then
-            f = min(f, (beta_target - zero%beta(k)) / (new%beta(k) - zero%beta(k)))
-          else
-            f = 0.0_dp   ! a jump (separation beyond H_N) or no cut helps: as small as allowed
-          end if
-        end if
-        if (mat%plane_wears(k) .and. abs(new%theta(k) - old%theta(k)) > &
-            controls%max_angle_increment * (1.0_dp + slack)) then
-          ! theta(zeta) - theta_f = (theta_0 - theta_f) exp(-zeta/zeta_0): the angle turns by
-          ! |theta_old - theta_f| (1 - exp(-dzeta/zeta_0)) when zeta grows by dzeta.
-          span = abs(old%theta(k) - mat%thetaf_eff(k))
-          dzeta_zero = zero%zeta(k) - old%zeta(k)
-          if (span > controls%max_angle_increment) then
-            dzeta_target = -mat%zeta0(k) * log(1.0_dp - controls%max_angle_increment / span)
-          else
-            dzeta_target = 0.0_dp
-          end if
-          if (new%zeta(k) > zero%zeta(k) .and. dzeta_target > dzeta_zero) then
-            f = min(f, (dzeta_target - dzeta_zero) / (new%zeta(k) - zero%zeta(k)))
-          else
-            f = 0.0_dp
-          end if
-        end if
-      end do
-    end function step_factor
-
+    if (factor < 1.0_dp .and. mat%use_wear) &
+      factor = step_factor_from_zero(mat, solver, controls, old, new, factor)
+    if (factor < 1.0_dp) call lower_pnewdt(PNEWDT, max(pnewdt_min_factor, factor))
   end subroutine interlock_umat_cohesive
+
+  !> With wear, a zero increment is not a no-op in the explicit scheme (the angle stored at the
+  !> end of the last increment turns the local frame): interpolate from the state that the zero
+  !> increment gives instead (one more update, only when a bound is exceeded). `factor` is the
+  !> fraction from `old`, kept when the zero increment fails.
+  real(dp) function step_factor_from_zero(mat, solver, controls, old, new, factor) result(f)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    type(umat_controls_t), intent(in) :: controls
+    type(interlock_state_t), intent(in) :: old, new
+    real(dp), intent(in) :: factor
+    type(interlock_state_t) :: anchor
+    type(interlock_info_t) :: info
+    real(dp) :: sigma(2), tangent(2, 2)
+    f = factor
+    call interlock_update(mat, solver, old%s, old, anchor, sigma, tangent, info)
+    if (info%status == status_ok) f = step_factor(mat, controls, old, anchor, new)
+  end function step_factor_from_zero
+
+  !> Fraction f of the increment old -> new that meets the damage and angle bounds (1 when
+  !> both hold), interpolating the drivers beta and zeta linearly between `zero` (the state a
+  !> zero increment gives) and `new` (see the header).
+  pure real(dp) function step_factor(mat, controls, old, zero, new) result(f)
+    type(interlock_material_t), intent(in) :: mat
+    type(umat_controls_t), intent(in) :: controls
+    type(interlock_state_t), intent(in) :: old, zero, new
+    real(dp), parameter :: slack = 1.0e-6_dp  !< a bound exceeded by less (relative) is met
+    integer :: k
+    real(dp) :: d_target, beta_target, span, dzeta_target, dzeta_zero
+    f = 1.0_dp
+    do k = 1, mat%n_planes
+      if (new%damage(k) - old%damage(k) > controls%max_damage_increment * (1.0_dp + slack)) then
+        ! D = (beta - 1) / (eta beta)  <=>  beta = 1 / (1 - eta D)
+        d_target = old%damage(k) + controls%max_damage_increment
+        beta_target = 1.0_dp / (1.0_dp - mat%eta * d_target)
+        if (new%beta(k) > zero%beta(k) .and. beta_target > zero%beta(k)) then
+          ! (the quotient only when below f <= 1: no overflow on a tiny denominator)
+          if (beta_target - zero%beta(k) < f * (new%beta(k) - zero%beta(k))) &
+            f = (beta_target - zero%beta(k)) / (new%beta(k) - zero%beta(k))
+        else
+          f = 0.0_dp   ! a jump (separation beyond H_N) or no cut helps: as small as allowed
+        end if
+      end if
+      if (mat%plane_wears(k) .and. abs(new%theta(k) - old%theta(k)) > &
+          controls%max_angle_increment * (1.0_dp + slack)) then
+        ! theta(zeta) - theta_f = (theta_0 - theta_f) exp(-zeta/zeta_0): the angle turns by
+        ! |theta_old - theta_f| (1 - exp(-dzeta/zeta_0)) when zeta grows by dzeta.
+        span = abs(old%theta(k) - mat%thetaf_eff(k))
+        dzeta_zero = zero%zeta(k) - old%zeta(k)
+        if (span > controls%max_angle_increment) then
+          dzeta_target = -mat%zeta0(k) * log(1.0_dp - controls%max_angle_increment / span)
+        else
+          dzeta_target = 0.0_dp
+        end if
+        if (new%zeta(k) > zero%zeta(k) .and. dzeta_target > dzeta_zero) then
+          if (dzeta_target - dzeta_zero < f * (new%zeta(k) - zero%zeta(k))) &
+            f = (dzeta_target - dzeta_zero) / (new%zeta(k) - zero%zeta(k))
+        else
+          f = 0.0_dp
+        end if
+      end if
+    end do
+  end function step_factor
+
+  !> PNEWDT = min(PNEWDT, proposal); a NaN on entry is replaced.
+  subroutine lower_pnewdt(pnewdt, proposal)
+    real(dp), intent(inout) :: pnewdt
+    real(dp), intent(in) :: proposal
+    if (.not. (pnewdt <= proposal)) pnewdt = proposal
+  end subroutine lower_pnewdt
+
+  !> Write one line naming the point, lower PNEWDT; STRESS and STATEV stay as they came.
+  subroutine report(why, proposal, noel, npt, kinc, cmname, pnewdt)
+    use, intrinsic :: iso_fortran_env, only: output_unit
+    use interlock, only: format_integer
+    character(len=*), intent(in) :: why, cmname
+    real(dp), intent(in) :: proposal
+    integer, intent(in) :: noel, npt, kinc
+    real(dp), intent(inout) :: pnewdt
+    write (output_unit, '(a)') 'interlock UMAT: element ' // format_integer(noel) // &
+      ', point ' // format_integer(npt) // " (material '" // trim(cmname) // "', increment " // &
+      format_integer(kinc) // '): ' // trim(why)
+    call lower_pnewdt(pnewdt, proposal)
+  end subroutine report
+
+  !> Reject a bad argument of the host (`what`: bad_*), naming the value.
+  subroutine reject_argument(what, n, x, noel, npt, kinc, cmname, pnewdt)
+    use interlock, only: format_integer, format_real, umat_nstatv, state_bound, is_finite_bits
+    integer, intent(in) :: what, n, noel, npt, kinc
+    real(dp), intent(in) :: x(2)
+    character(len=*), intent(in) :: cmname
+    real(dp), intent(inout) :: pnewdt
+    integer :: i
+    select case (what)
+    case (bad_precision)
+      call report('the real arguments have ' // format_integer(n) // ' significant digits, ' // &
+                  'fewer than 15: compile the host and the UMAT in double precision', &
+                  pnewdt_bad_input, noel, npt, kinc, cmname, pnewdt)
+    case (bad_ntens)
+      call report('NTENS = ' // format_integer(n) // ' is inadmissible: admissible NTENS = 2 ' // &
+                  '(2D cohesive element: 1 normal, 2 shear)', pnewdt_bad_input, noel, npt, kinc, &
+                  cmname, pnewdt)
+    case (bad_nstatv)
+      call report('NSTATV = ' // format_integer(n) // ' is inadmissible: admissible NSTATV >= ' &
+                  // format_integer(umat_nstatv) // ' (*DEPVAR; see interlock-query --statev)', &
+                  pnewdt_bad_input, noel, npt, kinc, cmname, pnewdt)
+    case (bad_stress)
+      i = 2
+      if (.not. is_finite_bits(x(1))) then
+        i = 1
+      else if (abs(x(1)) > state_bound) then
+        i = 1
+      end if
+      call report('STRESS(' // format_integer(i) // ') = ' // format_real(x(i)) // ' on entry ' // &
+                  'is inadmissible: admissible |STRESS| <= ' // format_real(state_bound) // &
+                  ' MPa (the traction this UMAT returned for the last increment)', &
+                  pnewdt_bad_input, noel, npt, kinc, cmname, pnewdt)
+    end select
+  end subroutine reject_argument
+
+  !> Reject a separation: not finite (a diverged global iteration: retry with a smaller
+  !> increment) or beyond the admissible bound (bad input).
+  subroutine reject_separation(stran, dstran, noel, npt, kinc, cmname, pnewdt)
+    use interlock, only: format_real, separation_bound, is_finite_bits
+    real(dp), intent(in) :: stran(2), dstran(2)
+    integer, intent(in) :: noel, npt, kinc
+    character(len=*), intent(in) :: cmname
+    real(dp), intent(inout) :: pnewdt
+    if (.not. all(is_finite_bits([stran, dstran]))) then
+      call report('the separation STRAN + DSTRAN is not finite (diverged global iteration?): ' &
+                  // 'retry with a smaller increment', pnewdt_local_failure, noel, npt, kinc, &
+                  cmname, pnewdt)
+    else
+      call report('the separation STRAN = (' // format_real(stran(1)) // ', ' // &
+                  format_real(stran(2)) // ') mm, DSTRAN = (' // format_real(dstran(1)) // &
+                  ', ' // format_real(dstran(2)) // ') mm is inadmissible: admissible |s_N|, ' // &
+                  '|s_T| <= ' // format_real(separation_bound) // ' mm for STRAN and STRAN + ' // &
+                  'DSTRAN (separations, in mm: constitutive thickness 1)', pnewdt_bad_input, &
+                  noel, npt, kinc, cmname, pnewdt)
+    end if
+  end subroutine reject_separation
+
+  !> Reject STATEV(bad), naming index, variable, value and range.
+  subroutine reject_statev(statev, bad, mat, noel, npt, kinc, cmname, pnewdt)
+    use interlock, only: umat_nstatv, statev_message, message_len
+    real(dp), intent(in) :: statev(umat_nstatv)
+    integer, intent(in) :: bad, noel, npt, kinc
+    type(interlock_material_t), intent(in) :: mat
+    character(len=*), intent(in) :: cmname
+    real(dp), intent(inout) :: pnewdt
+    character(len=message_len) :: message
+    call statev_message(statev, bad, mat, message)
+    call report(message, pnewdt_bad_input, noel, npt, kinc, cmname, pnewdt)
+  end subroutine reject_statev
+
+  !> The replay deck of a failed increment, when INTERLOCK_REPLAY_DIR asks for it.
+  subroutine write_replay(why, mat, solver, old, s, noel, npt, kinc)
+    use, intrinsic :: iso_fortran_env, only: output_unit
+    use interlock, only: interlock_write_replay_deck, format_integer
+    character(len=*), intent(in) :: why
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    type(interlock_state_t), intent(in) :: old
+    real(dp), intent(in) :: s(2)
+    integer, intent(in) :: noel, npt, kinc
+    character(len=4096) :: dir
+    character(len=:), allocatable :: name
+    integer :: length, env_stat, ios
+    call get_environment_variable('INTERLOCK_REPLAY_DIR', dir, length, env_stat)
+    if (env_stat /= 0 .or. length == 0) return
+    name = 'interlock_replay_e' // format_integer(noel) // '_p' // format_integer(npt) // '_k' // &
+           format_integer(kinc) // '.nml'
+    call interlock_write_replay_deck(trim(dir) // '/' // name, mat, solver, old, s, &
+      'UMAT element ' // format_integer(noel) // ', point ' // format_integer(npt) // &
+      ', increment ' // format_integer(kinc) // ': ' // why, ios)
+    if (ios /= 0) write (output_unit, '(a)') 'interlock UMAT: could not write the replay deck ' &
+      // trim(dir) // '/' // name
+  end subroutine write_replay
 
 end module interlock_umat_body

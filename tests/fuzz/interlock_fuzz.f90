@@ -7,16 +7,25 @@
 !> Every failing input is written and printed as a replay deck (docs/deck-format.md).
 !>
 !>   interlock-fuzz [--updates N] [--seed S] [--fd-every K] [--deck-dir DIR] [--max-decks M]
+!>   interlock-fuzz --garbage N [--seed S]
+!>
+!> With --garbage, N calls of the external UMAT with garbage mixed into valid input instead:
+!> NaN, +-Inf, denormals, huge and out-of-range values in PROPS, STATEV, STRESS, STRAN and
+!> DSTRAN. Every call must either be rejected (PNEWDT < 1, STRESS, STATEV, DDSDDE, SSE and SCD
+!> untouched, one message line) or return finite outputs; in the Debug build (FP traps on
+!> invalid, zero, overflow) any trap ends the run.
 !>
 !> Exit status 0 when no invariant, tangent or status failure was found; 2 on a usage error (the
 !> usage on stderr).
 program interlock_fuzz
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
-  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan, &
+      ieee_positive_inf, ieee_negative_inf
   use interlock_cli, only: exit_program
   use interlock
   use interlock_replay, only: interlock_write_replay_deck
   use test_stability_tools
+  use test_umat_interface, only: umat_point_t, call_umat
   implicit none
 
   integer(int64) :: n_updates = 100000_int64, done = 0_int64, n_fd = 0_int64, n_fd_skip = 0_int64
@@ -25,10 +34,15 @@ program interlock_fuzz
   character(len=256) :: deck_dir = '.'
   type(rng_t) :: rng
   real(dp) :: t0, t1
+  integer(int64) :: n_garbage = 0_int64
 
 
   call parse_arguments()
   call rng_seed(rng, seed)
+  if (n_garbage > 0) then
+    call garbage_calls()
+    stop
+  end if
   call cpu_time(t0)
   do while (done < n_updates)
     call one_history()
@@ -60,7 +74,7 @@ contains
       case ('--version')
         write (output_unit, '(a)') 'interlock-fuzz ' // interlock_version_string
         call exit_program(0)
-      case ('--updates', '--seed', '--fd-every', '--deck-dir', '--max-decks')
+      case ('--updates', '--seed', '--fd-every', '--deck-dir', '--max-decks', '--garbage')
         if (i == n) call usage_error(trim(arg) // ' needs a value')
         call get_command_argument(i + 1, val)
         ios = 0
@@ -78,9 +92,13 @@ contains
         case ('--max-decks')
           read (val, *, iostat=ios) max_decks
           if (ios == 0 .and. max_decks < 0) ios = 1
+        case ('--garbage')
+          read (val, *, iostat=ios) n_garbage
+          if (ios == 0 .and. n_garbage < 1) ios = 1
         end select
         if (ios /= 0) call usage_error(trim(arg) // ' ' // trim(val) // ': not an admissible ' // &
-          'value (--updates, --fd-every: integers >= 1; --seed: an integer; --max-decks >= 0)')
+          'value (--updates, --fd-every, --garbage: integers >= 1; --seed: an integer; ' // &
+          '--max-decks >= 0)')
         i = i + 1
       case default
         call usage_error('unknown argument ' // trim(arg))
@@ -92,7 +110,8 @@ contains
   subroutine usage(unit)
     integer, intent(in) :: unit
     write (unit, '(a)') 'usage: interlock-fuzz [--updates N] [--seed S] ' // &
-      '[--fd-every K] [--deck-dir DIR] [--max-decks M] | --help | --version'
+      '[--fd-every K] [--deck-dir DIR] [--max-decks M] | --garbage N [--seed S] | --help | ' // &
+      '--version'
   end subroutine usage
 
   subroutine usage_error(message)
@@ -102,6 +121,132 @@ contains
     call exit_program(2)
   end subroutine usage_error
 
+
+  !> A value for a slot that held `x`: usually x, sometimes garbage.
+  function garble(x, p) result(y)
+    real(dp), intent(in) :: x, p
+    real(dp) :: y
+    real(dp) :: u
+    y = x
+    if (rng_uniform(rng) >= p) return
+    u = rng_uniform(rng)
+    select case (rng_int(rng, 1, 12))
+    case (1)
+      y = ieee_value(1.0_dp, ieee_quiet_nan)
+    case (2)
+      y = ieee_value(1.0_dp, ieee_positive_inf)
+    case (3)
+      y = ieee_value(1.0_dp, ieee_negative_inf)
+    case (4)
+      y = 1.0e-310_dp * (1.0_dp + u)            ! denormal
+    case (5)
+      y = -1.0e-310_dp * (1.0_dp + u)
+    case (6)
+      y = huge(1.0_dp) * (0.5_dp + 0.5_dp * u)
+    case (7)
+      y = -huge(1.0_dp) * (0.5_dp + 0.5_dp * u)
+    case (8)
+      y = 10.0_dp**(600.0_dp * u - 300.0_dp)    ! any magnitude
+    case (9)
+      y = -10.0_dp**(600.0_dp * u - 300.0_dp)
+    case (10)
+      y = 0.0_dp
+    case (11)                                     ! out of range nearby
+      if (is_finite_bits(x)) then
+        if (abs(x) < 1.0e300_dp) y = x * (1.0_dp + 10.0_dp * (u - 0.5_dp))
+      end if
+    case default
+      y = -x
+    end select
+  end function garble
+
+  !> --garbage: UMAT calls with garbage in every input; each call rejected with its outputs
+  !> untouched, or finite.
+  subroutine garbage_calls()
+    real(dp), parameter :: props_base(14) = [3.0_dp, 3.0_dp, 0.3_dp, 0.9_dp, 0.5_dp, 2.0_dp, &
+      30.0_dp, 7.0_dp, 1.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, 0.25_dp, 1.0_dp]
+    type(umat_point_t) :: pt, before
+    real(dp) :: props(n_properties), stran(2), dstran(2), p
+    integer :: n_props, k, n_rejected, n_bad
+    integer(int64) :: call_no
+    allocate (pt%stress(2), pt%statev(umat_nstatv), pt%ddsdde(2, 2))
+    n_rejected = 0
+    n_bad = 0
+    pt%stress = 0.0_dp
+    pt%statev = 0.0_dp
+    pt%ddsdde = 0.0_dp
+    stran = 0.0_dp
+    do call_no = 1, n_garbage
+      p = merge(0.005_dp, 0.1_dp, rng_uniform(rng) < 0.5_dp)
+      n_props = rng_int(rng, 9, n_properties)
+      props = properties%default
+      props(1:14) = props_base
+      props(10) = merge(1.0_dp, 0.0_dp, rng_uniform(rng) < 0.2_dp)
+      props(11) = real(rng_int(rng, 1, 2), dp)
+      props(12) = merge(1.0e-3_dp, 0.0_dp, rng_uniform(rng) < 0.2_dp)
+      do k = 1, n_props
+        props(k) = garble(props(k), p / 4.0_dp)
+      end do
+      if (rng_uniform(rng) < 0.05_dp) then          ! a fresh point
+        pt%statev = 0.0_dp
+        pt%stress = 0.0_dp
+        stran = 0.0_dp
+      end if
+      do k = 1, umat_nstatv
+        pt%statev(k) = garble(pt%statev(k), p / 8.0_dp)
+      end do
+      pt%stress = [garble(pt%stress(1), p / 8.0_dp), garble(pt%stress(2), p / 8.0_dp)]
+      stran = [garble(stran(1), p / 8.0_dp), garble(stran(2), p / 8.0_dp)]
+      dstran = [0.02_dp * (rng_uniform(rng) - 0.5_dp), 0.05_dp * (rng_uniform(rng) - 0.5_dp)]
+      dstran = [garble(dstran(1), p / 4.0_dp), garble(dstran(2), p / 4.0_dp)]
+      before = pt
+      pt%pnewdt = 1.0_dp
+      call call_umat(pt, props(1:n_props), stran, dstran, 1, 1, int(min(call_no, 2000000000_int64)))
+      if (pt%pnewdt < 0.0_dp) then
+        n_rejected = n_rejected + 1
+        if (changed(before, pt)) then
+          n_bad = n_bad + 1
+          write (output_unit, '(a,i0,a)') 'FAIL garbage call ', call_no, &
+            ': rejected but outputs changed'
+        end if
+      else if (.not. changed(before, pt)) then
+        ! untouched: a local failure (PNEWDT 0.5) or a zero increment
+        if (pt%pnewdt < 1.0_dp) n_rejected = n_rejected + 1
+      else if (.not. (all(is_finite_bits(pt%stress)) .and. all(is_finite_bits(pt%ddsdde)) .and. &
+                      all(is_finite_bits(pt%statev)) .and. is_finite_bits(pt%sse) .and. &
+                      is_finite_bits(pt%scd))) then
+        n_bad = n_bad + 1
+        write (output_unit, '(a,i0,a)') 'FAIL garbage call ', call_no, ': accepted, not finite'
+        write (output_unit, '(a,19es10.2)') '  PROPS ', props(1:n_props)
+        write (output_unit, '(a,22es10.2)') '  STATEV in ', before%statev
+        write (output_unit, '(a,6es10.2)') '  STRESS, STRAN, DSTRAN ', before%stress, stran, dstran
+      else
+        ! accepted: the host goes on from the end of the increment
+        stran = stran + dstran
+      end if
+      if (.not. all(is_finite_bits(stran))) then
+        stran = 0.0_dp
+      else if (.not. all(abs(stran) <= 1.0e3_dp)) then
+        stran = 0.0_dp
+      end if
+    end do
+    write (output_unit, '(a,i0,a,i0,a,i0,a,i0)') 'interlock-fuzz --garbage: seed ', seed, ', ', &
+      n_garbage, ' UMAT calls, ', n_rejected, ' rejected, failures ', n_bad
+    if (n_bad > 0) error stop 1
+  end subroutine garbage_calls
+
+  !> Whether any output of the UMAT differs (bitwise; NaN equals NaN) between a and b.
+  logical function changed(a, b)
+    type(umat_point_t), intent(in) :: a, b
+    changed = .not. (all(same_bits(a%stress, b%stress)) .and. all(same_bits(a%statev, b%statev)) &
+                     .and. all(same_bits(a%ddsdde, b%ddsdde)) .and. same_bits(a%sse, b%sse) &
+                     .and. same_bits(a%scd, b%scd))
+  end function changed
+
+  elemental logical function same_bits(x, y)
+    real(dp), intent(in) :: x, y
+    same_bits = transfer(x, 1_int64) == transfer(y, 1_int64)
+  end function same_bits
 
   !> A random admissible material and solver.
   subroutine random_material(mat, solver)
