@@ -636,15 +636,14 @@ contains
     type(group_scan_t), intent(in) :: scan
     character(len=*), intent(out) :: message
     integer :: k, index_value, limit, ios
-    character(len=:), allocatable :: sub, why, digits
+    character(len=:), allocatable :: sub, why
     message = ''
     why = ''
     do k = 1, scan%n
       sub = trim(scan%a(k)%subscript)
       if (len(sub) < 3) cycle
       if (.not. is_plane_variable(trim(deck_groups(g)), trim(scan%a(k)%name))) cycle
-      digits = sub(2:len(sub) - 1)
-      read (digits, *, iostat=ios) index_value
+      read (sub(2:len(sub) - 1), *, iostat=ios) index_value
       if (ios /= 0) cycle
       if (n_planes > 0) then
         limit = min(n_planes, max_planes)
