@@ -13,7 +13,7 @@ program interlock_bench
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
   use interlock, only: dp, max_planes, interlock_material_t, interlock_solver_t, interlock_state_t, &
       interlock_info_t, interlock_update, interlock_state_init, scheme_explicit, scheme_implicit, &
-      scheme_name, status_ok, interlock_version_string
+      scheme_trapezoidal, scheme_name, status_ok, interlock_version_string
   use interlock_bench_bilinear, only: bilinear_t, bilinear_state_t, bilinear_setup, bilinear_update
   use interlock_bench_scenes, only: scene_t, make_scene, run_scene, slip_at, n_effect_sets, &
       effect_set_names, make_effect_set, make_histories
@@ -104,8 +104,8 @@ contains
           call usage('--profile: SET is 0 (bilinear) .. 5 (full model)')
         call get_command_argument(i + 2, val)
         read (val, *, iostat=ios) profile_scheme
-        if (ios /= 0 .or. (profile_scheme /= scheme_explicit .and. profile_scheme /= scheme_implicit)) &
-          call usage('--profile: SCHEME is 1 (explicit) or 2 (implicit)')
+        if (ios /= 0 .or. profile_scheme < scheme_explicit .or. profile_scheme > scheme_trapezoidal) &
+          call usage('--profile: SCHEME is 1 (explicit), 2 (implicit) or 3 (trapezoidal)')
         call get_command_argument(i + 3, val)
         read (val, *, iostat=ios) profile_passes
         if (ios /= 0 .or. profile_passes < 1) call usage('--profile: PASSES must be positive')
@@ -191,8 +191,10 @@ contains
       solver%scheme = scheme_explicit
     case ('implicit')
       solver%scheme = scheme_implicit
+    case ('trapezoidal')
+      solver%scheme = scheme_trapezoidal
     case default
-      call usage('--history: SCHEME must be explicit or implicit')
+      call usage('--history: SCHEME must be explicit, implicit or trapezoidal')
     end select
     solver%substep_tol = dump_tol
     allocate (sn(0:dump_steps), st(0:dump_steps))
@@ -563,7 +565,7 @@ contains
   ! ------------------------------------------------------------------------------------------
 
   subroutine precision_study()
-    real(dp), allocatable :: tols_explicit(:), tols_implicit(:)
+    real(dp), allocatable :: tols_explicit(:), tols_implicit(:), tols_trapezoidal(:)
     integer :: jmax, ref_shift, n_cfg, is, c, j, n_grid, n, u, ur, us
     integer :: updates, max_newton, runs
     type(scene_t) :: sc
@@ -590,6 +592,7 @@ contains
       ref_shift = 4
       tols_explicit = [0.0_dp, 1.0e-2_dp]
       tols_implicit = [0.0_dp, 1.0e-2_dp]
+      tols_trapezoidal = [0.0_dp]
       min_time = 0.0_dp
     else
       jmax = 10
@@ -597,12 +600,13 @@ contains
       ! (explicit substepping at 1e-5 costs ~10 s per run for no gain: left out)
       tols_explicit = [0.0_dp, 1.0e-2_dp, 1.0e-3_dp, 1.0e-4_dp]
       tols_implicit = [0.0_dp, 1.0e-2_dp, 1.0e-3_dp, 1.0e-4_dp, 1.0e-5_dp]
+      tols_trapezoidal = [0.0_dp]
       min_time = 0.05_dp
     end if
     ! Configurations run: each scheme with uniform steps and with substepping; then two
     ! derived ones: global Richardson extrapolation 2 u(2n) - u(n) of the uniform-step runs of
     ! each scheme (the runs at n and 2n are both timed: its cost is their sum).
-    n_cfg = size(tols_explicit) + size(tols_implicit)
+    n_cfg = size(tols_explicit) + size(tols_implicit) + size(tols_trapezoidal)
     n_all = n_cfg + 2
     allocate (solvers(n_cfg), err(0:jmax, n_all), cpu(0:jmax, n_all), okr(0:jmax, n_all), &
               labels(n_all), tol_names(n_all), scheme_of(n_all))
@@ -610,9 +614,12 @@ contains
       if (c <= size(tols_explicit)) then     ! configuration 1 is the paper's: explicit, uniform
         solvers(c)%scheme = scheme_explicit
         solvers(c)%substep_tol = tols_explicit(c)
-      else
+      else if (c <= size(tols_explicit) + size(tols_implicit)) then
         solvers(c)%scheme = scheme_implicit
         solvers(c)%substep_tol = tols_implicit(c - size(tols_explicit))
+      else
+        solvers(c)%scheme = scheme_trapezoidal
+        solvers(c)%substep_tol = tols_trapezoidal(c - size(tols_explicit) - size(tols_implicit))
       end if
       scheme_of(c) = solvers(c)%scheme
       tol_names(c) = fmt_tol(solvers(c)%substep_tol)
@@ -668,8 +675,9 @@ contains
       do c = 1, n_cfg
         label = labels(c)
         cr = 0
-        if (.not. solvers(c)%substep_tol > 0.0_dp) cr = n_cfg + merge(1, 2, &
-          solvers(c)%scheme == scheme_explicit)
+        ! (Richardson's 2 u(2n) - u(n) is for the first-order schemes)
+        if (.not. solvers(c)%substep_tol > 0.0_dp .and. solvers(c)%scheme /= scheme_trapezoidal) &
+          cr = n_cfg + merge(1, 2, solvers(c)%scheme == scheme_explicit)
         do j = 0, jmax
           n = sc%base_steps * 2**j
           allocate (sn(0:n), st(0:n))

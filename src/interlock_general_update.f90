@@ -8,7 +8,7 @@
 module interlock_general_update
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, &
-      scheme_explicit, scheme_implicit, kernel_general
+      scheme_explicit, scheme_trapezoidal, kernel_general
   use interlock_state, only: interlock_state_t
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
   use interlock_ria, only: ria_step
@@ -43,9 +43,9 @@ contains
                 'the material has not been prepared (call interlock_material_prepare)')
       return
     end if
-    if (solver%scheme /= scheme_explicit .and. solver%scheme /= scheme_implicit) then
+    if (solver%scheme < scheme_explicit .or. solver%scheme > scheme_trapezoidal) then
       call fail(old, new, sigma, tangent, info, status_bad_input, &
-                'unknown integration scheme: admissible 1 (explicit) or 2 (implicit)')
+                'unknown integration scheme: admissible 1 (explicit), 2 (implicit) or 3 (trapezoidal)')
       return
     end if
     ! abs(x) <= huge is false for NaN and both infinities.

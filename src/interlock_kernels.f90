@@ -10,8 +10,8 @@
 !> the general path (interlock_ria) to round-off; a test checks it.
 module interlock_kernels
   use interlock_kinds, only: dp
-  use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_implicit, &
-      kernel_flat
+  use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_explicit, &
+      scheme_implicit, scheme_trapezoidal, kernel_flat
   use interlock_wear, only: worn_angle, worn_angle_slope, wear_root_t, wear_root_begin, &
       wear_root_update
   use interlock_state, only: interlock_state_t
@@ -25,7 +25,9 @@ module interlock_kernels
     real(dp) :: beta, dmg, sf, tauf, zeta
     real(dp) :: sig(2), k(2, 2)
     real(dp) :: psi, wdmg, wfric
-    real(dp) :: gw(2)   !< d wfric / d(s_kn, s_kt) at fixed start state (the implicit wear driver)
+    !> the wear driver of the coupled schemes, a_end wfric + g_start |sf - sf_o|, and its
+    !> derivative d/d(s_kn, s_kt) at fixed start state
+    real(dp) :: drv, gdrv(2)
   end type plane_law_t
 
 contains
@@ -68,7 +70,7 @@ contains
         if (.not. mat%plane_wears(k)) then
           call fixed_angle_plane(mat, scheme, k, mat%cos0(k), mat%sin0(k), &
                                  mat%gamma_hat(k) * area, s, old, new, sigma, tangent)
-        else if (scheme /= scheme_implicit) then
+        else if (scheme == scheme_explicit) then
           ! Explicit (eq. 25): the angle frozen at its stored value within the step.
           theta = old%theta(k)
           call fixed_angle_plane(mat, scheme, k, cos(theta), sin(theta), &
@@ -81,7 +83,7 @@ contains
           end if
         else
           theta = old%theta(k)
-          call implicit_wear_plane(mat, solver, k, s, old, p, theta, c, sn, sl, dthds, it, done)
+          call coupled_wear_plane(mat, solver, k, s, old, p, theta, c, sn, sl, dthds, it, done)
           iterations = max(iterations, it)
           if (.not. done) return
           gam = mat%gamma_hat(k) * area
@@ -218,8 +220,10 @@ contains
     wfric = d * abs(tauf) * slip
     if (scheme == scheme_implicit) then
       new%zeta(k) = old%zeta(k) + wfric
-    else
+    else if (scheme == scheme_explicit) then
       new%zeta(k) = old%zeta(k) + old%damage(k) * abs(old%tauf(k)) * slip
+    else
+      new%zeta(k) = old%zeta(k) + 0.5_dp * (wfric + old%damage(k) * abs(old%tauf(k)) * slip)
     end if
     wdmg = 0.0_dp
     if (d > old%damage(k)) wdmg = mat%decohesion_energy_factor * &
@@ -236,11 +240,12 @@ contains
     new%tauf(k) = tauf
   end subroutine fixed_angle_plane
 
-  !> A wearing plane with the implicit scheme (interlock_wear: the backward-Euler wear equation
+  !> A wearing plane with a scheme that couples the angle to the end of the step (interlock_wear:
+  !> the wear equation zeta = zeta_o + G(theta(zeta)) of the implicit or the trapezoidal scheme,
   !> solved by the safeguarded Newton iteration), in its own frame at the root's angle, and
-  !> d theta / d s by implicit differentiation: d zeta/d s = (grad g . R) / F'.
-  pure subroutine implicit_wear_plane(mat, solver, k, s, old, p, theta, c, sn, sl, dthds, &
-                                      iterations, ok)
+  !> d theta / d s by implicit differentiation: d zeta/d s = (grad G . R) / F'.
+  pure subroutine coupled_wear_plane(mat, solver, k, s, old, p, theta, c, sn, sl, dthds, &
+                                     iterations, ok)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     integer, intent(in) :: k
@@ -252,18 +257,25 @@ contains
     integer, intent(out) :: iterations
     logical, intent(out) :: ok
     type(wear_root_t) :: rt
-    real(dp) :: thp, fp
+    real(dp) :: thp, fp, a_end, g_start
+    ! The driver G = a_end D |tau_f| |d sf| + g_start |d sf| (interlock_schemes:plane_step).
+    a_end = 1.0_dp
+    g_start = 0.0_dp
+    if (solver%scheme == scheme_trapezoidal) then
+      a_end = 0.5_dp
+      g_start = 0.5_dp * old%damage(k) * abs(old%tauf(k))
+    end if
     ! At zeta_o the angle is the stored one: no exponential.
     thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), theta)
-    call wear_evaluate(mat, k, s, old, theta, thp, p, c, sn, sl, fp)
+    call wear_evaluate(mat, k, s, old, a_end, g_start, theta, thp, p, c, sn, sl, fp)
     iterations = 0
     ok = .true.
-    if (p%wfric > 0.0_dp) then
-      call wear_root_begin(rt, old%zeta(k), p%wfric)
+    if (p%drv > 0.0_dp) then
+      call wear_root_begin(rt, old%zeta(k), p%drv)
       do
         call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, thp)
-        call wear_evaluate(mat, k, s, old, theta, thp, p, c, sn, sl, fp)
-        call wear_root_update(rt, rt%x - old%zeta(k) - p%wfric, fp, solver%newton_tol, &
+        call wear_evaluate(mat, k, s, old, a_end, g_start, theta, thp, p, c, sn, sl, fp)
+        call wear_root_update(rt, rt%x - old%zeta(k) - p%drv, fp, solver%newton_tol, &
                               solver%newton_max_iterations)
         if (rt%done) exit
       end do
@@ -271,23 +283,23 @@ contains
       ok = rt%ok
       p%zeta = rt%x
     end if
-    dthds = thp * [p%gw(1) * c - p%gw(2) * sn, p%gw(1) * sn + p%gw(2) * c] / fp
-  end subroutine implicit_wear_plane
+    dthds = thp * [p%gdrv(1) * c - p%gdrv(2) * sn, p%gdrv(1) * sn + p%gdrv(2) * c] / fp
+  end subroutine coupled_wear_plane
 
-  !> The plane at angle theta (slope thp = d theta / d zeta) and F' = 1 - thp dg/d theta of its
-  !> wear equation, dg/d theta = grad g . (s_kt, -s_kn).
-  pure subroutine wear_evaluate(mat, k, s, old, theta, thp, p, c, sn, sl, fp)
+  !> The plane at angle theta (slope thp = d theta / d zeta) and F' = 1 - thp dG/d theta of its
+  !> wear equation, dG/d theta = grad G . (s_kt, -s_kn).
+  pure subroutine wear_evaluate(mat, k, s, old, a_end, g_start, theta, thp, p, c, sn, sl, fp)
     type(interlock_material_t), intent(in) :: mat
     integer, intent(in) :: k
-    real(dp), intent(in) :: s(2), theta, thp
+    real(dp), intent(in) :: s(2), a_end, g_start, theta, thp
     type(interlock_state_t), intent(in) :: old
     type(plane_law_t), intent(out) :: p
     real(dp), intent(out) :: c, sn, sl(2), fp
     c = cos(theta)
     sn = sin(theta)
     sl = [c * s(1) + sn * s(2), -sn * s(1) + c * s(2)]
-    call plane_law(mat, sl, old%beta(k), old%sf(k), old%zeta(k), old%damage(k), p)
-    fp = 1.0_dp - thp * (p%gw(1) * sl(2) - p%gw(2) * sl(1))
+    call plane_law(mat, sl, old%beta(k), old%sf(k), old%zeta(k), old%damage(k), a_end, g_start, p)
+    fp = 1.0_dp - thp * (p%gdrv(1) * sl(2) - p%gdrv(2) * sl(1))
   end subroutine wear_evaluate
 
   !> The plane's end-of-step state into `new`, and its share (weight g) of the energies.
@@ -308,10 +320,11 @@ contains
   end subroutine store_plane
 
   !> Damage, friction and traction of one plane in its own frame at a trial angle of the
-  !> implicit wear equation, with the gradient of the frictional work (the wear driver).
-  pure subroutine plane_law(mat, sl, beta_o, sf_o, zeta_o, dmg_o, p)
+  !> coupled wear equation, with the wear driver a_end D |tau_f| |d sf| + g_start |d sf| and
+  !> its gradient.
+  pure subroutine plane_law(mat, sl, beta_o, sf_o, zeta_o, dmg_o, a_end, g_start, p)
     type(interlock_material_t), intent(in) :: mat
-    real(dp), intent(in) :: sl(2), beta_o, sf_o, zeta_o, dmg_o
+    real(dp), intent(in) :: sl(2), beta_o, sf_o, zeta_o, dmg_o, a_end, g_start
     type(plane_law_t), intent(out) :: p
     real(dp) :: an, at, beq, rb, ddb, gd(2), dtau(2), mu_p, tau_trial, sgn, pos_n, neg_n, slip, &
                 dslip(2)
@@ -366,7 +379,9 @@ contains
       p%tauf = 0.0_dp
       dtau = 0.0_dp
       slip = abs(p%sf - sf_o)
+      ! (drives the trapezoidal wear through the start traction; the work itself is 0)
       dslip = 0.0_dp
+      if (slip > 0.0_dp) dslip(2) = sign(1.0_dp, p%sf - sf_o)
     end if
 
     ! Traction and its derivative (interlock_microplane).
@@ -386,10 +401,11 @@ contains
     ! Frictional work and energies (interlock_schemes): the decohesion part of Y dD exactly
     ! (interlock_damage:damage_dissipation_increment), the friction part at first order.
     p%wfric = p%dmg * abs(p%tauf) * slip
+    p%drv = a_end * p%wfric + g_start * slip
     ! grad of D |tau_f| slip; d|tau_f| = sign(tau_f) dtau (tau_f = 0 where it is free)
-    p%gw = abs(p%tauf) * slip * gd + p%dmg * slip * sign(1.0_dp, p%tauf) * dtau + &
-           p%dmg * abs(p%tauf) * dslip
-    p%zeta = zeta_o + p%wfric
+    p%gdrv = a_end * (abs(p%tauf) * slip * gd + p%dmg * slip * sign(1.0_dp, p%tauf) * dtau + &
+                      p%dmg * abs(p%tauf) * dslip) + g_start * dslip
+    p%zeta = zeta_o + p%drv
     ! psi = (1 - D) psi_e + D psi_f = (sig . s_k - D tau_f sf) / 2 (sl(2) - sf = tau_f / K_t).
     p%psi = 0.5_dp * (p%sig(1) * sl(1) + p%sig(2) * sl(2) - p%dmg * p%tauf * p%sf)
     p%wdmg = 0.0_dp

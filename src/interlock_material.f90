@@ -10,13 +10,15 @@ module interlock_material
   private
   public :: interlock_material_t, interlock_solver_t, max_planes
   public :: interlock_material_prepare, interlock_paper_ria
-  public :: scheme_explicit, scheme_implicit, scheme_name
+  public :: scheme_explicit, scheme_implicit, scheme_trapezoidal, scheme_name
   public :: effect_damage, effect_friction, effect_interlocking, effect_finite_depth, effect_wear
   public :: effect_names, n_effects
   public :: kernel_general, kernel_flat, kernel_inclined, kernel_cohesive
 
   integer, parameter :: max_planes = 8
-  integer, parameter :: scheme_explicit = 1, scheme_implicit = 2
+  !> Integration schemes (SPEC section 5, D11): the paper's explicit one, backward Euler, and
+  !> the trapezoidal rule on the wear equation (second order, consistent at a zero increment).
+  integer, parameter :: scheme_explicit = 1, scheme_implicit = 2, scheme_trapezoidal = 3
   integer, parameter :: n_effects = 5
   integer, parameter :: effect_damage = 1, effect_friction = 2, effect_interlocking = 3, &
                         effect_finite_depth = 4, effect_wear = 5
@@ -92,6 +94,8 @@ contains
       name = 'explicit'
     case (scheme_implicit)
       name = 'implicit'
+    case (scheme_trapezoidal)
+      name = 'trapezoidal'
     case default
       name = 'unknown'
     end select

@@ -5,7 +5,8 @@
 !> 6: also what substepping needs to chain sub-increments).
 module interlock_schemes
   use interlock_kinds, only: dp
-  use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_implicit
+  use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_explicit, &
+      scheme_trapezoidal
   use interlock_kinematics, only: to_local, to_global, dlocal_dtheta
   use interlock_damage, only: damage_of_beta, damage_dissipation_increment
   use interlock_microplane, only: local_t, microplane_update
@@ -39,24 +40,31 @@ contains
     type(plane_t), intent(out) :: p
     type(local_t) :: r
     real(dp) :: c, sn, sl(2), dthw(6), gz(6), dvdw(4, 6), dsl_dth(2), dz, ddo_db, dtmp, &
-                sig_th(2), thp, fp
+                sig_th(2), thp, fp, a_end, a_start, g_start, gdrv(4)
     integer :: j
+    logical :: coupled
 
     p%ok = .true.
     p%iterations = 0
     dthw = 0.0_dp
     gz = 0.0_dp
-    if (solver%scheme == scheme_implicit .and. mat%plane_wears(k)) then
-      call solve_wear(mat, solver, k, s, beta_o, sf_o, zeta_o, theta_o, r, p%zeta, p%theta, c, &
-                      sn, sl, thp, fp, p%iterations, p%ok)
+    ! The wear driver of the schemes that couple the angle to the end of the step:
+    ! zeta = zeta_o + a_end D |tau_f| |d sf| + a_start D_o |tauf_o| |d sf| (implicit: 1, 0;
+    ! trapezoidal: 1/2, 1/2), g_start = a_start D_o |tauf_o| (fixed within the step).
+    coupled = solver%scheme /= scheme_explicit
+    a_end = 1.0_dp
+    a_start = 0.0_dp
+    if (solver%scheme == scheme_trapezoidal) then
+      a_end = 0.5_dp
+      a_start = 0.5_dp
+    end if
+    g_start = a_start * dmg_o * abs(tauf_o)
+    thp = 0.0_dp
+    fp = 1.0_dp
+    if (coupled .and. mat%plane_wears(k)) then
+      call solve_wear(mat, solver, k, s, beta_o, sf_o, zeta_o, theta_o, a_end, g_start, r, &
+                      p%zeta, p%theta, c, sn, sl, thp, fp, p%iterations, p%ok)
       if (.not. p%ok) return
-      ! zeta = zeta_o + g(v(w, theta(zeta))): implicit differentiation.
-      gz(1:2) = matmul(r%gwdrv(1:2), rotation(c, sn)) / fp
-      if (ncol > 2) then
-        gz(3:4) = r%gwdrv(3:4) / fp
-        gz(5) = 1.0_dp / fp
-      end if
-      dthw(1:ncol) = thp * gz(1:ncol)
     else
       if (mat%plane_wears(k)) then
         p%theta = theta_o
@@ -69,13 +77,8 @@ contains
       end if
       call to_local(c, sn, s, sl)
       call microplane_update(mat, sl, beta_o, sf_o, mat%d_frozen, r)
-      if (solver%scheme == scheme_implicit) then
-        p%zeta = zeta_o + r%wdrv
-        gz(1:2) = matmul(r%gwdrv(1:2), rotation(c, sn))
-        if (ncol > 2) then
-          gz(3:4) = r%gwdrv(3:4)
-          gz(5) = 1.0_dp
-        end if
+      if (coupled) then
+        p%zeta = zeta_o + (a_end * r%wdrv + g_start * r%slip)
       else
         ! Explicit (eq. 25): theta frozen at its start value, zeta driven by the start traction.
         dz = dmg_o * abs(tauf_o) * r%slip
@@ -88,6 +91,24 @@ contains
           dthw(5) = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), theta_o)
         end if
       end if
+    end if
+    if (coupled) then
+      ! zeta = zeta_o + G(w, theta(zeta)): implicit differentiation, d zeta/d w = (dG/dw)/F'
+      ! (F' = 1 and thp = 0 where the angle is constant).
+      gdrv = a_end * r%gwdrv + g_start * r%gslip
+      gz(1:2) = matmul(gdrv(1:2), rotation(c, sn)) / fp
+      if (ncol > 2) then
+        gz(3:4) = gdrv(3:4)
+        if (a_start > 0.0_dp) then
+          ddo_db = 0.0_dp
+          if (mat%use_damage) call damage_of_beta(mat%eta, mat%beta_break, beta_o, dtmp, ddo_db)
+          gz(3) = gz(3) + a_start * abs(tauf_o) * r%slip * ddo_db
+          gz(6) = a_start * dmg_o * r%slip * sign(1.0_dp, tauf_o)
+        end if
+        gz(5) = 1.0_dp
+        gz(3:6) = gz(3:6) / fp
+      end if
+      dthw(1:ncol) = thp * gz(1:ncol)
     end if
 
     ! dv/dw = P + dv/dtheta (x) dtheta/dw, v = (s_kn, s_kt, beta_o, sf_o).
@@ -102,7 +123,7 @@ contains
       dvdw(1:2, j) = dvdw(1:2, j) + dsl_dth * dthw(j)
     end do
 
-    if (solver%scheme /= scheme_implicit) then
+    if (.not. coupled) then
       ! d zeta / d w for the explicit update zeta = zeta_o + D_o |tauf_o| |sf - sf_o|.
       gz = dmg_o * abs(tauf_o) * matmul(r%gslip, dvdw)
       if (ncol > 2) then
@@ -151,15 +172,17 @@ contains
     rot(2, :) = [-sn, c]
   end function rotation
 
-  !> Backward-Euler wear of one plane: F(zeta) = zeta - zeta_o - g(theta(zeta)) = 0, with
-  !> g = D |tau_f| |sf - sf_o| evaluated at the end of the step. F(zeta_o) = -g <= 0; the root
-  !> is bracketed from zeta_o upwards and found by Newton's method safeguarded by bisection.
-  pure subroutine solve_wear(mat, solver, k, s, beta_o, sf_o, zeta_o, theta_o, r, zeta, theta, &
-                             c, sn, sl, thp, fp, iterations, ok)
+  !> Coupled wear of one plane: F(zeta) = zeta - zeta_o - G(theta(zeta)) = 0, with the driver
+  !> G = a_end D |tau_f| |sf - sf_o| + g_start |sf - sf_o| evaluated at the end of the step
+  !> (backward Euler: a_end = 1, g_start = 0; trapezoidal: 1/2 and D_o |tauf_o| / 2).
+  !> F(zeta_o) = -G <= 0; the root is bracketed from zeta_o upwards and found by Newton's
+  !> method safeguarded by bisection.
+  pure subroutine solve_wear(mat, solver, k, s, beta_o, sf_o, zeta_o, theta_o, a_end, g_start, &
+                             r, zeta, theta, c, sn, sl, thp, fp, iterations, ok)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     integer, intent(in) :: k
-    real(dp), intent(in) :: s(2), beta_o, sf_o, zeta_o, theta_o
+    real(dp), intent(in) :: s(2), beta_o, sf_o, zeta_o, theta_o, a_end, g_start
     type(local_t), intent(out) :: r
     real(dp), intent(out) :: zeta, theta, c, sn, sl(2), thp, fp
     integer, intent(out) :: iterations
@@ -172,14 +195,14 @@ contains
     ! At zeta_o: theta = theta_o (stored), no exponential needed.
     theta = theta_o
     thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), theta_o)
-    call wear_residual(mat, k, s, beta_o, sf_o, zeta_o, zeta_o, .false., theta, thp, r, c, sn, sl, &
-                       f, fp)
+    call wear_residual(mat, k, s, beta_o, sf_o, zeta_o, a_end, g_start, zeta_o, .false., theta, &
+                       thp, r, c, sn, sl, f, fp)
     zeta = zeta_o
     if (.not. (-f > 0.0_dp)) return      ! no frictional work: zeta stays, F = 0 exactly
     call wear_root_begin(rt, zeta_o, -f)
     do
-      call wear_residual(mat, k, s, beta_o, sf_o, zeta_o, rt%x, .true., theta, thp, r, c, sn, sl, &
-                         f, fp)
+      call wear_residual(mat, k, s, beta_o, sf_o, zeta_o, a_end, g_start, rt%x, .true., theta, &
+                         thp, r, c, sn, sl, f, fp)
       call wear_root_update(rt, f, fp, solver%newton_tol, solver%newton_max_iterations)
       if (rt%done) exit
     end do
@@ -188,13 +211,13 @@ contains
     ok = rt%ok
   end subroutine solve_wear
 
-  !> F(z) = z - zeta_o - g(theta(z)) and F'(z) for plane k (theta and its slope kept as given
+  !> F(z) = z - zeta_o - G(theta(z)) and F'(z) for plane k (theta and its slope kept as given
   !> when `update_angle` is false: they are the start-of-step values).
-  pure subroutine wear_residual(mat, k, s, beta_o, sf_o, zeta_o, z, update_angle, theta, thp, r, &
-                                c, sn, sl, f, fp)
+  pure subroutine wear_residual(mat, k, s, beta_o, sf_o, zeta_o, a_end, g_start, z, update_angle, &
+                                theta, thp, r, c, sn, sl, f, fp)
     type(interlock_material_t), intent(in) :: mat
     integer, intent(in) :: k
-    real(dp), intent(in) :: s(2), beta_o, sf_o, zeta_o, z
+    real(dp), intent(in) :: s(2), beta_o, sf_o, zeta_o, a_end, g_start, z
     logical, intent(in) :: update_angle
     real(dp), intent(inout) :: theta, thp
     type(local_t), intent(out) :: r
@@ -205,8 +228,8 @@ contains
     sn = sin(theta)
     call to_local(c, sn, s, sl)
     call microplane_update(mat, sl, beta_o, sf_o, mat%d_frozen, r)
-    f = z - zeta_o - r%wdrv
-    fp = 1.0_dp - thp * dot_product(r%gwdrv(1:2), dlocal_dtheta(sl))
+    f = z - zeta_o - (a_end * r%wdrv + g_start * r%slip)
+    fp = 1.0_dp - thp * dot_product(a_end * r%gwdrv(1:2) + g_start * r%gslip(1:2), dlocal_dtheta(sl))
   end subroutine wear_residual
 
 end module interlock_schemes
