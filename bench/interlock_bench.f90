@@ -249,7 +249,7 @@ contains
   ! ------------------------------------------------------------------------------------------
 
   subroutine cost_study()
-    integer, parameter :: n_cfg = 2 * n_effect_sets + 2
+    integer, parameter :: n_cfg = 2 * n_effect_sets + 3
     type(interlock_material_t) :: mats(n_effect_sets)
     type(interlock_solver_t) :: solvers(n_cfg)
     integer, parameter :: floor_cfg = n_cfg + 1   !< the lower bound of the full model (time_floor)
@@ -276,18 +276,20 @@ contains
       end if
     end do
     ! Configurations: (set, explicit), (set, implicit) for every set, then the full model with
-    ! substepping at tol = 1e-3 for both schemes.
+    ! substepping at tol = 1e-3 for both schemes, then the full model with the trapezoidal
+    ! scheme (on the other sets it runs the implicit scheme's code).
     do c = 1, n_effect_sets
       cfg_set(2 * c - 1) = c
       cfg_set(2 * c) = c
       solvers(2 * c - 1)%scheme = scheme_explicit
       solvers(2 * c)%scheme = scheme_implicit
     end do
-    cfg_set(n_cfg - 1:n_cfg) = n_effect_sets
-    solvers(n_cfg - 1)%scheme = scheme_explicit
-    solvers(n_cfg)%scheme = scheme_implicit
+    cfg_set(n_cfg - 2:n_cfg) = n_effect_sets
+    solvers(n_cfg - 2)%scheme = scheme_explicit
+    solvers(n_cfg - 1)%scheme = scheme_implicit
+    solvers(n_cfg - 2)%substep_tol = 1.0e-3_dp
     solvers(n_cfg - 1)%substep_tol = 1.0e-3_dp
-    solvers(n_cfg)%substep_tol = 1.0e-3_dp
+    solvers(n_cfg)%scheme = scheme_trapezoidal
 
     ! The baseline must compute what the damage-only set computes (else the ratio means nothing).
     dev = baseline_deviation(mats(1), h)

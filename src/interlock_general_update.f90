@@ -165,11 +165,13 @@ contains
       ok1 = .true.
       it1 = 0
       if (control) call ria_step(mat, solver, s_end, cur, full, t_full, it1, ok1)
-      call ria_step(mat, solver, s_mid, cur, half1, t_half, it2, ok2, jac, alpha + 0.5_dp * h, jac1)
+      call ria_step(mat, solver, s_mid, cur, half1, t_half, it2, ok2, jac, alpha + 0.5_dp * h, jac1, &
+                    alpha)
       ok3 = .false.
       it3 = 0
       if (ok2) ok2 = bounded(jac1(:, :, 1:mat%n_planes))
-      if (ok2) call ria_step(mat, solver, s_end, half1, half2, t_half, it3, ok3, jac1, a_end, jac2)
+      if (ok2) call ria_step(mat, solver, s_end, half1, half2, t_half, it3, ok3, jac1, a_end, jac2, &
+                             alpha + 0.5_dp * h)
       if (ok3) ok3 = bounded(jac2(:, :, 1:mat%n_planes))
       info%newton_iterations = max(info%newton_iterations, it1, it2, it3)
       if (.not. (ok1 .and. ok2 .and. ok3)) then

@@ -206,7 +206,9 @@ contains
     else if (scheme == scheme_explicit) then
       new%zeta(1) = old%zeta(1) + old%damage(1) * abs(old%tauf(1)) * slip
     else
-      new%zeta(1) = old%zeta(1) + 0.5_dp * (work_fric + old%damage(1) * abs(old%tauf(1)) * slip)
+      ! (start value of the trapezoidal driver: interlock_kernels:start_yield, no depth here)
+      new%zeta(1) = old%zeta(1) + 0.5_dp * (work_fric + old%damage(1) * &
+                                            (mat%mu_eff * mat%kn * max(0.0_dp, -old%s(1))) * slip)
     end if
     new%damage(1) = d
     new%sf(1) = sf

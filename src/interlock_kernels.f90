@@ -18,7 +18,7 @@ module interlock_kernels
   use interlock_geometry, only: contact_area
   implicit none
   private
-  public :: kernel_step, share_first_plane
+  public :: kernel_step, share_first_plane, start_yield
 
   !> The law of one microplane in its own frame over one step, with d(traction)/d(s_kn, s_kt).
   type :: plane_law_t
@@ -223,7 +223,8 @@ contains
     else if (scheme == scheme_explicit) then
       new%zeta(k) = old%zeta(k) + old%damage(k) * abs(old%tauf(k)) * slip
     else
-      new%zeta(k) = old%zeta(k) + 0.5_dp * (wfric + old%damage(k) * abs(old%tauf(k)) * slip)
+      new%zeta(k) = old%zeta(k) + 0.5_dp * (wfric + old%damage(k) * start_yield(mat, c, sn, old%s) &
+                                                     * slip)
     end if
     wdmg = 0.0_dp
     if (d > old%damage(k)) wdmg = mat%decohesion_energy_factor * &
@@ -263,7 +264,7 @@ contains
     g_start = 0.0_dp
     if (solver%scheme == scheme_trapezoidal) then
       a_end = 0.5_dp
-      g_start = 0.5_dp * old%damage(k) * abs(old%tauf(k))
+      g_start = 0.5_dp * old%damage(k) * start_yield(mat, cos(theta), sin(theta), old%s)
     end if
     ! At zeta_o the angle is the stored one: no exponential.
     thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), theta)
@@ -413,6 +414,18 @@ contains
         (min(max(p%beta, 1.0_dp), mat%beta_break) - min(max(beta_o, 1.0_dp), mat%beta_break)) &
         - 0.5_dp * p%tauf**2 * mat%inv_kt * (p%dmg - dmg_o)
   end subroutine plane_law
+
+  !> mu p at the start of the step on the plane of frame (c, sn): the friction traction of the
+  !> damaged part where the slip of the step begins (|tauf_o| if it slid at the start; if it
+  !> stuck, the value at which it starts to slide, to first order), the trapezoidal scheme's
+  !> start value of the wear driver; 0 when the start state is separated (decision D7).
+  pure real(dp) function start_yield(mat, c, sn, s_o) result(mu_p)
+    type(interlock_material_t), intent(in) :: mat
+    real(dp), intent(in) :: c, sn, s_o(2)
+    mu_p = 0.0_dp
+    if (s_o(1) * mat%inv_h_n < 1.0_dp) &
+      mu_p = mat%mu_eff * mat%kn * max(0.0_dp, -(c * s_o(1) + sn * s_o(2)))
+  end function start_yield
 
   !> A flat RIA of several planes: planes 2..n take plane 1's history (their angles stay).
   pure subroutine share_first_plane(n, old, new)

@@ -19,7 +19,7 @@ contains
   !> d q_old,k / d s_end for q = (beta, sf, zeta, tauf); then `tangent` = d sigma / d s_end and
   !> `jac_out` = d q_new / d s_end, so that the chain over sub-increments stays exact.
   pure subroutine ria_step(mat, solver, s, old, new, tangent, iterations, ok, jac_in, alpha, &
-                           jac_out)
+                           jac_out, alpha_start)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     real(dp), intent(in) :: s(2)
@@ -30,8 +30,9 @@ contains
     logical, intent(out) :: ok
     real(dp), intent(in), optional :: jac_in(4, 2, max_planes), alpha
     real(dp), intent(out), optional :: jac_out(4, 2, max_planes)
+    real(dp), intent(in), optional :: alpha_start   !< fraction of the increment at `old`
     type(plane_t) :: p
-    real(dp) :: area, darea, gam, sigma(2), a
+    real(dp) :: area, darea, gam, sigma(2), a, so_ratio
     integer :: k, n_eval, ncol
     logical :: chain
 
@@ -39,6 +40,9 @@ contains
     ncol = merge(6, 2, chain)
     a = 1.0_dp
     if (present(alpha)) a = alpha
+    ! d s_o / d s_end = alpha_start, in the columns that ria_step scales by alpha
+    so_ratio = 0.0_dp
+    if (chain .and. present(alpha_start)) so_ratio = alpha_start / a
     new = old
     ok = .true.
     iterations = 0
@@ -69,8 +73,8 @@ contains
     else
       n_eval = merge(1, mat%n_planes, mat%flat)
       do k = 1, n_eval
-        call plane_step(mat, solver, k, s, old%beta(k), old%sf(k), old%zeta(k), old%tauf(k), &
-                        old%damage(k), old%theta(k), ncol, p)
+        call plane_step(mat, solver, k, s, old%s, so_ratio, old%beta(k), old%sf(k), old%zeta(k), &
+                        old%tauf(k), old%damage(k), old%theta(k), ncol, p)
         if (.not. p%ok) then
           ok = .false.
           return

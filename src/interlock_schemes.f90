@@ -31,16 +31,19 @@ module interlock_schemes
 
 contains
 
-  pure subroutine plane_step(mat, solver, k, s, beta_o, sf_o, zeta_o, tauf_o, dmg_o, theta_o, &
-                             ncol, p)
+  !> s_o: the separation at the start of the step (the trapezoidal scheme's start value of the
+  !> wear driver depends on it), so_ratio: d s_o / d s over the ratio by which ria_step scales
+  !> the columns d/ds (0 for one step; substepping: start over end fraction of the increment).
+  pure subroutine plane_step(mat, solver, k, s, s_o, so_ratio, beta_o, sf_o, zeta_o, tauf_o, &
+                             dmg_o, theta_o, ncol, p)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     integer, intent(in) :: k, ncol
-    real(dp), intent(in) :: s(2), beta_o, sf_o, zeta_o, tauf_o, dmg_o, theta_o
+    real(dp), intent(in) :: s(2), s_o(2), so_ratio, beta_o, sf_o, zeta_o, tauf_o, dmg_o, theta_o
     type(plane_t), intent(out) :: p
     type(local_t) :: r
     real(dp) :: c, sn, sl(2), dthw(6), gz(6), dvdw(4, 6), dsl_dth(2), dz, ddo_db, dtmp, &
-                sig_th(2), thp, fp, a_end, a_start, g_start, gdrv(4)
+                sig_th(2), thp, fp, a_end, a_start, g_start, gdrv(4), dgs(6)
     integer :: j
     logical :: coupled
 
@@ -49,16 +52,18 @@ contains
     dthw = 0.0_dp
     gz = 0.0_dp
     ! The wear driver of the schemes that couple the angle to the end of the step:
-    ! zeta = zeta_o + a_end D |tau_f| |d sf| + a_start D_o |tauf_o| |d sf| (implicit: 1, 0;
-    ! trapezoidal: 1/2, 1/2), g_start = a_start D_o |tauf_o| (fixed within the step).
+    ! zeta = zeta_o + a_end D |tau_f| |d sf| + g_start |d sf|, g_start = a_start D_o mu p_o
+    ! fixed within the step (implicit: a_end = 1, a_start = 0; trapezoidal: 1/2, 1/2).
     coupled = solver%scheme /= scheme_explicit
     a_end = 1.0_dp
     a_start = 0.0_dp
+    g_start = 0.0_dp
+    dgs = 0.0_dp
     if (solver%scheme == scheme_trapezoidal) then
       a_end = 0.5_dp
       a_start = 0.5_dp
+      call trapezoidal_start(mat, k, s_o, so_ratio, beta_o, dmg_o, theta_o, ncol, g_start, dgs)
     end if
-    g_start = a_start * dmg_o * abs(tauf_o)
     thp = 0.0_dp
     fp = 1.0_dp
     if (coupled .and. mat%plane_wears(k)) then
@@ -96,16 +101,11 @@ contains
       ! zeta = zeta_o + G(w, theta(zeta)): implicit differentiation, d zeta/d w = (dG/dw)/F'
       ! (F' = 1 and thp = 0 where the angle is constant).
       gdrv = a_end * r%gwdrv + g_start * r%gslip
-      gz(1:2) = matmul(gdrv(1:2), rotation(c, sn)) / fp
+      gz(1:2) = (matmul(gdrv(1:2), rotation(c, sn)) + r%slip * dgs(1:2)) / fp
       if (ncol > 2) then
-        gz(3:4) = gdrv(3:4)
-        if (a_start > 0.0_dp) then
-          ddo_db = 0.0_dp
-          if (mat%use_damage) call damage_of_beta(mat%eta, mat%beta_break, beta_o, dtmp, ddo_db)
-          gz(3) = gz(3) + a_start * abs(tauf_o) * r%slip * ddo_db
-          gz(6) = a_start * dmg_o * r%slip * sign(1.0_dp, tauf_o)
-        end if
-        gz(5) = 1.0_dp
+        gz(3:4) = gdrv(3:4) + r%slip * dgs(3:4)
+        gz(5) = 1.0_dp + r%slip * dgs(5)
+        gz(6) = r%slip * dgs(6)
         gz(3:6) = gz(3:6) / fp
       end if
       dthw(1:ncol) = thp * gz(1:ncol)
@@ -163,6 +163,40 @@ contains
         mat%kn * mat%s0n**2, beta_o, r%beta) - 0.5_dp * r%tauf**2 / mat%kt * (r%dmg - dmg_o)
     p%wfric = r%wdrv
   end subroutine plane_step
+
+  !> The trapezoidal scheme's start value of the wear driver, g_start = D_o mu p_o / 2 with p_o
+  !> the contact pressure of the start state (interlock_kernels:start_yield: where the slip of
+  !> the step begins, |tau_f| = mu p), and its gradient with respect to w (columns 1:2: with
+  !> respect to s_o, times so_ratio; theta_o = theta(zeta_o) for a wearing plane).
+  pure subroutine trapezoidal_start(mat, k, s_o, so_ratio, beta_o, dmg_o, theta_o, ncol, g, dg)
+    type(interlock_material_t), intent(in) :: mat
+    integer, intent(in) :: k, ncol
+    real(dp), intent(in) :: s_o(2), so_ratio, beta_o, dmg_o, theta_o
+    real(dp), intent(out) :: g, dg(6)
+    real(dp) :: c, sn, skn, kmu, d_tmp, dd_db
+    dg = 0.0_dp
+    if (mat%plane_wears(k)) then
+      c = cos(theta_o)
+      sn = sin(theta_o)
+    else
+      c = mat%cos0(k)
+      sn = mat%sin0(k)
+    end if
+    skn = c * s_o(1) + sn * s_o(2)
+    kmu = mat%mu_eff * mat%kn
+    g = 0.0_dp
+    if (.not. (s_o(1) * mat%inv_h_n < 1.0_dp .and. skn < 0.0_dp)) return
+    g = 0.5_dp * dmg_o * (kmu * max(0.0_dp, -skn))
+    dg(1:2) = -0.5_dp * dmg_o * kmu * so_ratio * [c, sn]
+    if (ncol > 2) then
+      dd_db = 0.0_dp
+      if (mat%use_damage) call damage_of_beta(mat%eta, mat%beta_break, beta_o, d_tmp, dd_db)
+      dg(3) = 0.5_dp * kmu * max(0.0_dp, -skn) * dd_db
+      ! d skn / d theta = s_kt of the start state
+      if (mat%plane_wears(k)) dg(5) = -0.5_dp * dmg_o * kmu * (-sn * s_o(1) + c * s_o(2)) * &
+          worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), theta_o)
+    end if
+  end subroutine trapezoidal_start
 
   !> R(theta) = [[c, s], [-s, c]]: d(s_kn, s_kt)/d(s_N, s_T).
   pure function rotation(c, sn) result(rot)
