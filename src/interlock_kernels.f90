@@ -28,6 +28,7 @@ module interlock_kernels
     !> the wear driver of the coupled schemes, a_end wfric + g_start |sf - sf_o|, and its
     !> derivative d/d(s_kn, s_kt) at fixed start state
     real(dp) :: drv, gdrv(2)
+    real(dp) :: slip    !< |sf - sf_o|
   end type plane_law_t
 
 contains
@@ -35,7 +36,9 @@ contains
   !> One increment with a specialised kernel. `done` is false when the kernel does not apply
   !> to this increment (a separated RIA, or an implicit wear equation the bounded iteration did
   !> not solve): the caller then takes the general path, which can also sub-increment.
-  pure subroutine kernel_step(mat, solver, s, old, new, tangent, done, iterations)
+  !> wear_error (a scheme that couples the angle to the end of the step): the embedded local
+  !> error estimate of substepping, as interlock_ria:ria_step computes it.
+  pure subroutine kernel_step(mat, solver, s, old, new, tangent, done, iterations, wear_error)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     real(dp), intent(in) :: s(2)
@@ -44,13 +47,16 @@ contains
     real(dp), intent(out) :: tangent(2, 2)
     logical, intent(out) :: done
     integer, intent(out) :: iterations
+    real(dp), intent(out), optional :: wear_error
     type(plane_law_t) :: p
     real(dp) :: area, darea, sigma(2), sl(2), c, sn, gam, kg(2, 2), sg(2), theta, slope, &
-                dthds(2), dsig_dth(2)
+                dthds(2), dsig_dth(2), err_angle, err_traction, e
     integer :: k, scheme, it
 
     scheme = solver%scheme
     iterations = 0
+    err_angle = 0.0_dp
+    err_traction = 0.0_dp
     area = 1.0_dp
     darea = 0.0_dp
     if (mat%use_depth) call contact_area(s(1), mat%inv_h_n, area, darea)
@@ -104,6 +110,14 @@ contains
           kg(:, 2) = kg(:, 2) + dsig_dth * dthds(2)
           sigma = sigma + gam * sg
           tangent = tangent + gam * kg
+          if (present(wear_error) .and. p%zeta > old%zeta(k)) then
+            ! (interlock_schemes:plane_step: backward Euler minus trapezoidal, as an angle)
+            e = abs(theta - old%theta(k)) * abs(0.5_dp * p%wfric - 0.5_dp * old%damage(k) * &
+                start_yield(mat, cos(old%theta(k)), sin(old%theta(k)), old%s) * p%slip) / &
+                (p%zeta - old%zeta(k))
+            err_angle = max(err_angle, e)
+            err_traction = max(err_traction, gam * maxval(abs(dsig_dth)) * e)
+          end if
           call store_plane(p, k, gam, theta, new)
         end if
       end do
@@ -113,6 +127,8 @@ contains
     new%s = s
     new%sigma = sigma
     new%work = old%work + 0.5_dp * dot_product(old%sigma + sigma, s - old%s)
+    if (present(wear_error)) wear_error = max(err_angle, err_traction / &
+        (max(mat%sigma0_n, mat%sigma0_t) + maxval(abs(sigma))))
   end subroutine kernel_step
 
   !> One plane whose angle is fixed within the step (constant, or frozen by the explicit
@@ -402,6 +418,7 @@ contains
     ! Frictional work and energies (interlock_schemes): the decohesion part of Y dD exactly
     ! (interlock_damage:damage_dissipation_increment), the friction part at first order.
     p%wfric = p%dmg * abs(p%tauf) * slip
+    p%slip = slip
     p%drv = a_end * p%wfric + g_start * slip
     ! grad of D |tau_f| slip; d|tau_f| = sign(tau_f) dtau (tau_f = 0 where it is free)
     p%gdrv = a_end * (abs(p%tauf) * slip * gd + p%dmg * slip * sign(1.0_dp, p%tauf) * dtau + &

@@ -25,6 +25,11 @@ module interlock_schemes
     real(dp) :: psi                !< stored energy density of the plane [N/mm]
     real(dp) :: wdmg               !< energy dissipated by damage in the step [N/mm]
     real(dp) :: wfric              !< frictional work in the step, D |tau_f| |d sf| [N/mm]
+    !> |theta_1 - theta_2| [rad] of the first-order (backward-Euler) and the second-order
+    !> (trapezoidal) wear increments of the step: the embedded local error estimate of
+    !> substepping (computed on request only; 0 for a plane that does not wear)
+    real(dp) :: wear_error
+    real(dp) :: dsig_dtheta(2)     !< d sig / d theta at fixed s (with wear_error)
     integer  :: iterations         !< Newton iterations of the wear equation
     logical  :: ok
   end type plane_t
@@ -34,21 +39,26 @@ contains
   !> s_o: the separation at the start of the step (the trapezoidal scheme's start value of the
   !> wear driver depends on it), so_ratio: d s_o / d s over the ratio by which ria_step scales
   !> the columns d/ds (0 for one step; substepping: start over end fraction of the increment).
+  !> estimate: compute p%wear_error and p%dsig_dtheta (substepping's error control).
   pure subroutine plane_step(mat, solver, k, s, s_o, so_ratio, beta_o, sf_o, zeta_o, tauf_o, &
-                             dmg_o, theta_o, ncol, p)
+                             dmg_o, theta_o, ncol, estimate, p)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     integer, intent(in) :: k, ncol
+    logical, intent(in) :: estimate
     real(dp), intent(in) :: s(2), s_o(2), so_ratio, beta_o, sf_o, zeta_o, tauf_o, dmg_o, theta_o
     type(plane_t), intent(out) :: p
     type(local_t) :: r
     real(dp) :: c, sn, sl(2), dthw(6), gz(6), dvdw(4, 6), dsl_dth(2), dz, ddo_db, dtmp, &
-                sig_th(2), thp, fp, a_end, a_start, g_start, gdrv(4), dgs(6)
+                sig_th(2), thp, fp, a_end, a_start, g_start, gdrv(4), dgs(6), gl(2)
     integer :: j
     logical :: coupled
 
     p%ok = .true.
     p%iterations = 0
+    p%wear_error = 0.0_dp
+    p%dsig_dtheta = 0.0_dp
+    dz = 0.0_dp
     dthw = 0.0_dp
     gz = 0.0_dp
     ! The wear driver of the schemes that couple the angle to the end of the step:
@@ -135,6 +145,24 @@ contains
       end if
     end if
 
+    if (estimate .and. mat%plane_wears(k)) then
+      if (coupled) then
+        ! Backward Euler minus trapezoidal, (D |tau_f| - D_o mu p_o) |d sf| / 2, as an angle
+        ! through the secant d theta / d zeta of the step (the tangent vanishes where the plane
+        ! wears out within the step).
+        if (solver%scheme /= scheme_trapezoidal) call trapezoidal_start(mat, k, s_o, 0.0_dp, &
+            beta_o, dmg_o, theta_o, 2, g_start, dgs)
+        if (p%zeta > zeta_o) p%wear_error = abs(p%theta - theta_o) * &
+            abs(0.5_dp * r%wdrv - g_start * r%slip) / (p%zeta - zeta_o)
+      else
+        ! Explicit: the traction is taken at the angle of the start, the error is first order
+        ! in the angle increment itself (decision D10), and in the difference from the
+        ! backward-Euler increment (which sees wear that the start traction does not drive).
+        p%wear_error = max(abs(p%theta - theta_o), min(abs(theta_o - mat%thetaf_eff(k)), &
+            abs(worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), theta_o) * (r%wdrv - dz))))
+      end if
+    end if
+
     p%beta = r%beta
     p%dmg = r%dmg
     p%sf = r%sf
@@ -148,10 +176,17 @@ contains
     call to_global(c, sn, r%sig, p%sig)
     ! d(R^T)/dtheta sigma_loc
     sig_th = [-sn * r%sig(1) - c * r%sig(2), c * r%sig(1) - sn * r%sig(2)]
-    p%gsig = matmul(transpose(rotation(c, sn)), matmul(r%gsig, dvdw))
+    ! R^T (d sigma_loc/d v) (dv/dw) + d(R^T)/dtheta sigma_loc dtheta/dw, column by column (a
+    ! matmul of a transpose here put a temporary on the heap in every call)
+    p%gsig = 0.0_dp
     do j = 1, ncol
-      p%gsig(:, j) = p%gsig(:, j) + sig_th * dthw(j)
+      gl = matmul(r%gsig, dvdw(:, j))
+      p%gsig(:, j) = [c * gl(1) - sn * gl(2), sn * gl(1) + c * gl(2)] + sig_th * dthw(j)
     end do
+    if (estimate .and. mat%plane_wears(k)) then
+      gl = matmul(r%gsig(:, 1:2), dsl_dth)
+      p%dsig_dtheta = [c * gl(1) - sn * gl(2), sn * gl(1) + c * gl(2)] + sig_th
+    end if
 
     ! Energies (stored energy of eq. 21 per unit plane area).
     p%psi = 0.5_dp * ((1.0_dp - r%dmg) * (mat%kn * sl(1)**2 + mat%kt * sl(2)**2) + &

@@ -166,9 +166,9 @@ contains
     case default
       solver%scheme = scheme_trapezoidal
     end select
-    ! (the second-order scheme meets 1e-4 on the wear scene's step at once: a tighter tolerance
-    ! makes it chain sub-increments too)
-    solver%substep_tol = merge(merge(1.0e-2_dp, 1.0_dp, is == 6) * substep_tol, 0.0_dp, is > 3)
+    ! (the coupled schemes meet 1e-4 on the wear scene's step at once: a tighter tolerance makes
+    ! them chain sub-increments too)
+    solver%substep_tol = merge(merge(1.0e-2_dp, 1.0_dp, is >= 5) * substep_tol, 0.0_dp, is > 3)
   end subroutine make_solver
 
   !> One row of the table: every scheme on branch ib.
