@@ -67,7 +67,8 @@ contains
         call kernel_step(mat, solver, s, old, new, tangent, done, info%newton_iterations, err)
         if (done .and. err > solver%substep_tol) then
           done = .false.
-          h_first = scale(1.0_dp, exponent(max(0.1_dp, 0.9_dp * sqrt(solver%substep_tol / err))) - 1)
+          h_first = max(0.1_dp, 0.9_dp * sqrt(solver%substep_tol / err))
+          h_first = scale(1.0_dp, exponent(h_first) - 1)
         end if
       end if
       if (.not. done) call substep(mat, solver, s, old, new, tangent, info, solver%substep_tol, &

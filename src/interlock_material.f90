@@ -77,7 +77,9 @@ module interlock_material
 
   !> How an update integrates.
   type :: interlock_solver_t
-    integer  :: scheme = scheme_explicit
+    !> the default: consistent at a zero increment (SPEC D10) and the cheapest per accuracy on
+    !> the paper's wear scenes (docs/bench.md); scheme_explicit is the paper's
+    integer  :: scheme = scheme_trapezoidal
     real(dp) :: substep_tol = 0.0_dp      !< local error tolerance; 0: no substepping
     real(dp) :: newton_tol = 1.0e-13_dp   !< relative residual of the per-plane wear equation
     integer  :: newton_max_iterations = 60

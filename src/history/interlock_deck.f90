@@ -980,7 +980,7 @@ contains
     character(len=:), allocatable :: probe
     integer :: kp
     namelist /solver/ scheme, substep_tol, newton_tol, newton_max_iterations, max_cuts, extrapolate
-    scheme = 'explicit'
+    scheme = 'trapezoidal'
     substep_tol = 0.0_dp
     newton_tol = deck%control%tol
     newton_max_iterations = deck%control%max_iterations
