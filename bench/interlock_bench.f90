@@ -249,7 +249,7 @@ contains
   ! ------------------------------------------------------------------------------------------
 
   subroutine cost_study()
-    integer, parameter :: n_cfg = 2 * n_effect_sets + 4
+    integer, parameter :: n_cfg = 2 * n_effect_sets + 5
     type(interlock_material_t) :: mats(n_effect_sets)
     type(interlock_solver_t) :: solvers(n_cfg)
     integer, parameter :: floor_cfg = n_cfg + 1   !< the lower bound of the full model (time_floor)
@@ -277,20 +277,22 @@ contains
     end do
     ! Configurations: (set, explicit), (set, implicit) for every set, then the full model with
     ! substepping at tol = 1e-3 for both schemes, then the full model with the trapezoidal
-    ! scheme (on the other sets it runs the implicit scheme's code), plain and substepped.
+    ! scheme (on the other sets it runs the implicit scheme's code), plain and substepped at
+    ! 1e-3 (where one sub-increment is enough) and at 1e-6 (where the increments are split).
     do c = 1, n_effect_sets
       cfg_set(2 * c - 1) = c
       cfg_set(2 * c) = c
       solvers(2 * c - 1)%scheme = scheme_explicit
       solvers(2 * c)%scheme = scheme_implicit
     end do
-    cfg_set(n_cfg - 3:n_cfg) = n_effect_sets
-    solvers(n_cfg - 3)%scheme = scheme_explicit
-    solvers(n_cfg - 2)%scheme = scheme_implicit
+    cfg_set(n_cfg - 4:n_cfg) = n_effect_sets
+    solvers(n_cfg - 4)%scheme = scheme_explicit
+    solvers(n_cfg - 3)%scheme = scheme_implicit
+    solvers(n_cfg - 4)%substep_tol = 1.0e-3_dp
     solvers(n_cfg - 3)%substep_tol = 1.0e-3_dp
-    solvers(n_cfg - 2)%substep_tol = 1.0e-3_dp
-    solvers(n_cfg - 1:n_cfg)%scheme = scheme_trapezoidal
-    solvers(n_cfg)%substep_tol = 1.0e-3_dp
+    solvers(n_cfg - 2:n_cfg)%scheme = scheme_trapezoidal
+    solvers(n_cfg - 1)%substep_tol = 1.0e-3_dp
+    solvers(n_cfg)%substep_tol = 1.0e-6_dp
 
     ! The baseline must compute what the damage-only set computes (else the ratio means nothing).
     dev = baseline_deviation(mats(1), h)
@@ -382,9 +384,11 @@ contains
     ! sub-increments) against the plain update of the same scheme on the same histories.
     write (output_unit, '(a)') 'substepping, cost per sub-increment / plain update of the ' // &
       'scheme (target <= 2): explicit ' // &
-      fmt_ratio(ns(n_cfg - 3) / subs(n_cfg - 3) / ns(2 * n_effect_sets - 1)) // ', implicit ' // &
-      fmt_ratio(ns(n_cfg - 2) / subs(n_cfg - 2) / ns(2 * n_effect_sets)) // ', trapezoidal ' // &
-      fmt_ratio(ns(n_cfg) / subs(n_cfg) / ns(n_cfg - 1))
+      fmt_ratio(ns(n_cfg - 4) / subs(n_cfg - 4) / ns(2 * n_effect_sets - 1)) // ', implicit ' // &
+      fmt_ratio(ns(n_cfg - 3) / subs(n_cfg - 3) / ns(2 * n_effect_sets)) // ', trapezoidal ' // &
+      fmt_ratio(ns(n_cfg - 1) / subs(n_cfg - 1) / ns(n_cfg - 2)) // ' (at 1e-6, ' // &
+      fmt_ratio(subs(n_cfg)) // ' sub-increments per update: ' // &
+      fmt_ratio(ns(n_cfg) / subs(n_cfg) / ns(n_cfg - 2)) // ')'
   end subroutine cost_study
 
   !> Store the time of one repetition (per pass); rep 0 (warm-up) sets the passes per repetition.

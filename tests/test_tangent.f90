@@ -7,7 +7,7 @@ module test_tangent
   use interlock
   use interlock_assert, only: assert_true
   use test_core_support, only: table1_material, table2_material, drive_to, solve_sigma_n, &
-      fd_tangent, matrix_rel_error, prepare_or_fail, rng_t, rng_uniform
+      fd_tangent, matrix_rel_error, prepare_or_fail, rng_t, rng_uniform, nth_scheme
   use, intrinsic :: iso_fortran_env, only: output_unit
   implicit none
   private
@@ -158,14 +158,7 @@ contains
   subroutine make_solver(is, solver)
     integer, intent(in) :: is
     type(interlock_solver_t), intent(out) :: solver
-    select case (mod(is - 1, 3))
-    case (0)
-      solver%scheme = scheme_explicit
-    case (1)
-      solver%scheme = scheme_implicit
-    case default
-      solver%scheme = scheme_trapezoidal
-    end select
+    solver%scheme = nth_scheme(is)
     ! (the coupled schemes meet 1e-4 on the wear scene's step at once: a tighter tolerance makes
     ! them chain sub-increments too)
     solver%substep_tol = merge(merge(1.0e-2_dp, 1.0_dp, is >= 5) * substep_tol, 0.0_dp, is > 3)
