@@ -65,7 +65,8 @@ contains
       h_first = 1.0_dp
       if (mat%kernel /= kernel_general .and. solver%scheme /= scheme_explicit) then
         call kernel_step(mat, solver, s, old, new, tangent, done, info%newton_iterations, err)
-        if (done .and. err > solver%substep_tol) then
+        if (.not. done) err = 0.0_dp
+        if (err > solver%substep_tol) then
           done = .false.
           h_first = max(0.1_dp, 0.9_dp * sqrt(solver%substep_tol / err))
           h_first = scale(1.0_dp, exponent(h_first) - 1)

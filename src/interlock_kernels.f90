@@ -57,6 +57,7 @@ contains
     iterations = 0
     err_angle = 0.0_dp
     err_traction = 0.0_dp
+    if (present(wear_error)) wear_error = 0.0_dp
     area = 1.0_dp
     darea = 0.0_dp
     if (mat%use_depth) call contact_area(s(1), mat%inv_h_n, area, darea)
