@@ -50,7 +50,7 @@ contains
     real(dp), intent(out), optional :: wear_error
     type(plane_law_t) :: p
     real(dp) :: area, darea, sigma(2), sl(2), c, sn, gam, kg(2, 2), sg(2), theta, slope, &
-                dthds(2), dsig_dth(2), err_angle, err_traction, e
+                dthds(2), dsig_dth(2), err_angle, err_traction, e, a_end, g_slip
     integer :: k, scheme, it
 
     scheme = solver%scheme
@@ -70,18 +70,21 @@ contains
     tangent = 0.0_dp
     if (mat%kernel == kernel_flat) then
       ! Every plane flat: one computed, in the global frame, the others share its history.
-      call fixed_angle_plane(mat, scheme, 1, 1.0_dp, 0.0_dp, area, s, old, new, sigma, tangent)
+      call wear_weights(mat, scheme, 1, 1.0_dp, 0.0_dp, old, a_end, g_slip)
+      call fixed_angle_plane(mat, a_end, g_slip, 1, 1.0_dp, 0.0_dp, area, s, old, new, sigma, &
+                             tangent)
       if (mat%n_planes > 1) call share_first_plane(mat%n_planes, old, new)
     else
       do k = 1, mat%n_planes
         if (.not. mat%plane_wears(k)) then
-          call fixed_angle_plane(mat, scheme, k, mat%cos0(k), mat%sin0(k), &
+          call wear_weights(mat, scheme, k, mat%cos0(k), mat%sin0(k), old, a_end, g_slip)
+          call fixed_angle_plane(mat, a_end, g_slip, k, mat%cos0(k), mat%sin0(k), &
                                  mat%gamma_hat(k) * area, s, old, new, sigma, tangent)
         else if (scheme == scheme_explicit) then
           ! Explicit (eq. 25): the angle frozen at its stored value within the step.
           theta = old%theta(k)
-          call fixed_angle_plane(mat, scheme, k, cos(theta), sin(theta), &
-                                 mat%gamma_hat(k) * area, s, old, new, sigma, tangent)
+          call fixed_angle_plane(mat, 0.0_dp, old%damage(k) * abs(old%tauf(k)), k, cos(theta), &
+                                 sin(theta), mat%gamma_hat(k) * area, s, old, new, sigma, tangent)
           ! Explicit wear (eq. 22, 25): the angle for the next step.
           if (new%zeta(k) > old%zeta(k)) then
             call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), new%zeta(k), &
@@ -143,9 +146,10 @@ contains
   !> places, and calls in these paths cost much of an update (interlock-bench, with the damage
   !> growth and this plane as calls from the flat-plane laws: damage only 7.9 -> 9.2 ns,
   !> damage + friction 10.5 -> 19 ns). core_kernels holds all of them to the general path.
-  pure subroutine fixed_angle_plane(mat, scheme, k, c, sn, w, s, old, new, sigma, tangent)
+  pure subroutine fixed_angle_plane(mat, a_end, g_slip, k, c, sn, w, s, old, new, sigma, tangent)
     type(interlock_material_t), intent(in) :: mat
-    integer, intent(in) :: scheme, k
+    real(dp), intent(in) :: a_end, g_slip   !< the wear driver a_end D |tau_f| |d sf| + g_slip |d sf|
+    integer, intent(in) :: k
     real(dp), intent(in) :: c, sn, w, s(2)
     type(interlock_state_t), intent(in) :: old
     type(interlock_state_t), intent(inout) :: new
@@ -235,14 +239,7 @@ contains
     ! Frictional work (decision D4), the wear driver of each scheme, the energies (the
     ! decohesion part of Y dD exactly, interlock_damage:damage_dissipation_increment).
     wfric = d * abs(tauf) * slip
-    if (scheme == scheme_implicit) then
-      new%zeta(k) = old%zeta(k) + wfric
-    else if (scheme == scheme_explicit) then
-      new%zeta(k) = old%zeta(k) + old%damage(k) * abs(old%tauf(k)) * slip
-    else
-      new%zeta(k) = old%zeta(k) + 0.5_dp * (wfric + old%damage(k) * start_yield(mat, c, sn, old%s) &
-                                                     * slip)
-    end if
+    new%zeta(k) = old%zeta(k) + (a_end * wfric + g_slip * slip)
     wdmg = 0.0_dp
     if (d > old%damage(k)) wdmg = mat%decohesion_energy_factor * &
         (min(max(beta, 1.0_dp), mat%beta_break) - min(max(old%beta(k), 1.0_dp), mat%beta_break)) &
@@ -432,6 +429,27 @@ contains
         (min(max(p%beta, 1.0_dp), mat%beta_break) - min(max(beta_o, 1.0_dp), mat%beta_break)) &
         - 0.5_dp * p%tauf**2 * mat%inv_kt * (p%dmg - dmg_o)
   end subroutine plane_law
+
+  !> The weights of a plane's wear driver zeta - zeta_o = a_end D |tau_f| |d sf| + g_slip |d sf|
+  !> in each scheme (interlock_schemes:plane_step): explicit 0 and D_o |tauf_o| (eq. 25),
+  !> implicit 1 and 0, trapezoidal 1/2 and D_o mu p_o / 2.
+  pure subroutine wear_weights(mat, scheme, k, c, sn, old, a_end, g_slip)
+    type(interlock_material_t), intent(in) :: mat
+    integer, intent(in) :: scheme, k
+    real(dp), intent(in) :: c, sn
+    type(interlock_state_t), intent(in) :: old
+    real(dp), intent(out) :: a_end, g_slip
+    if (scheme == scheme_explicit) then
+      a_end = 0.0_dp
+      g_slip = old%damage(k) * abs(old%tauf(k))
+    else if (scheme == scheme_implicit) then
+      a_end = 1.0_dp
+      g_slip = 0.0_dp
+    else
+      a_end = 0.5_dp
+      g_slip = 0.5_dp * old%damage(k) * start_yield(mat, c, sn, old%s)
+    end if
+  end subroutine wear_weights
 
   !> mu p at the start of the step on the plane of frame (c, sn): the friction traction of the
   !> damaged part where the slip of the step begins (|tauf_o| if it slid at the start; if it
