@@ -16,8 +16,8 @@ program interlock_bench
   use interlock_cli, only: exit_program
   use interlock, only: dp, max_planes, interlock_material_t, interlock_solver_t, interlock_state_t, &
       interlock_info_t, interlock_update, interlock_state_init, scheme_explicit, scheme_implicit, &
-      scheme_name, status_ok, interlock_version_string, n_properties, props_to_material, &
-      umat_controls_t
+      scheme_trapezoidal, scheme_name, status_ok, interlock_version_string, n_properties, &
+      props_to_material, umat_controls_t
   use interlock_bench_bilinear, only: bilinear_t, bilinear_state_t, bilinear_setup, bilinear_update
   use interlock_bench_scenes, only: scene_t, make_scene, run_scene, slip_at, n_effect_sets, &
       effect_set_names, make_effect_set, make_histories
@@ -129,8 +129,8 @@ contains
           call usage('--profile: SET is 0 (bilinear) .. 5 (full model)')
         call get_command_argument(i + 2, val)
         read (val, *, iostat=ios) profile_scheme
-        if (ios /= 0 .or. (profile_scheme /= scheme_explicit .and. profile_scheme /= scheme_implicit)) &
-          call usage('--profile: SCHEME is 1 (explicit) or 2 (implicit)')
+        if (ios /= 0 .or. profile_scheme < scheme_explicit .or. profile_scheme > scheme_trapezoidal) &
+          call usage('--profile: SCHEME is 1 (explicit), 2 (implicit) or 3 (trapezoidal)')
         call get_command_argument(i + 3, val)
         read (val, *, iostat=ios) profile_passes
         if (ios /= 0 .or. profile_passes < 1) call usage('--profile: PASSES must be positive')
@@ -234,8 +234,10 @@ contains
       solver%scheme = scheme_explicit
     case ('implicit')
       solver%scheme = scheme_implicit
+    case ('trapezoidal')
+      solver%scheme = scheme_trapezoidal
     case default
-      call usage('--history: SCHEME must be explicit or implicit')
+      call usage('--history: SCHEME must be explicit, implicit or trapezoidal')
     end select
     solver%substep_tol = dump_tol
     allocate (sn(0:dump_steps), st(0:dump_steps))
@@ -296,7 +298,7 @@ contains
   ! ------------------------------------------------------------------------------------------
 
   subroutine cost_study()
-    integer, parameter :: n_cfg = 2 * n_effect_sets + 2
+    integer, parameter :: n_cfg = 2 * n_effect_sets + 5
     type(interlock_material_t) :: mats(n_effect_sets)
     type(interlock_solver_t) :: solvers(n_cfg)
     integer, parameter :: floor_cfg = n_cfg + 1   !< the lower bound of the full model (time_floor)
@@ -324,18 +326,23 @@ contains
       end if
     end do
     ! Configurations: (set, explicit), (set, implicit) for every set, then the full model with
-    ! substepping at tol = 1e-3 for both schemes.
+    ! substepping at tol = 1e-3 for both schemes, then the full model with the trapezoidal
+    ! scheme (on the other sets it runs the implicit scheme's code), plain and substepped at
+    ! 1e-3 (where one sub-increment is enough) and at 1e-6 (where the increments are split).
     do c = 1, n_effect_sets
       cfg_set(2 * c - 1) = c
       cfg_set(2 * c) = c
       solvers(2 * c - 1)%scheme = scheme_explicit
       solvers(2 * c)%scheme = scheme_implicit
     end do
-    cfg_set(n_cfg - 1:n_cfg) = n_effect_sets
-    solvers(n_cfg - 1)%scheme = scheme_explicit
-    solvers(n_cfg)%scheme = scheme_implicit
+    cfg_set(n_cfg - 4:n_cfg) = n_effect_sets
+    solvers(n_cfg - 4)%scheme = scheme_explicit
+    solvers(n_cfg - 3)%scheme = scheme_implicit
+    solvers(n_cfg - 4)%substep_tol = 1.0e-3_dp
+    solvers(n_cfg - 3)%substep_tol = 1.0e-3_dp
+    solvers(n_cfg - 2:n_cfg)%scheme = scheme_trapezoidal
     solvers(n_cfg - 1)%substep_tol = 1.0e-3_dp
-    solvers(n_cfg)%substep_tol = 1.0e-3_dp
+    solvers(n_cfg)%substep_tol = 1.0e-6_dp
 
     ! The baseline must compute what the damage-only set computes (else the ratio means nothing).
     dev = baseline_deviation(mats(1), h)
@@ -425,6 +432,15 @@ contains
       fmt_ratio(ns(2 * n_effect_sets - 1) / ns(0)) // '; its floor alone ' // &
       fmt_ratio(ns(floor_cfg) / ns(0)) // ')'
     call report_umat_rows(um, ns(0), calls)
+    ! Substepping: the cost of one sub-increment (time per update over the mean number of
+    ! sub-increments) against the plain update of the same scheme on the same histories.
+    write (output_unit, '(a)') 'substepping, cost per sub-increment / plain update of the ' // &
+      'scheme (target <= 2): explicit ' // &
+      fmt_ratio(ns(n_cfg - 4) / subs(n_cfg - 4) / ns(2 * n_effect_sets - 1)) // ', implicit ' // &
+      fmt_ratio(ns(n_cfg - 3) / subs(n_cfg - 3) / ns(2 * n_effect_sets)) // ', trapezoidal ' // &
+      fmt_ratio(ns(n_cfg - 1) / subs(n_cfg - 1) / ns(n_cfg - 2)) // ' (at 1e-6, ' // &
+      fmt_ratio(subs(n_cfg)) // ' sub-increments per update: ' // &
+      fmt_ratio(ns(n_cfg) / subs(n_cfg) / ns(n_cfg - 2)) // ')'
   end subroutine cost_study
 
   !> One repetition of the UMAT rows (interleaved with the others in cost_study): for every
@@ -730,7 +746,7 @@ contains
   ! ------------------------------------------------------------------------------------------
 
   subroutine precision_study()
-    real(dp), allocatable :: tols_explicit(:), tols_implicit(:)
+    real(dp), allocatable :: tols_explicit(:), tols_implicit(:), tols_trapezoidal(:)
     integer :: jmax, ref_shift, n_cfg, is, c, j, n_grid, n, u, ur, us
     integer :: updates, max_newton, runs
     type(scene_t) :: sc
@@ -757,6 +773,7 @@ contains
       ref_shift = 4
       tols_explicit = [0.0_dp, 1.0e-2_dp]
       tols_implicit = [0.0_dp, 1.0e-2_dp]
+      tols_trapezoidal = [0.0_dp, 1.0e-3_dp]
       min_time = 0.0_dp
     else
       jmax = 10
@@ -764,12 +781,13 @@ contains
       ! (explicit substepping at 1e-5 costs ~10 s per run for no gain: left out)
       tols_explicit = [0.0_dp, 1.0e-2_dp, 1.0e-3_dp, 1.0e-4_dp]
       tols_implicit = [0.0_dp, 1.0e-2_dp, 1.0e-3_dp, 1.0e-4_dp, 1.0e-5_dp]
+      tols_trapezoidal = [0.0_dp, 1.0e-3_dp, 1.0e-4_dp, 1.0e-5_dp]
       min_time = 0.05_dp
     end if
     ! Configurations run: each scheme with uniform steps and with substepping; then two
     ! derived ones: global Richardson extrapolation 2 u(2n) - u(n) of the uniform-step runs of
     ! each scheme (the runs at n and 2n are both timed: its cost is their sum).
-    n_cfg = size(tols_explicit) + size(tols_implicit)
+    n_cfg = size(tols_explicit) + size(tols_implicit) + size(tols_trapezoidal)
     n_all = n_cfg + 2
     allocate (solvers(n_cfg), err(0:jmax, n_all), cpu(0:jmax, n_all), okr(0:jmax, n_all), &
               labels(n_all), tol_names(n_all), scheme_of(n_all))
@@ -777,9 +795,12 @@ contains
       if (c <= size(tols_explicit)) then     ! configuration 1 is the paper's: explicit, uniform
         solvers(c)%scheme = scheme_explicit
         solvers(c)%substep_tol = tols_explicit(c)
-      else
+      else if (c <= size(tols_explicit) + size(tols_implicit)) then
         solvers(c)%scheme = scheme_implicit
         solvers(c)%substep_tol = tols_implicit(c - size(tols_explicit))
+      else
+        solvers(c)%scheme = scheme_trapezoidal
+        solvers(c)%substep_tol = tols_trapezoidal(c - size(tols_explicit) - size(tols_implicit))
       end if
       scheme_of(c) = solvers(c)%scheme
       tol_names(c) = fmt_tol(solvers(c)%substep_tol)
@@ -835,8 +856,9 @@ contains
       do c = 1, n_cfg
         label = labels(c)
         cr = 0
-        if (.not. solvers(c)%substep_tol > 0.0_dp) cr = n_cfg + merge(1, 2, &
-          solvers(c)%scheme == scheme_explicit)
+        ! (Richardson's 2 u(2n) - u(n) is for the first-order schemes)
+        if (.not. solvers(c)%substep_tol > 0.0_dp .and. solvers(c)%scheme /= scheme_trapezoidal) &
+          cr = n_cfg + merge(1, 2, solvers(c)%scheme == scheme_explicit)
         do j = 0, jmax
           n = sc%base_steps * 2**j
           allocate (sn(0:n), st(0:n))

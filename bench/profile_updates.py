@@ -5,10 +5,10 @@ usage: /usr/bin/python3 bench/profile_updates.py BENCH [--passes 10] [--top 8]
            [CONFIG ...]
 BENCH is the interlock-bench executable (Release build). CONFIG is SET:SCHEME[:TOL] as for
 `interlock-bench --profile SET SCHEME PASSES [TOL]` (SET 0 = bilinear baseline, 1..5 = damage,
-+friction, +interlocking, +finite depth, +wear; SCHEME 1 = explicit, 2 = implicit); a leading
-`u` (u5:1) profiles the same set through the external UMAT (`--profile ... --umat`), a leading
-`f` (f5:1) the floor of the UMAT's overhead (`--umat-floor`); default: the configurations of
-docs/bench.md.
++friction, +interlocking, +finite depth, +wear; SCHEME 1 = explicit, 2 = implicit, 3 =
+trapezoidal); a leading `u` (u5:1) profiles the same set through the external UMAT
+(`--profile ... --umat`), a leading `f` (f5:1) the floor of the UMAT's overhead
+(`--umat-floor`); default: the configurations of docs/bench.md.
 
 valgrind runs with --toggle-collect on interlock_update (bilinear_update for SET 0, the external
 UMAT or the floor's call for u and f), so the set-up (histories, material, start-up, output) is
@@ -103,7 +103,8 @@ def profile(bench, cfg, passes, top):
             name = short(what)
             # libm splits sincos/exp over several source files: merge them
             self_costs[name] = self_costs.get(name, 0) + n
-    label = NAMES[st] + ("" if st == 0 else ", " + ("explicit" if scheme == 1 else "implicit"))
+    label = NAMES[st] + ("" if st == 0 else ", " + {1: "explicit", 2: "implicit"}.get(scheme,
+                                                                                      "trapezoidal"))
     if float(tol) > 0:
         label += f", substep_tol {tol}"
     rows = sorted(self_costs.items(), key=lambda kv: -kv[1])[:top]

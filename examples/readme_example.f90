@@ -5,7 +5,7 @@ program readme_example
   use interlock
   implicit none
   type(interlock_material_t) :: mat
-  type(interlock_solver_t) :: solver            ! scheme_explicit (default) or scheme_implicit
+  type(interlock_solver_t) :: solver            ! scheme_trapezoidal (default), _implicit, _explicit
   type(interlock_state_t) :: old, new
   type(interlock_info_t) :: info
   real(dp) :: sigma(2), tangent(2, 2)

@@ -62,7 +62,8 @@ def markdown(d):
         def key(c):
             sch, rest = c.split(" ", 1)
             kind = 0 if rest == "none" else 1 if rest == "Richardson" else 2
-            return (sch != "explicit", kind, rest)
+            return (["explicit", "implicit", "trapezoidal"].index(sch)
+                    if sch in ("explicit", "implicit", "trapezoidal") else 3, kind, rest)
         configs.sort(key=key)
         print(f"\n*{scene}* — error (CPU ms per run) at n steps:\n")
         print("| configuration | " + " | ".join(f"n = {n}" for n in cols) + " |")
@@ -137,7 +138,7 @@ def main():
         sys.exit("no rows in work_precision.csv")
 
     fig, axes = plt.subplots(1, len(scenes), figsize=(5.2 * len(scenes), 5.3), squeeze=False)
-    colours = {"explicit": plt.cm.Reds, "implicit": plt.cm.Blues}
+    colours = {"explicit": plt.cm.Reds, "implicit": plt.cm.Blues, "trapezoidal": plt.cm.Greens}
     for ax, scene in zip(axes[0], scenes):
         configs = []
         for r in rows:

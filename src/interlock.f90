@@ -10,9 +10,9 @@ module interlock
   use interlock_material_table
   use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, &
       interlock_material_prepare, interlock_paper_ria, scheme_explicit, scheme_implicit, &
-      scheme_name, effect_damage, effect_friction, effect_interlocking, effect_finite_depth, &
-      effect_wear, effect_names, n_effects, kernel_general, kernel_flat, kernel_inclined, &
-      kernel_cohesive
+      scheme_trapezoidal, scheme_name, effect_damage, effect_friction, effect_interlocking, &
+      effect_finite_depth, effect_wear, effect_names, n_effects, kernel_general, kernel_flat, &
+      kernel_inclined, kernel_cohesive
   use interlock_state, only: interlock_state_t, interlock_state_init
   use interlock_integrate, only: interlock_update
   use interlock_props, only: props_to_material, statev_to_state, state_to_statev, umat_controls_t, &

@@ -8,7 +8,7 @@
 module interlock_general_update
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, &
-      scheme_explicit, scheme_implicit, kernel_general
+      scheme_explicit, scheme_trapezoidal, kernel_general
   use interlock_state, only: interlock_state_t
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
   use interlock_ria, only: ria_step
@@ -37,15 +37,16 @@ contains
     type(interlock_info_t), intent(inout) :: info
     logical :: ok, done
     integer :: k
+    real(dp) :: err, h_first
 
     if (.not. mat%prepared) then
       call fail(old, new, sigma, tangent, info, status_bad_input, &
                 'the material has not been prepared (call interlock_material_prepare)')
       return
     end if
-    if (solver%scheme /= scheme_explicit .and. solver%scheme /= scheme_implicit) then
+    if (solver%scheme < scheme_explicit .or. solver%scheme > scheme_trapezoidal) then
       call fail(old, new, sigma, tangent, info, status_bad_input, &
-                'unknown integration scheme: admissible 1 (explicit) or 2 (implicit)')
+                'unknown integration scheme: admissible 1 (explicit), 2 (implicit) or 3 (trapezoidal)')
       return
     end if
     ! abs(x) <= huge is false for NaN and both infinities.
@@ -58,7 +59,21 @@ contains
     ! Every path below sets the whole tangent when it succeeds (fail() zeroes it otherwise).
     done = .false.
     if (solver%substep_tol > 0.0_dp) then
-      call substep(mat, solver, s, old, new, tangent, info, solver%substep_tol)
+      ! The whole increment by the specialised kernel first (a scheme that couples the angle to
+      ! the end of the step: its kernel computes the error estimate on the way); sub-increments
+      ! only when the estimate exceeds the tolerance, the first one sized from it.
+      h_first = 1.0_dp
+      if (mat%kernel /= kernel_general .and. solver%scheme /= scheme_explicit) then
+        call kernel_step(mat, solver, s, old, new, tangent, done, info%newton_iterations, err)
+        if (.not. done) err = 0.0_dp
+        if (err > solver%substep_tol) then
+          done = .false.
+          h_first = max(0.1_dp, 0.9_dp * sqrt(solver%substep_tol / err))
+          h_first = scale(1.0_dp, exponent(h_first) - 1)
+        end if
+      end if
+      if (.not. done) call substep(mat, solver, s, old, new, tangent, info, solver%substep_tol, &
+                                   h_first)
     else
       ! The specialised kernel of the material's effect set, when it applies.
       if (mat%kernel /= kernel_general) call kernel_step(mat, solver, s, old, new, tangent, &
@@ -67,7 +82,7 @@ contains
         call ria_step(mat, solver, s, old, new, tangent, info%newton_iterations, ok)
         if (.not. ok) then
           ! The one-step solve failed: retry on sub-increments, split only as failures require.
-          call substep(mat, solver, s, old, new, tangent, info, huge(1.0_dp))
+          call substep(mat, solver, s, old, new, tangent, info, huge(1.0_dp), 0.5_dp)
         end if
       end if
     end if
@@ -110,40 +125,44 @@ contains
   end subroutine fail
 
   !> Sub-increments linear in s. With error control (tol finite) each trial sub-increment is
-  !> taken once whole and once as two halves; their difference estimates the local error, the
-  !> halves are kept when it is within `tol` (or when the sub-increment is already the smallest
-  !> allowed: at a kink the estimate does not shrink with the size), and the next size follows
-  !> from first-order error scaling. Without error control (a failed one-step solve) the size is
-  !> quartered on failure and doubled on success. Sizes are powers of 2, so that the partition
-  !> of the increment does not vary with s except where a decision switches: the chained
-  !> tangent is then the exact derivative of what is computed.
-  pure subroutine substep(mat, solver, s, old, new, tangent, info, tol)
+  !> taken once, with the embedded estimate of its local error that the planes compute on the
+  !> way (interlock_schemes: the angle difference of the first- and second-order wear
+  !> increments, which costs no further evaluation); it is kept when the estimate is within
+  !> `tol` [rad] (or when the sub-increment is already the smallest allowed: at a kink the
+  !> estimate does not shrink with the size), and the next size follows from the estimate's
+  !> scaling (h^2). Damage and friction need no estimate: on a sub-increment linear in s they
+  !> are exact in every scheme; without wear one sub-increment is the whole increment. Without
+  !> error control (a failed one-step solve) the size is quartered on failure and doubled on
+  !> success. Sizes are powers of 2, so that the partition of the increment does not vary with
+  !> s except where a decision switches: the chained tangent is then the exact derivative of
+  !> what is computed. Nothing is allocated.
+  pure subroutine substep(mat, solver, s, old, new, tangent, info, tol, h_first)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     real(dp), intent(in) :: s(2), tol
+    real(dp), intent(in) :: h_first   !< the first sub-increment's fraction, a power of 2
     type(interlock_state_t), intent(in) :: old
     type(interlock_state_t), intent(inout) :: new
     real(dp), intent(inout) :: tangent(2, 2)
     type(interlock_info_t), intent(inout) :: info
-    type(interlock_state_t) :: cur, full, half1, half2
-    real(dp) :: ds(2), alpha, h, a_end, err, s_end(2), s_mid(2), t_full(2, 2), t_half(2, 2)
-    real(dp) :: jac(4, 2, max_planes), jac1(4, 2, max_planes), jac2(4, 2, max_planes)
+    type(interlock_state_t) :: cur, trial
+    real(dp) :: ds(2), alpha, h, a_end, err, s_end(2), t_trial(2, 2)
+    real(dp) :: jac(4, 2, max_planes), jac_trial(4, 2, max_planes)
     real(dp) :: stiffness_scale, chain_peak
-    integer :: it1, it2, it3, n_accepted
-    logical :: ok1, ok2, ok3, control
+    integer :: it, n_accepted
+    logical :: solved, stable, control
 
     control = tol < huge(1.0_dp)
     ds = s - old%s
     cur = old
     alpha = 0.0_dp
-    h = 1.0_dp
+    h = h_first
     jac = 0.0_dp
     n_accepted = 0
     info%attempts = 0
     ! The largest stiffness the law can show (penalty, or traction over the asperity depth).
     stiffness_scale = max(mat%kn, mat%kt) + max(mat%sigma0_n, mat%sigma0_t) * mat%inv_h_n
     chain_peak = 0.0_dp
-    if (.not. control) h = 0.5_dp
     do while (alpha < 1.0_dp)
       h = min(h, 1.0_dp - alpha)
       a_end = alpha + h
@@ -154,7 +173,6 @@ contains
       else
         s_end = old%s + a_end * ds
       end if
-      s_mid = old%s + (alpha + 0.5_dp * h) * ds
       info%attempts = info%attempts + 1
       if (info%attempts > solver%max_substeps) then
         info%status = status_local_failure
@@ -162,21 +180,16 @@ contains
           ' sub-increments: retry with a smaller increment'
         return
       end if
-      ok1 = .true.
-      it1 = 0
-      if (control) call ria_step(mat, solver, s_end, cur, full, t_full, it1, ok1)
-      call ria_step(mat, solver, s_mid, cur, half1, t_half, it2, ok2, jac, alpha + 0.5_dp * h, jac1)
-      ok3 = .false.
-      it3 = 0
-      if (ok2) ok2 = bounded(jac1(:, :, 1:mat%n_planes))
-      if (ok2) call ria_step(mat, solver, s_end, half1, half2, t_half, it3, ok3, jac1, a_end, jac2)
-      if (ok3) ok3 = bounded(jac2(:, :, 1:mat%n_planes))
-      info%newton_iterations = max(info%newton_iterations, it1, it2, it3)
-      if (.not. (ok1 .and. ok2 .and. ok3)) then
+      call ria_step(mat, solver, s_end, cur, trial, t_trial, it, solved, jac, a_end, jac_trial, &
+                    alpha, err)
+      info%newton_iterations = max(info%newton_iterations, it)
+      stable = .true.
+      if (solved) stable = bounded(jac_trial(:, :, 1:mat%n_planes))
+      if (.not. (solved .and. stable)) then
         h = 0.25_dp * h
         if (h < smallest_fraction) then
           info%status = status_local_failure
-          if (ok1 .and. ok2 .and. ok3) then
+          if (.not. solved) then
             info%message = 'the local wear equation has no solution on any sub-increment: ' // &
                            'retry with a smaller increment'
           else
@@ -187,15 +200,13 @@ contains
         end if
         cycle
       end if
-      err = 0.0_dp
-      if (control) err = local_error(mat, full, half2)
-      if (err <= tol .or. h <= smallest_controlled_fraction) then
-        cur = half2
-        jac = jac2
-        tangent = t_half
-        chain_peak = max(chain_peak, maxval(abs(t_half)))
+      if (.not. control .or. err <= tol .or. h <= smallest_controlled_fraction) then
+        cur = trial
+        jac = jac_trial
+        tangent = t_trial
+        chain_peak = max(chain_peak, maxval(abs(t_trial)))
         alpha = a_end
-        n_accepted = n_accepted + 2
+        n_accepted = n_accepted + 1
         if (control) then
           h = h * min(4.0_dp, max(1.0_dp, 0.9_dp * sqrt(tol / max(err, tiny(1.0_dp)))))
         else
@@ -225,20 +236,5 @@ contains
     real(dp), intent(in) :: jac(:, :, :)
     bounded = maxval(abs(jac)) <= 1.0e100_dp
   end function bounded
-
-  !> Local error estimate between one whole and two half sub-increments: the largest of the
-  !> traction difference (relative to the peak tractions), the damage difference and the
-  !> angle difference [rad].
-  pure real(dp) function local_error(mat, a, b)
-    type(interlock_material_t), intent(in) :: mat
-    type(interlock_state_t), intent(in) :: a, b
-    integer :: n
-    real(dp) :: sref
-    n = mat%n_planes
-    sref = max(mat%sigma0_n, mat%sigma0_t) + maxval(abs(b%sigma))
-    local_error = max(maxval(abs(a%sigma - b%sigma)) / sref, &
-                      maxval(abs(a%damage(1:n) - b%damage(1:n))), &
-                      maxval(abs(a%theta(1:n) - b%theta(1:n))))
-  end function local_error
 
 end module interlock_general_update

@@ -6,7 +6,7 @@
 module interlock_integrate
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_explicit, &
-      scheme_implicit, kernel_cohesive
+      scheme_implicit, scheme_trapezoidal, kernel_cohesive
   use interlock_state, only: interlock_state_t
   use interlock_status, only: interlock_info_t, status_ok
   use interlock_general_update, only: general_update
@@ -42,7 +42,8 @@ contains
     ! The kernel is kernel_cohesive only in a prepared material. abs(x) <= huge is false for NaN
     ! and both infinities: anything else is checked and reported by general_update.
     if (mat%kernel == kernel_cohesive .and. solver%substep_tol <= 0.0_dp .and. &
-        (solver%scheme == scheme_explicit .or. solver%scheme == scheme_implicit) .and. &
+        (solver%scheme == scheme_explicit .or. solver%scheme == scheme_implicit .or. &
+         solver%scheme == scheme_trapezoidal) .and. &
         abs(s(1)) <= huge(1.0_dp) .and. abs(s(2)) <= huge(1.0_dp)) then
       if (mat%use_friction) then
         call cohesive_friction_step(mat, solver%scheme, s, old, new, sigma, tangent)
@@ -201,10 +202,14 @@ contains
     ! Frictional work (decision D4) and the wear driver of each scheme (no wear on a flat plane,
     ! but zeta is kept as the paper's output).
     work_fric = d * abs(tauf) * slip
-    if (scheme == scheme_implicit) then
+    if (scheme == scheme_explicit) then
+      new%zeta(1) = old%zeta(1) + old%damage(1) * abs(old%tauf(1)) * slip
+    else if (scheme == scheme_implicit) then
       new%zeta(1) = old%zeta(1) + work_fric
     else
-      new%zeta(1) = old%zeta(1) + old%damage(1) * abs(old%tauf(1)) * slip
+      ! (start value of the trapezoidal driver: interlock_kernels:start_yield, no depth here)
+      new%zeta(1) = old%zeta(1) + 0.5_dp * (work_fric + old%damage(1) * &
+                                            (mat%mu_eff * mat%kn * max(0.0_dp, -old%s(1))) * slip)
     end if
     new%damage(1) = d
     new%sf(1) = sf

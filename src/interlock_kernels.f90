@@ -10,22 +10,25 @@
 !> the general path (interlock_ria) to round-off; a test checks it.
 module interlock_kernels
   use interlock_kinds, only: dp
-  use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_implicit, &
-      kernel_flat
+  use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_explicit, &
+      scheme_implicit, scheme_trapezoidal, kernel_flat
   use interlock_wear, only: worn_angle, worn_angle_slope, wear_root_t, wear_root_begin, &
       wear_root_update
   use interlock_state, only: interlock_state_t
   use interlock_geometry, only: contact_area
   implicit none
   private
-  public :: kernel_step, share_first_plane
+  public :: kernel_step, share_first_plane, start_yield
 
   !> The law of one microplane in its own frame over one step, with d(traction)/d(s_kn, s_kt).
   type :: plane_law_t
     real(dp) :: beta, dmg, sf, tauf, zeta
     real(dp) :: sig(2), k(2, 2)
     real(dp) :: psi, wdmg, wfric
-    real(dp) :: gw(2)   !< d wfric / d(s_kn, s_kt) at fixed start state (the implicit wear driver)
+    !> the wear driver of the coupled schemes, a_end wfric + g_start |sf - sf_o|, and its
+    !> derivative d/d(s_kn, s_kt) at fixed start state
+    real(dp) :: drv, gdrv(2)
+    real(dp) :: slip    !< |sf - sf_o|
   end type plane_law_t
 
 contains
@@ -33,7 +36,9 @@ contains
   !> One increment with a specialised kernel. `done` is false when the kernel does not apply
   !> to this increment (a separated RIA, or an implicit wear equation the bounded iteration did
   !> not solve): the caller then takes the general path, which can also sub-increment.
-  pure subroutine kernel_step(mat, solver, s, old, new, tangent, done, iterations)
+  !> wear_error (a scheme that couples the angle to the end of the step): the embedded local
+  !> error estimate of substepping, as interlock_ria:ria_step computes it.
+  pure subroutine kernel_step(mat, solver, s, old, new, tangent, done, iterations, wear_error)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     real(dp), intent(in) :: s(2)
@@ -42,13 +47,17 @@ contains
     real(dp), intent(out) :: tangent(2, 2)
     logical, intent(out) :: done
     integer, intent(out) :: iterations
+    real(dp), intent(out), optional :: wear_error
     type(plane_law_t) :: p
     real(dp) :: area, darea, sigma(2), sl(2), c, sn, gam, kg(2, 2), sg(2), theta, slope, &
-                dthds(2), dsig_dth(2)
+                dthds(2), dsig_dth(2), err_angle, err_traction, e, a_end, g_slip
     integer :: k, scheme, it
 
     scheme = solver%scheme
     iterations = 0
+    err_angle = 0.0_dp
+    err_traction = 0.0_dp
+    if (present(wear_error)) wear_error = 0.0_dp
     area = 1.0_dp
     darea = 0.0_dp
     if (mat%use_depth) call contact_area(s(1), mat%inv_h_n, area, darea)
@@ -61,18 +70,21 @@ contains
     tangent = 0.0_dp
     if (mat%kernel == kernel_flat) then
       ! Every plane flat: one computed, in the global frame, the others share its history.
-      call fixed_angle_plane(mat, scheme, 1, 1.0_dp, 0.0_dp, area, s, old, new, sigma, tangent)
+      call wear_weights(mat, scheme, 1, 1.0_dp, 0.0_dp, old, a_end, g_slip)
+      call fixed_angle_plane(mat, a_end, g_slip, 1, 1.0_dp, 0.0_dp, area, s, old, new, sigma, &
+                             tangent)
       if (mat%n_planes > 1) call share_first_plane(mat%n_planes, old, new)
     else
       do k = 1, mat%n_planes
         if (.not. mat%plane_wears(k)) then
-          call fixed_angle_plane(mat, scheme, k, mat%cos0(k), mat%sin0(k), &
+          call wear_weights(mat, scheme, k, mat%cos0(k), mat%sin0(k), old, a_end, g_slip)
+          call fixed_angle_plane(mat, a_end, g_slip, k, mat%cos0(k), mat%sin0(k), &
                                  mat%gamma_hat(k) * area, s, old, new, sigma, tangent)
-        else if (scheme /= scheme_implicit) then
+        else if (scheme == scheme_explicit) then
           ! Explicit (eq. 25): the angle frozen at its stored value within the step.
           theta = old%theta(k)
-          call fixed_angle_plane(mat, scheme, k, cos(theta), sin(theta), &
-                                 mat%gamma_hat(k) * area, s, old, new, sigma, tangent)
+          call fixed_angle_plane(mat, 0.0_dp, old%damage(k) * abs(old%tauf(k)), k, cos(theta), &
+                                 sin(theta), mat%gamma_hat(k) * area, s, old, new, sigma, tangent)
           ! Explicit wear (eq. 22, 25): the angle for the next step.
           if (new%zeta(k) > old%zeta(k)) then
             call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), new%zeta(k), &
@@ -81,7 +93,7 @@ contains
           end if
         else
           theta = old%theta(k)
-          call implicit_wear_plane(mat, solver, k, s, old, p, theta, c, sn, sl, dthds, it, done)
+          call coupled_wear_plane(mat, solver, k, s, old, p, theta, c, sn, sl, dthds, it, done)
           iterations = max(iterations, it)
           if (.not. done) return
           gam = mat%gamma_hat(k) * area
@@ -102,6 +114,14 @@ contains
           kg(:, 2) = kg(:, 2) + dsig_dth * dthds(2)
           sigma = sigma + gam * sg
           tangent = tangent + gam * kg
+          if (present(wear_error) .and. p%zeta > old%zeta(k)) then
+            ! (interlock_schemes:plane_step: backward Euler minus trapezoidal, as an angle)
+            e = abs(theta - old%theta(k)) * abs(0.5_dp * p%wfric - 0.5_dp * old%damage(k) * &
+                start_yield(mat, cos(old%theta(k)), sin(old%theta(k)), old%s) * p%slip) / &
+                (p%zeta - old%zeta(k))
+            err_angle = max(err_angle, e)
+            err_traction = max(err_traction, gam * maxval(abs(dsig_dth)) * e)
+          end if
           call store_plane(p, k, gam, theta, new)
         end if
       end do
@@ -111,6 +131,8 @@ contains
     new%s = s
     new%sigma = sigma
     new%work = old%work + 0.5_dp * dot_product(old%sigma + sigma, s - old%s)
+    if (present(wear_error)) wear_error = max(err_angle, err_traction / &
+        (max(mat%sigma0_n, mat%sigma0_t) + maxval(abs(sigma))))
   end subroutine kernel_step
 
   !> One plane whose angle is fixed within the step (constant, or frozen by the explicit
@@ -124,9 +146,10 @@ contains
   !> places, and calls in these paths cost much of an update (interlock-bench, with the damage
   !> growth and this plane as calls from the flat-plane laws: damage only 7.9 -> 9.2 ns,
   !> damage + friction 10.5 -> 19 ns). core_kernels holds all of them to the general path.
-  pure subroutine fixed_angle_plane(mat, scheme, k, c, sn, w, s, old, new, sigma, tangent)
+  pure subroutine fixed_angle_plane(mat, a_end, g_slip, k, c, sn, w, s, old, new, sigma, tangent)
     type(interlock_material_t), intent(in) :: mat
-    integer, intent(in) :: scheme, k
+    real(dp), intent(in) :: a_end, g_slip   !< the wear driver a_end D |tau_f| |d sf| + g_slip |d sf|
+    integer, intent(in) :: k
     real(dp), intent(in) :: c, sn, w, s(2)
     type(interlock_state_t), intent(in) :: old
     type(interlock_state_t), intent(inout) :: new
@@ -216,11 +239,7 @@ contains
     ! Frictional work (decision D4), the wear driver of each scheme, the energies (the
     ! decohesion part of Y dD exactly, interlock_damage:damage_dissipation_increment).
     wfric = d * abs(tauf) * slip
-    if (scheme == scheme_implicit) then
-      new%zeta(k) = old%zeta(k) + wfric
-    else
-      new%zeta(k) = old%zeta(k) + old%damage(k) * abs(old%tauf(k)) * slip
-    end if
+    new%zeta(k) = old%zeta(k) + (a_end * wfric + g_slip * slip)
     wdmg = 0.0_dp
     if (d > old%damage(k)) wdmg = mat%decohesion_energy_factor * &
         (min(max(beta, 1.0_dp), mat%beta_break) - min(max(old%beta(k), 1.0_dp), mat%beta_break)) &
@@ -236,11 +255,12 @@ contains
     new%tauf(k) = tauf
   end subroutine fixed_angle_plane
 
-  !> A wearing plane with the implicit scheme (interlock_wear: the backward-Euler wear equation
+  !> A wearing plane with a scheme that couples the angle to the end of the step (interlock_wear:
+  !> the wear equation zeta = zeta_o + G(theta(zeta)) of the implicit or the trapezoidal scheme,
   !> solved by the safeguarded Newton iteration), in its own frame at the root's angle, and
-  !> d theta / d s by implicit differentiation: d zeta/d s = (grad g . R) / F'.
-  pure subroutine implicit_wear_plane(mat, solver, k, s, old, p, theta, c, sn, sl, dthds, &
-                                      iterations, ok)
+  !> d theta / d s by implicit differentiation: d zeta/d s = (grad G . R) / F'.
+  pure subroutine coupled_wear_plane(mat, solver, k, s, old, p, theta, c, sn, sl, dthds, &
+                                     iterations, ok)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     integer, intent(in) :: k
@@ -252,18 +272,25 @@ contains
     integer, intent(out) :: iterations
     logical, intent(out) :: ok
     type(wear_root_t) :: rt
-    real(dp) :: thp, fp
+    real(dp) :: thp, fp, a_end, g_start
+    ! The driver G = a_end D |tau_f| |d sf| + g_start |d sf| (interlock_schemes:plane_step).
+    a_end = 1.0_dp
+    g_start = 0.0_dp
+    if (solver%scheme == scheme_trapezoidal) then
+      a_end = 0.5_dp
+      g_start = 0.5_dp * old%damage(k) * start_yield(mat, cos(theta), sin(theta), old%s)
+    end if
     ! At zeta_o the angle is the stored one: no exponential.
     thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), theta)
-    call wear_evaluate(mat, k, s, old, theta, thp, p, c, sn, sl, fp)
+    call wear_evaluate(mat, k, s, old, a_end, g_start, theta, thp, p, c, sn, sl, fp)
     iterations = 0
     ok = .true.
-    if (p%wfric > 0.0_dp) then
-      call wear_root_begin(rt, old%zeta(k), p%wfric)
+    if (p%drv > 0.0_dp) then
+      call wear_root_begin(rt, old%zeta(k), p%drv)
       do
         call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, thp)
-        call wear_evaluate(mat, k, s, old, theta, thp, p, c, sn, sl, fp)
-        call wear_root_update(rt, rt%x - old%zeta(k) - p%wfric, fp, solver%newton_tol, &
+        call wear_evaluate(mat, k, s, old, a_end, g_start, theta, thp, p, c, sn, sl, fp)
+        call wear_root_update(rt, rt%x - old%zeta(k) - p%drv, fp, solver%newton_tol, &
                               solver%newton_max_iterations)
         if (rt%done) exit
       end do
@@ -271,23 +298,23 @@ contains
       ok = rt%ok
       p%zeta = rt%x
     end if
-    dthds = thp * [p%gw(1) * c - p%gw(2) * sn, p%gw(1) * sn + p%gw(2) * c] / fp
-  end subroutine implicit_wear_plane
+    dthds = thp * [p%gdrv(1) * c - p%gdrv(2) * sn, p%gdrv(1) * sn + p%gdrv(2) * c] / fp
+  end subroutine coupled_wear_plane
 
-  !> The plane at angle theta (slope thp = d theta / d zeta) and F' = 1 - thp dg/d theta of its
-  !> wear equation, dg/d theta = grad g . (s_kt, -s_kn).
-  pure subroutine wear_evaluate(mat, k, s, old, theta, thp, p, c, sn, sl, fp)
+  !> The plane at angle theta (slope thp = d theta / d zeta) and F' = 1 - thp dG/d theta of its
+  !> wear equation, dG/d theta = grad G . (s_kt, -s_kn).
+  pure subroutine wear_evaluate(mat, k, s, old, a_end, g_start, theta, thp, p, c, sn, sl, fp)
     type(interlock_material_t), intent(in) :: mat
     integer, intent(in) :: k
-    real(dp), intent(in) :: s(2), theta, thp
+    real(dp), intent(in) :: s(2), a_end, g_start, theta, thp
     type(interlock_state_t), intent(in) :: old
     type(plane_law_t), intent(out) :: p
     real(dp), intent(out) :: c, sn, sl(2), fp
     c = cos(theta)
     sn = sin(theta)
     sl = [c * s(1) + sn * s(2), -sn * s(1) + c * s(2)]
-    call plane_law(mat, sl, old%beta(k), old%sf(k), old%zeta(k), old%damage(k), p)
-    fp = 1.0_dp - thp * (p%gw(1) * sl(2) - p%gw(2) * sl(1))
+    call plane_law(mat, sl, old%beta(k), old%sf(k), old%zeta(k), old%damage(k), a_end, g_start, p)
+    fp = 1.0_dp - thp * (p%gdrv(1) * sl(2) - p%gdrv(2) * sl(1))
   end subroutine wear_evaluate
 
   !> The plane's end-of-step state into `new`, and its share (weight g) of the energies.
@@ -308,10 +335,11 @@ contains
   end subroutine store_plane
 
   !> Damage, friction and traction of one plane in its own frame at a trial angle of the
-  !> implicit wear equation, with the gradient of the frictional work (the wear driver).
-  pure subroutine plane_law(mat, sl, beta_o, sf_o, zeta_o, dmg_o, p)
+  !> coupled wear equation, with the wear driver a_end D |tau_f| |d sf| + g_start |d sf| and
+  !> its gradient.
+  pure subroutine plane_law(mat, sl, beta_o, sf_o, zeta_o, dmg_o, a_end, g_start, p)
     type(interlock_material_t), intent(in) :: mat
-    real(dp), intent(in) :: sl(2), beta_o, sf_o, zeta_o, dmg_o
+    real(dp), intent(in) :: sl(2), beta_o, sf_o, zeta_o, dmg_o, a_end, g_start
     type(plane_law_t), intent(out) :: p
     real(dp) :: an, at, beq, rb, ddb, gd(2), dtau(2), mu_p, tau_trial, sgn, pos_n, neg_n, slip, &
                 dslip(2)
@@ -366,7 +394,9 @@ contains
       p%tauf = 0.0_dp
       dtau = 0.0_dp
       slip = abs(p%sf - sf_o)
+      ! (drives the trapezoidal wear through the start traction; the work itself is 0)
       dslip = 0.0_dp
+      if (slip > 0.0_dp) dslip(2) = sign(1.0_dp, p%sf - sf_o)
     end if
 
     ! Traction and its derivative (interlock_microplane).
@@ -386,10 +416,12 @@ contains
     ! Frictional work and energies (interlock_schemes): the decohesion part of Y dD exactly
     ! (interlock_damage:damage_dissipation_increment), the friction part at first order.
     p%wfric = p%dmg * abs(p%tauf) * slip
+    p%slip = slip
+    p%drv = a_end * p%wfric + g_start * slip
     ! grad of D |tau_f| slip; d|tau_f| = sign(tau_f) dtau (tau_f = 0 where it is free)
-    p%gw = abs(p%tauf) * slip * gd + p%dmg * slip * sign(1.0_dp, p%tauf) * dtau + &
-           p%dmg * abs(p%tauf) * dslip
-    p%zeta = zeta_o + p%wfric
+    p%gdrv = a_end * (abs(p%tauf) * slip * gd + p%dmg * slip * sign(1.0_dp, p%tauf) * dtau + &
+                      p%dmg * abs(p%tauf) * dslip) + g_start * dslip
+    p%zeta = zeta_o + p%drv
     ! psi = (1 - D) psi_e + D psi_f = (sig . s_k - D tau_f sf) / 2 (sl(2) - sf = tau_f / K_t).
     p%psi = 0.5_dp * (p%sig(1) * sl(1) + p%sig(2) * sl(2) - p%dmg * p%tauf * p%sf)
     p%wdmg = 0.0_dp
@@ -397,6 +429,39 @@ contains
         (min(max(p%beta, 1.0_dp), mat%beta_break) - min(max(beta_o, 1.0_dp), mat%beta_break)) &
         - 0.5_dp * p%tauf**2 * mat%inv_kt * (p%dmg - dmg_o)
   end subroutine plane_law
+
+  !> The weights of a plane's wear driver zeta - zeta_o = a_end D |tau_f| |d sf| + g_slip |d sf|
+  !> in each scheme (interlock_schemes:plane_step): explicit 0 and D_o |tauf_o| (eq. 25),
+  !> implicit 1 and 0, trapezoidal 1/2 and D_o mu p_o / 2.
+  pure subroutine wear_weights(mat, scheme, k, c, sn, old, a_end, g_slip)
+    type(interlock_material_t), intent(in) :: mat
+    integer, intent(in) :: scheme, k
+    real(dp), intent(in) :: c, sn
+    type(interlock_state_t), intent(in) :: old
+    real(dp), intent(out) :: a_end, g_slip
+    if (scheme == scheme_explicit) then
+      a_end = 0.0_dp
+      g_slip = old%damage(k) * abs(old%tauf(k))
+    else if (scheme == scheme_implicit) then
+      a_end = 1.0_dp
+      g_slip = 0.0_dp
+    else
+      a_end = 0.5_dp
+      g_slip = 0.5_dp * old%damage(k) * start_yield(mat, c, sn, old%s)
+    end if
+  end subroutine wear_weights
+
+  !> mu p at the start of the step on the plane of frame (c, sn): the friction traction of the
+  !> damaged part where the slip of the step begins (|tauf_o| if it slid at the start; if it
+  !> stuck, the value at which it starts to slide, to first order), the trapezoidal scheme's
+  !> start value of the wear driver; 0 when the start state is separated (decision D7).
+  pure real(dp) function start_yield(mat, c, sn, s_o) result(mu_p)
+    type(interlock_material_t), intent(in) :: mat
+    real(dp), intent(in) :: c, sn, s_o(2)
+    mu_p = 0.0_dp
+    if (s_o(1) * mat%inv_h_n < 1.0_dp) &
+      mu_p = mat%mu_eff * mat%kn * max(0.0_dp, -(c * s_o(1) + sn * s_o(2)))
+  end function start_yield
 
   !> A flat RIA of several planes: planes 2..n take plane 1's history (their angles stay).
   pure subroutine share_first_plane(n, old, new)

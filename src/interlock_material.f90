@@ -11,13 +11,15 @@ module interlock_material
   public :: interlock_material_t, interlock_solver_t, max_planes
   public :: interlock_material_prepare, interlock_paper_ria, interlock_material_derive, &
             derived_range_message
-  public :: scheme_explicit, scheme_implicit, scheme_name
+  public :: scheme_explicit, scheme_implicit, scheme_trapezoidal, scheme_name
   public :: effect_damage, effect_friction, effect_interlocking, effect_finite_depth, effect_wear
   public :: effect_names, n_effects
   public :: kernel_general, kernel_flat, kernel_inclined, kernel_cohesive
 
   integer, parameter :: max_planes = 8
-  integer, parameter :: scheme_explicit = 1, scheme_implicit = 2
+  !> Integration schemes (SPEC section 5, D11): the paper's explicit one, backward Euler, and
+  !> the trapezoidal rule on the wear equation (second order, consistent at a zero increment).
+  integer, parameter :: scheme_explicit = 1, scheme_implicit = 2, scheme_trapezoidal = 3
   integer, parameter :: n_effects = 5
   integer, parameter :: effect_damage = 1, effect_friction = 2, effect_interlocking = 3, &
                         effect_finite_depth = 4, effect_wear = 5
@@ -78,7 +80,9 @@ module interlock_material
 
   !> How an update integrates.
   type :: interlock_solver_t
-    integer  :: scheme = scheme_explicit
+    !> the default: consistent at a zero increment (SPEC D10) and the cheapest per accuracy on
+    !> the paper's wear scenes (docs/bench.md); scheme_explicit is the paper's
+    integer  :: scheme = scheme_trapezoidal
     real(dp) :: substep_tol = 0.0_dp      !< local error tolerance; 0: no substepping
     real(dp) :: newton_tol = 1.0e-13_dp   !< relative residual of the per-plane wear equation
     integer  :: newton_max_iterations = 60
@@ -95,6 +99,8 @@ contains
       name = 'explicit'
     case (scheme_implicit)
       name = 'implicit'
+    case (scheme_trapezoidal)
+      name = 'trapezoidal'
     case default
       name = 'unknown'
     end select

@@ -96,9 +96,10 @@ module interlock_material_table
     property_t('prefractured', 'D_0', '-', 'interface', kind_flag, .false., 0.0_dp, &
                0.0_dp, .false., 1.0_dp, .false., .false., &
                '1: interface fully debonded from the start (D = 1), 0: intact'), &
-    property_t('scheme', 'scheme', '-', 'solver', kind_choice, .false., 1.0_dp, &
-               1.0_dp, .false., 2.0_dp, .false., .false., &
-               'integration scheme: 1 explicit (the paper''s), 2 implicit (backward Euler)'), &
+    property_t('scheme', 'scheme', '-', 'solver', kind_choice, .false., 3.0_dp, &
+               1.0_dp, .false., 3.0_dp, .false., .false., &
+               'integration scheme: 1 explicit (the paper''s), 2 implicit (backward Euler), ' // &
+               '3 trapezoidal'), &
     property_t('substep_tol', 'tol', '-', 'solver', kind_real, .false., 0.0_dp, &
                0.0_dp, .false., 1.0_dp, .true., .false., &
                'local error tolerance of substepping; 0: no substepping'), &

@@ -19,7 +19,7 @@ contains
   !> d q_old,k / d s_end for q = (beta, sf, zeta, tauf); then `tangent` = d sigma / d s_end and
   !> `jac_out` = d q_new / d s_end, so that the chain over sub-increments stays exact.
   pure subroutine ria_step(mat, solver, s, old, new, tangent, iterations, ok, jac_in, alpha, &
-                           jac_out)
+                           jac_out, alpha_start, wear_error)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     real(dp), intent(in) :: s(2)
@@ -30,21 +30,38 @@ contains
     logical, intent(out) :: ok
     real(dp), intent(in), optional :: jac_in(4, 2, max_planes), alpha
     real(dp), intent(out), optional :: jac_out(4, 2, max_planes)
+    real(dp), intent(in), optional :: alpha_start   !< fraction of the increment at `old`
+    !> with the chain: the embedded local error estimate of the wear (interlock_schemes), the
+    !> larger of the angle error [rad] and the traction error it causes relative to the peak
+    !> traction plus the current one
+    real(dp), intent(out), optional :: wear_error
     type(plane_t) :: p
-    real(dp) :: area, darea, gam, sigma(2), a
+    real(dp) :: area, darea, gam, sigma(2), a, so_ratio, err_angle, err_traction
     integer :: k, n_eval, ncol
     logical :: chain
 
     chain = present(jac_in)
-    ncol = merge(6, 2, chain)
+    ! From the start of the increment (alpha_start = 0) the incoming chain is zero: the columns
+    ! of the start state are not needed.
+    ncol = 2
+    if (chain .and. present(alpha_start)) then
+      if (alpha_start > 0.0_dp) ncol = 6
+    else if (chain) then
+      ncol = 6
+    end if
     a = 1.0_dp
     if (present(alpha)) a = alpha
+    ! d s_o / d s_end = alpha_start, in the columns that ria_step scales by alpha
+    so_ratio = 0.0_dp
+    if (chain .and. present(alpha_start)) so_ratio = alpha_start / a
     new = old
     ok = .true.
     iterations = 0
     sigma = 0.0_dp
     tangent = 0.0_dp
     if (chain) jac_out = 0.0_dp
+    err_angle = 0.0_dp
+    err_traction = 0.0_dp
     new%stored = 0.0_dp
 
     area = 1.0_dp
@@ -69,19 +86,24 @@ contains
     else
       n_eval = merge(1, mat%n_planes, mat%flat)
       do k = 1, n_eval
-        call plane_step(mat, solver, k, s, old%beta(k), old%sf(k), old%zeta(k), old%tauf(k), &
-                        old%damage(k), old%theta(k), ncol, p)
+        call plane_step(mat, solver, k, s, old%s, so_ratio, old%beta(k), old%sf(k), old%zeta(k), &
+                        old%tauf(k), old%damage(k), old%theta(k), ncol, present(wear_error), p)
         if (.not. p%ok) then
           ok = .false.
           return
         end if
         iterations = max(iterations, p%iterations)
         gam = merge(1.0_dp, mat%gamma_hat(k), mat%flat)
+        err_angle = max(err_angle, p%wear_error)
+        err_traction = max(err_traction, gam * area * maxval(abs(p%dsig_dtheta)) * p%wear_error)
         sigma = sigma + gam * area * p%sig
-        if (chain) then
+        if (chain .and. ncol > 2) then
           tangent = tangent + gam * (area * (a * p%gsig(:, 1:2) + &
                     matmul(p%gsig(:, 3:6), jac_in(:, :, k))))
           jac_out(:, :, k) = a * p%gq(:, 1:2) + matmul(p%gq(:, 3:6), jac_in(:, :, k))
+        else if (chain) then
+          tangent = tangent + gam * area * a * p%gsig(:, 1:2)
+          jac_out(:, :, k) = a * p%gq(:, 1:2)
         else
           tangent = tangent + gam * area * p%gsig(:, 1:2)
         end if
@@ -112,6 +134,8 @@ contains
     new%s = s
     new%sigma = sigma
     new%work = old%work + 0.5_dp * dot_product(old%sigma + sigma, s - old%s)
+    if (present(wear_error)) wear_error = max(err_angle, err_traction / &
+        (max(mat%sigma0_n, mat%sigma0_t) + maxval(abs(sigma))))
   end subroutine ria_step
 
 end module interlock_ria

@@ -5,7 +5,8 @@
 !> 6: also what substepping needs to chain sub-increments).
 module interlock_schemes
   use interlock_kinds, only: dp
-  use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_implicit
+  use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_explicit, &
+      scheme_trapezoidal
   use interlock_kinematics, only: to_local, to_global, dlocal_dtheta
   use interlock_damage, only: damage_of_beta, damage_dissipation_increment
   use interlock_microplane, only: local_t, microplane_update
@@ -24,39 +25,61 @@ module interlock_schemes
     real(dp) :: psi                !< stored energy density of the plane [N/mm]
     real(dp) :: wdmg               !< energy dissipated by damage in the step [N/mm]
     real(dp) :: wfric              !< frictional work in the step, D |tau_f| |d sf| [N/mm]
+    !> |theta_1 - theta_2| [rad] of the first-order (backward-Euler) and the second-order
+    !> (trapezoidal) wear increments of the step: the embedded local error estimate of
+    !> substepping (computed on request only; 0 for a plane that does not wear)
+    real(dp) :: wear_error
+    real(dp) :: dsig_dtheta(2)     !< d sig / d theta at fixed s (with wear_error)
     integer  :: iterations         !< Newton iterations of the wear equation
     logical  :: ok
   end type plane_t
 
 contains
 
-  pure subroutine plane_step(mat, solver, k, s, beta_o, sf_o, zeta_o, tauf_o, dmg_o, theta_o, &
-                             ncol, p)
+  !> s_o: the separation at the start of the step (the trapezoidal scheme's start value of the
+  !> wear driver depends on it), so_ratio: d s_o / d s over the ratio by which ria_step scales
+  !> the columns d/ds (0 for one step; substepping: start over end fraction of the increment).
+  !> estimate: compute p%wear_error and p%dsig_dtheta (substepping's error control).
+  pure subroutine plane_step(mat, solver, k, s, s_o, so_ratio, beta_o, sf_o, zeta_o, tauf_o, &
+                             dmg_o, theta_o, ncol, estimate, p)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     integer, intent(in) :: k, ncol
-    real(dp), intent(in) :: s(2), beta_o, sf_o, zeta_o, tauf_o, dmg_o, theta_o
+    logical, intent(in) :: estimate
+    real(dp), intent(in) :: s(2), s_o(2), so_ratio, beta_o, sf_o, zeta_o, tauf_o, dmg_o, theta_o
     type(plane_t), intent(out) :: p
     type(local_t) :: r
     real(dp) :: c, sn, sl(2), dthw(6), gz(6), dvdw(4, 6), dsl_dth(2), dz, ddo_db, dtmp, &
-                sig_th(2), thp, fp
+                sig_th(2), thp, fp, a_end, a_start, g_start, gdrv(4), dgs(6), gl(2)
     integer :: j
+    logical :: coupled
 
     p%ok = .true.
     p%iterations = 0
+    p%wear_error = 0.0_dp
+    p%dsig_dtheta = 0.0_dp
+    dz = 0.0_dp
     dthw = 0.0_dp
     gz = 0.0_dp
-    if (solver%scheme == scheme_implicit .and. mat%plane_wears(k)) then
-      call solve_wear(mat, solver, k, s, beta_o, sf_o, zeta_o, theta_o, r, p%zeta, p%theta, c, &
-                      sn, sl, thp, fp, p%iterations, p%ok)
+    ! The wear driver of the schemes that couple the angle to the end of the step:
+    ! zeta = zeta_o + a_end D |tau_f| |d sf| + g_start |d sf|, g_start = a_start D_o mu p_o
+    ! fixed within the step (implicit: a_end = 1, a_start = 0; trapezoidal: 1/2, 1/2).
+    coupled = solver%scheme /= scheme_explicit
+    a_end = 1.0_dp
+    a_start = 0.0_dp
+    g_start = 0.0_dp
+    dgs = 0.0_dp
+    if (solver%scheme == scheme_trapezoidal) then
+      a_end = 0.5_dp
+      a_start = 0.5_dp
+      call trapezoidal_start(mat, k, s_o, so_ratio, beta_o, dmg_o, theta_o, ncol, g_start, dgs)
+    end if
+    thp = 0.0_dp
+    fp = 1.0_dp
+    if (coupled .and. mat%plane_wears(k)) then
+      call solve_wear(mat, solver, k, s, beta_o, sf_o, zeta_o, theta_o, a_end, g_start, r, &
+                      p%zeta, p%theta, c, sn, sl, thp, fp, p%iterations, p%ok)
       if (.not. p%ok) return
-      ! zeta = zeta_o + g(v(w, theta(zeta))): implicit differentiation.
-      gz(1:2) = matmul(r%gwdrv(1:2), rotation(c, sn)) / fp
-      if (ncol > 2) then
-        gz(3:4) = r%gwdrv(3:4) / fp
-        gz(5) = 1.0_dp / fp
-      end if
-      dthw(1:ncol) = thp * gz(1:ncol)
     else
       if (mat%plane_wears(k)) then
         p%theta = theta_o
@@ -69,13 +92,8 @@ contains
       end if
       call to_local(c, sn, s, sl)
       call microplane_update(mat, sl, beta_o, sf_o, mat%d_frozen, r)
-      if (solver%scheme == scheme_implicit) then
-        p%zeta = zeta_o + r%wdrv
-        gz(1:2) = matmul(r%gwdrv(1:2), rotation(c, sn))
-        if (ncol > 2) then
-          gz(3:4) = r%gwdrv(3:4)
-          gz(5) = 1.0_dp
-        end if
+      if (coupled) then
+        p%zeta = zeta_o + (a_end * r%wdrv + g_start * r%slip)
       else
         ! Explicit (eq. 25): theta frozen at its start value, zeta driven by the start traction.
         dz = dmg_o * abs(tauf_o) * r%slip
@@ -88,6 +106,19 @@ contains
           dthw(5) = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), theta_o)
         end if
       end if
+    end if
+    if (coupled) then
+      ! zeta = zeta_o + G(w, theta(zeta)): implicit differentiation, d zeta/d w = (dG/dw)/F'
+      ! (F' = 1 and thp = 0 where the angle is constant).
+      gdrv = a_end * r%gwdrv + g_start * r%gslip
+      gz(1:2) = (matmul(gdrv(1:2), rotation(c, sn)) + r%slip * dgs(1:2)) / fp
+      if (ncol > 2) then
+        gz(3:4) = gdrv(3:4) + r%slip * dgs(3:4)
+        gz(5) = 1.0_dp + r%slip * dgs(5)
+        gz(6) = r%slip * dgs(6)
+        gz(3:6) = gz(3:6) / fp
+      end if
+      dthw(1:ncol) = thp * gz(1:ncol)
     end if
 
     ! dv/dw = P + dv/dtheta (x) dtheta/dw, v = (s_kn, s_kt, beta_o, sf_o).
@@ -102,7 +133,7 @@ contains
       dvdw(1:2, j) = dvdw(1:2, j) + dsl_dth * dthw(j)
     end do
 
-    if (solver%scheme /= scheme_implicit) then
+    if (.not. coupled) then
       ! d zeta / d w for the explicit update zeta = zeta_o + D_o |tauf_o| |sf - sf_o|.
       gz = dmg_o * abs(tauf_o) * matmul(r%gslip, dvdw)
       if (ncol > 2) then
@@ -111,6 +142,24 @@ contains
         gz(3) = gz(3) + abs(tauf_o) * r%slip * ddo_db
         gz(5) = gz(5) + 1.0_dp
         gz(6) = gz(6) + dmg_o * r%slip * sign(1.0_dp, tauf_o)
+      end if
+    end if
+
+    if (estimate .and. mat%plane_wears(k)) then
+      if (coupled) then
+        ! Backward Euler minus trapezoidal, (D |tau_f| - D_o mu p_o) |d sf| / 2, as an angle
+        ! through the secant d theta / d zeta of the step (the tangent vanishes where the plane
+        ! wears out within the step).
+        if (solver%scheme /= scheme_trapezoidal) call trapezoidal_start(mat, k, s_o, 0.0_dp, &
+            beta_o, dmg_o, theta_o, 2, g_start, dgs)
+        if (p%zeta > zeta_o) p%wear_error = abs(p%theta - theta_o) * &
+            abs(0.5_dp * r%wdrv - g_start * r%slip) / (p%zeta - zeta_o)
+      else
+        ! Explicit: the traction is taken at the angle of the start, the error is first order
+        ! in the angle increment itself (decision D10), and in the difference from the
+        ! backward-Euler increment (which sees wear that the start traction does not drive).
+        p%wear_error = max(abs(p%theta - theta_o), min(abs(theta_o - mat%thetaf_eff(k)), &
+            abs(worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), theta_o) * (r%wdrv - dz))))
       end if
     end if
 
@@ -127,10 +176,17 @@ contains
     call to_global(c, sn, r%sig, p%sig)
     ! d(R^T)/dtheta sigma_loc
     sig_th = [-sn * r%sig(1) - c * r%sig(2), c * r%sig(1) - sn * r%sig(2)]
-    p%gsig = matmul(transpose(rotation(c, sn)), matmul(r%gsig, dvdw))
+    ! R^T (d sigma_loc/d v) (dv/dw) + d(R^T)/dtheta sigma_loc dtheta/dw, column by column (a
+    ! matmul of a transpose here put a temporary on the heap in every call)
+    p%gsig = 0.0_dp
     do j = 1, ncol
-      p%gsig(:, j) = p%gsig(:, j) + sig_th * dthw(j)
+      gl = matmul(r%gsig, dvdw(:, j))
+      p%gsig(:, j) = [c * gl(1) - sn * gl(2), sn * gl(1) + c * gl(2)] + sig_th * dthw(j)
     end do
+    if (estimate .and. mat%plane_wears(k)) then
+      gl = matmul(r%gsig(:, 1:2), dsl_dth)
+      p%dsig_dtheta = [c * gl(1) - sn * gl(2), sn * gl(1) + c * gl(2)] + sig_th
+    end if
 
     ! Energies (stored energy of eq. 21 per unit plane area).
     p%psi = 0.5_dp * ((1.0_dp - r%dmg) * (mat%kn * sl(1)**2 + mat%kt * sl(2)**2) + &
@@ -143,6 +199,40 @@ contains
     p%wfric = r%wdrv
   end subroutine plane_step
 
+  !> The trapezoidal scheme's start value of the wear driver, g_start = D_o mu p_o / 2 with p_o
+  !> the contact pressure of the start state (interlock_kernels:start_yield: where the slip of
+  !> the step begins, |tau_f| = mu p), and its gradient with respect to w (columns 1:2: with
+  !> respect to s_o, times so_ratio; theta_o = theta(zeta_o) for a wearing plane).
+  pure subroutine trapezoidal_start(mat, k, s_o, so_ratio, beta_o, dmg_o, theta_o, ncol, g, dg)
+    type(interlock_material_t), intent(in) :: mat
+    integer, intent(in) :: k, ncol
+    real(dp), intent(in) :: s_o(2), so_ratio, beta_o, dmg_o, theta_o
+    real(dp), intent(out) :: g, dg(6)
+    real(dp) :: c, sn, skn, kmu, d_tmp, dd_db
+    dg = 0.0_dp
+    if (mat%plane_wears(k)) then
+      c = cos(theta_o)
+      sn = sin(theta_o)
+    else
+      c = mat%cos0(k)
+      sn = mat%sin0(k)
+    end if
+    skn = c * s_o(1) + sn * s_o(2)
+    kmu = mat%mu_eff * mat%kn
+    g = 0.0_dp
+    if (.not. (s_o(1) * mat%inv_h_n < 1.0_dp .and. skn < 0.0_dp)) return
+    g = 0.5_dp * dmg_o * (kmu * max(0.0_dp, -skn))
+    dg(1:2) = -0.5_dp * dmg_o * kmu * so_ratio * [c, sn]
+    if (ncol > 2) then
+      dd_db = 0.0_dp
+      if (mat%use_damage) call damage_of_beta(mat%eta, mat%beta_break, beta_o, d_tmp, dd_db)
+      dg(3) = 0.5_dp * kmu * max(0.0_dp, -skn) * dd_db
+      ! d skn / d theta = s_kt of the start state
+      if (mat%plane_wears(k)) dg(5) = -0.5_dp * dmg_o * kmu * (-sn * s_o(1) + c * s_o(2)) * &
+          worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), theta_o)
+    end if
+  end subroutine trapezoidal_start
+
   !> R(theta) = [[c, s], [-s, c]]: d(s_kn, s_kt)/d(s_N, s_T).
   pure function rotation(c, sn) result(rot)
     real(dp), intent(in) :: c, sn
@@ -151,15 +241,17 @@ contains
     rot(2, :) = [-sn, c]
   end function rotation
 
-  !> Backward-Euler wear of one plane: F(zeta) = zeta - zeta_o - g(theta(zeta)) = 0, with
-  !> g = D |tau_f| |sf - sf_o| evaluated at the end of the step. F(zeta_o) = -g <= 0; the root
-  !> is bracketed from zeta_o upwards and found by Newton's method safeguarded by bisection.
-  pure subroutine solve_wear(mat, solver, k, s, beta_o, sf_o, zeta_o, theta_o, r, zeta, theta, &
-                             c, sn, sl, thp, fp, iterations, ok)
+  !> Coupled wear of one plane: F(zeta) = zeta - zeta_o - G(theta(zeta)) = 0, with the driver
+  !> G = a_end D |tau_f| |sf - sf_o| + g_start |sf - sf_o| evaluated at the end of the step
+  !> (backward Euler: a_end = 1, g_start = 0; trapezoidal: 1/2 and D_o |tauf_o| / 2).
+  !> F(zeta_o) = -G <= 0; the root is bracketed from zeta_o upwards and found by Newton's
+  !> method safeguarded by bisection.
+  pure subroutine solve_wear(mat, solver, k, s, beta_o, sf_o, zeta_o, theta_o, a_end, g_start, &
+                             r, zeta, theta, c, sn, sl, thp, fp, iterations, ok)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     integer, intent(in) :: k
-    real(dp), intent(in) :: s(2), beta_o, sf_o, zeta_o, theta_o
+    real(dp), intent(in) :: s(2), beta_o, sf_o, zeta_o, theta_o, a_end, g_start
     type(local_t), intent(out) :: r
     real(dp), intent(out) :: zeta, theta, c, sn, sl(2), thp, fp
     integer, intent(out) :: iterations
@@ -172,14 +264,14 @@ contains
     ! At zeta_o: theta = theta_o (stored), no exponential needed.
     theta = theta_o
     thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), theta_o)
-    call wear_residual(mat, k, s, beta_o, sf_o, zeta_o, zeta_o, .false., theta, thp, r, c, sn, sl, &
-                       f, fp)
+    call wear_residual(mat, k, s, beta_o, sf_o, zeta_o, a_end, g_start, zeta_o, .false., theta, &
+                       thp, r, c, sn, sl, f, fp)
     zeta = zeta_o
     if (.not. (-f > 0.0_dp)) return      ! no frictional work: zeta stays, F = 0 exactly
     call wear_root_begin(rt, zeta_o, -f)
     do
-      call wear_residual(mat, k, s, beta_o, sf_o, zeta_o, rt%x, .true., theta, thp, r, c, sn, sl, &
-                         f, fp)
+      call wear_residual(mat, k, s, beta_o, sf_o, zeta_o, a_end, g_start, rt%x, .true., theta, &
+                         thp, r, c, sn, sl, f, fp)
       call wear_root_update(rt, f, fp, solver%newton_tol, solver%newton_max_iterations)
       if (rt%done) exit
     end do
@@ -188,13 +280,13 @@ contains
     ok = rt%ok
   end subroutine solve_wear
 
-  !> F(z) = z - zeta_o - g(theta(z)) and F'(z) for plane k (theta and its slope kept as given
+  !> F(z) = z - zeta_o - G(theta(z)) and F'(z) for plane k (theta and its slope kept as given
   !> when `update_angle` is false: they are the start-of-step values).
-  pure subroutine wear_residual(mat, k, s, beta_o, sf_o, zeta_o, z, update_angle, theta, thp, r, &
-                                c, sn, sl, f, fp)
+  pure subroutine wear_residual(mat, k, s, beta_o, sf_o, zeta_o, a_end, g_start, z, update_angle, &
+                                theta, thp, r, c, sn, sl, f, fp)
     type(interlock_material_t), intent(in) :: mat
     integer, intent(in) :: k
-    real(dp), intent(in) :: s(2), beta_o, sf_o, zeta_o, z
+    real(dp), intent(in) :: s(2), beta_o, sf_o, zeta_o, a_end, g_start, z
     logical, intent(in) :: update_angle
     real(dp), intent(inout) :: theta, thp
     type(local_t), intent(out) :: r
@@ -205,8 +297,8 @@ contains
     sn = sin(theta)
     call to_local(c, sn, s, sl)
     call microplane_update(mat, sl, beta_o, sf_o, mat%d_frozen, r)
-    f = z - zeta_o - r%wdrv
-    fp = 1.0_dp - thp * dot_product(r%gwdrv(1:2), dlocal_dtheta(sl))
+    f = z - zeta_o - (a_end * r%wdrv + g_start * r%slip)
+    fp = 1.0_dp - thp * dot_product(a_end * r%gwdrv(1:2) + g_start * r%gslip(1:2), dlocal_dtheta(sl))
   end subroutine wear_residual
 
 end module interlock_schemes

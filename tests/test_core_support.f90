@@ -8,7 +8,7 @@ module test_core_support
   private
   public :: table1_material, table2_material, flat_material, prepare_or_fail
   public :: drive_to, solve_sigma_n, fd_tangent, matrix_rel_error, slide_history
-  public :: rng_t, rng_uniform, read_reference_row
+  public :: rng_t, rng_uniform, read_reference_row, nth_scheme
 
   !> xorshift64 (Marsaglia): identical sequences on every compiler and platform.
   type :: rng_t
@@ -16,6 +16,19 @@ module test_core_support
   end type rng_t
 
 contains
+
+  !> The schemes in turn: 1, 4, ... explicit; 2, 5, ... implicit; 3, 6, ... trapezoidal.
+  pure integer function nth_scheme(i) result(scheme)
+    integer, intent(in) :: i
+    select case (mod(i - 1, 3))
+    case (0)
+      scheme = scheme_explicit
+    case (1)
+      scheme = scheme_implicit
+    case default
+      scheme = scheme_trapezoidal
+    end select
+  end function nth_scheme
 
   !> Validate a material in a test: a failure is an assertion failure, not a stop.
   subroutine prepare_or_fail(mat)

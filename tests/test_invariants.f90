@@ -1,12 +1,14 @@
-!> Invariants along long random histories (fixed seed, portable generator), for both schemes
+!> Invariants along long random histories (fixed seed, portable generator), for every scheme
 !> with and without substepping: D in [0, 1] and non-decreasing, beta and zeta non-decreasing,
 !> theta between theta_f and theta_0, both dissipations non-negative and non-decreasing, and
-!> nothing NaN or infinite. Each update must also succeed.
+!> nothing NaN or infinite. Each update must also succeed, and a zero increment after it must
+!> return the same traction (SPEC D10) in every scheme but the explicit one, where it must not
+!> somewhere (the test sees the difference).
 module test_invariants
   use interlock
   use interlock_assert, only: assert_true, assert_equal
   use test_core_support, only: table1_material, table2_material, prepare_or_fail, rng_t, &
-      rng_uniform
+      rng_uniform, nth_scheme
   use, intrinsic :: iso_fortran_env, only: output_unit
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   implicit none
@@ -41,9 +43,9 @@ contains
     integer(kind=8), intent(in) :: seed
     type(interlock_solver_t) :: solver
     integer :: is
-    do is = 1, 4
-      solver%scheme = merge(scheme_explicit, scheme_implicit, mod(is, 2) == 1)
-      solver%substep_tol = merge(1.0e-3_dp, 0.0_dp, is > 2)
+    do is = 1, 6
+      solver%scheme = nth_scheme(is)
+      solver%substep_tol = merge(1.0e-3_dp, 0.0_dp, is > 3)
       call random_history(mat, solver, sn_range, st_max, step, seed)
     end do
   end subroutine run_all_solvers
@@ -56,10 +58,11 @@ contains
     real(dp), intent(in) :: sn_range(2), st_max, step(2)
     integer(kind=8), intent(in) :: seed
     type(rng_t) :: g
-    type(interlock_state_t) :: old, new
+    type(interlock_state_t) :: old, new, again
     type(interlock_info_t) :: info
-    real(dp) :: s(2), ds(2), sigma(2), tangent(2, 2), lo(max_planes), hi(max_planes)
-    integer :: i, n, bad(8), nsub, nslide
+    real(dp) :: s(2), ds(2), sigma(2), tangent(2, 2), lo(max_planes), hi(max_planes), sigma0(2), &
+                jump
+    integer :: i, n, bad(8), nsub, nslide, n_jumps
     character(len=32) :: tag
     n = mat%n_planes
     g%x = seed
@@ -68,6 +71,7 @@ contains
     call interlock_state_init(mat, old)
     s = 0.0_dp
     bad = 0
+    n_jumps = 0
     nsub = 0
     nslide = 0
     do i = 1, n_steps
@@ -95,6 +99,13 @@ contains
       if (new%diss_damage < old%diss_damage .or. new%diss_damage < 0.0_dp) bad(7) = bad(7) + 1
       if (new%diss_friction < old%diss_friction .or. new%diss_friction < 0.0_dp) &
         bad(8) = bad(8) + 1
+      ! SPEC D10: a zero increment returns the traction of the end of the step, except in the
+      ! explicit scheme (the paper's; it turns the frame to the angle stored for the next step).
+      call interlock_update(mat, solver, s, new, again, sigma0, tangent, info)
+      jump = maxval(abs(sigma0 - sigma)) / (max(mat%sigma0_n, mat%sigma0_t) + maxval(abs(sigma)))
+      ! (to round-off: the stick traction K_t (s_kt - sf) is recomputed)
+      if (jump > 1.0e-11_dp) n_jumps = n_jumps + 1
+      if (info%status /= status_ok) bad(1) = bad(1) + 1
       old = new
     end do
     tag = scheme_name(solver%scheme)
@@ -112,6 +123,11 @@ contains
     call assert_equal(0, bad(6), trim(tag) // 'theta between theta_f and theta_0')
     call assert_equal(0, bad(7), trim(tag) // 'damage dissipation non-negative, non-decreasing')
     call assert_equal(0, bad(8), trim(tag) // 'friction dissipation non-negative, non-decreasing')
+    if (solver%scheme == scheme_explicit) then
+      call assert_true(n_jumps > 0, trim(tag) // 'a zero increment after wear jumps (D10)')
+    else
+      call assert_equal(0, n_jumps, trim(tag) // 'a zero increment returns the same traction (D10)')
+    end if
     ! The history must exercise what it guards.
     call assert_true(maxval(old%damage(1:n)) >= 1.0_dp, trim(tag) // 'the history breaks a plane')
     call assert_true(nslide > n_steps / 20, trim(tag) // 'the history slides in contact often')

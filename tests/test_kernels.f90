@@ -56,7 +56,7 @@ contains
     ksc = max(mat%kn, mat%kt)
     ssc = max(mat%sigma0_n, mat%sigma0_t)
     n = mat%n_planes
-    do scheme = scheme_explicit, scheme_implicit
+    do scheme = scheme_explicit, scheme_trapezoidal
       solver%scheme = scheme
       call interlock_state_init(mat, old)
       s = 0.0_dp

@@ -11,7 +11,8 @@ module interlock_deck
   use interlock, only: dp, deg_to_rad, pi, max_planes, n_effects, &
       interlock_material_t, interlock_solver_t, interlock_state_t, interlock_state_init, &
       interlock_material_prepare, interlock_paper_ria, scheme_explicit, scheme_implicit, &
-      properties, property_index, check_property, format_range, format_integer, format_real, &
+      scheme_trapezoidal, properties, property_index, check_property, format_range, &
+      format_integer, format_real, &
       prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
       prop_thetaf, prop_zeta0, prop_prefractured, prop_scheme, prop_substep_tol, prop_max_dd, &
       prop_max_dtheta, prop_tangent, prop_effect_damage, prop_effect_wear, is_nan_value, same_value, &
@@ -84,7 +85,7 @@ module interlock_deck
     var_t(4, 'tangential', 'real numbers, one per point (at most 10001) [MPa or mm]'), &
     var_t(4, 'steps', 'integers, one per segment (at most 10000)'), &
     var_t(4, 'cycles', 'an integer (1 to 100000)'), &
-    var_t(5, 'scheme', "a quoted string: 'explicit' or 'implicit'"), &
+    var_t(5, 'scheme', "a quoted string: 'explicit', 'implicit' or 'trapezoidal'"), &
     var_t(5, 'substep_tol', 'a real number [-]'), var_t(5, 'newton_tol', 'a real number [-]'), &
     var_t(5, 'newton_max_iterations', 'an integer (1 to 1000)'), &
     var_t(5, 'max_cuts', 'an integer (0 to 50)'), &
@@ -1090,7 +1091,7 @@ contains
     character(len=:), allocatable :: probe
     integer :: kp
     namelist /solver/ scheme, substep_tol, newton_tol, newton_max_iterations, max_cuts, extrapolate
-    scheme = 'explicit'
+    scheme = 'trapezoidal'
     substep_tol = 0.0_dp
     newton_tol = deck%control%tol
     newton_max_iterations = deck%control%max_iterations
@@ -1112,8 +1113,11 @@ contains
       deck%solver%scheme = scheme_explicit
     case ('implicit')
       deck%solver%scheme = scheme_implicit
+    case ('trapezoidal')
+      deck%solver%scheme = scheme_trapezoidal
     case default
-      message = "scheme = '" // trim(scheme) // "' is inadmissible: admissible 'explicit' or 'implicit'"
+      message = "scheme = '" // trim(scheme) // "' is inadmissible: admissible 'explicit', " // &
+                "'implicit' or 'trapezoidal'"
       return
     end select
     call check_value(prop_substep_tol, substep_tol, message)
