@@ -101,7 +101,7 @@ contains
   end function history_output
 
   !> The model's values at the curve's points (branch matching, linear interpolation), and the
-  !> range of history rows that covers the curve's branches (first_row:last_row) for plots.
+  !> range of history rows between the first and the last row used (first_row:last_row), for plots.
   subroutine curve_model(c, hist, y, first_row, last_row, message)
     type(curve_t), intent(in) :: c
     type(history_t), intent(in) :: hist
@@ -145,8 +145,6 @@ contains
         lo = findloc(hb, b, dim=1)
         hi = findloc(hb, b, dim=1, back=.true.)
         if (lo > 1) lo = lo - 1
-        first_row = min(first_row, lo)
-        last_row = max(last_row, hi)
       end if
       ! the segment of [lo, hi] that holds x (the branch is monotone)
       a = 0
@@ -167,9 +165,13 @@ contains
           return
         end if
         y(i) = hy(z)
+        first_row = min(first_row, z)
+        last_row = max(last_row, z)
       else
         t = (c%x(i) - hx(a)) / (hx(a + 1) - hx(a))
         y(i) = hy(a) + t * (hy(a + 1) - hy(a))
+        first_row = min(first_row, a)
+        last_row = max(last_row, a + 1)
       end if
     end do
   end subroutine curve_model
