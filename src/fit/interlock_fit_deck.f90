@@ -14,7 +14,7 @@ module interlock_fit_deck
   implicit none
   private
   public :: fit_t, curve_t, stage_t, read_fit_deck, output_names, n_outputs, fit_groups, &
-            split_branches, deck_value
+            split_branches, deck_value, join_selected
 
   integer, parameter :: max_curves = 32, max_free = 16, max_stages = 16
   integer, parameter :: name_len = 64, file_len = 1024, list_len = 1024
@@ -51,6 +51,7 @@ module interlock_fit_deck
   type :: fit_t
     type(deck_t) :: deck
     type(curve_t), allocatable :: curves(:)
+    character(len=name_len), allocatable :: curve_names(:)   !< curves(:)%name
     character(len=name_len), allocatable :: names(:)
     integer, allocatable :: property(:)
     real(dp), allocatable :: start(:), lower(:), upper(:)
@@ -187,6 +188,8 @@ contains
       call read_curve(i)
       if (len_trim(message) > 0) return
     end do
+
+    fd%curve_names = curve_name(1:nc)
 
     ! stages
     ns = count(stage_parameters /= '')
@@ -472,6 +475,7 @@ contains
       v = abs(deck%theta0_deg(1))
     case (prop_thetaf)
       v = abs(deck%thetaf_deg(1))
+      if (.not. deck%thetaf_given) v = abs(deck%theta0_deg(1))   ! no thetaf_deg: no wear
     case default
       v = deck%zeta0(1)
     end select
@@ -532,6 +536,14 @@ contains
       text = text // trim(names(i))
     end do
   end function join
+
+  !> names(idx(1)), names(idx(2)), ... joined by ', '.
+  function join_selected(names, idx) result(text)
+    character(len=*), intent(in) :: names(:)
+    integer, intent(in) :: idx(:)
+    character(len=:), allocatable :: text
+    text = join(names(idx))
+  end function join_selected
 
   function fittable_names() result(text)
     character(len=:), allocatable :: text

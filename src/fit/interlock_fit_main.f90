@@ -5,13 +5,13 @@
 !> (max_iterations, or no step lowers the cost).
 program interlock_fit
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-  use interlock_cli, only: exit_program
+  use interlock_cli, only: exit_program, command_argument, command_text
   use interlock, only: dp, interlock_version_string, format_integer
   use interlock_h5, only: h5_open_library, h5_close_library
   use interlock_deck_text, only: is_folder
   use interlock_mixed_control, only: history_t
   use interlock_history_output, only: output_check_target
-  use interlock_fit_deck, only: fit_t, read_fit_deck
+  use interlock_fit_deck, only: fit_t, read_fit_deck, join_selected
   use interlock_fit_model, only: fit_problem_t, fit_history, curve_model, history_output
   use interlock_fit_output, only: stage_outcome_t, curve_outcome_t, write_fit_file, &
       write_fitted_deck, fitted_deck_check
@@ -30,7 +30,7 @@ program interlock_fit
   i = 0
   do while (i < nargs)
     i = i + 1
-    arg = argument(i)
+    arg = command_argument(i)
     if (.not. options_done .and. len(arg) > 0) then
       if (arg(1:1) == '-') then
         select case (arg)
@@ -48,7 +48,7 @@ program interlock_fit
             call exit_program(1)
           end if
           i = i + 1
-          output_dir = argument(i)
+          output_dir = command_argument(i)
         case ('--')
           options_done = .true.
         case default
@@ -78,7 +78,7 @@ program interlock_fit
       call exit_program(1)
     end if
   end if
-  command = command_line()
+  command = command_text()
   call h5_open_library(stat)
   if (stat /= 0) then
     write (error_unit, '(a)') 'interlock-fit: error: cannot initialise the HDF5 library'
@@ -103,7 +103,6 @@ contains
     character(len=:), allocatable :: base, h5_name, deck_name, why
     real(dp), allocatable :: values(:), r(:), jac(:, :), typical(:), x0(:)
     real(dp) :: t0, t1
-    character(len=64), allocatable :: curve_names(:)
     integer :: k, stat, slash, dot, j, r1, r2, n
     logical :: ok
 
@@ -131,10 +130,6 @@ contains
       return
     end if
 
-    allocate (curve_names(size(fit%curves)))
-    do j = 1, size(fit%curves)
-      curve_names(j) = fit%curves(j)%name
-    end do
     values = fit%start
     typical = max(abs(fit%start), 1.0e-3_dp * (fit%upper - fit%lower))
     call say(path // ': ' // format_integer(size(fit%names)) // ' free parameter(s), ' // &
@@ -152,8 +147,8 @@ contains
       problem%curves = fit%stages(k)%curves
       problem%m = sum([(size(fit%curves(problem%curves(j))%x), j = 1, size(problem%curves))])
       problem%runs = 0
-      call say('stage ' // format_integer(k) // ': ' // names_of(fit%names, problem%free) // &
-               ' on ' // names_of(curve_names, problem%curves) // ' (' // format_integer(problem%m) // ' points)')
+      call say('stage ' // format_integer(k) // ': ' // join_selected(fit%names, problem%free) // &
+               ' on ' // join_selected(fit%curve_names, problem%curves) // ' (' // format_integer(problem%m) // ' points)')
       x0 = values(problem%free)
       call lm_solve(problem, x0, fit%lower(problem%free), fit%upper(problem%free), &
                     typical(problem%free), fit%options, stages(k)%result)
@@ -276,18 +271,6 @@ contains
     end do
   end subroutine report
 
-  function names_of(names, idx) result(text)
-    character(len=*), intent(in) :: names(:)
-    integer, intent(in) :: idx(:)
-    character(len=:), allocatable :: text
-    integer :: j
-    text = ''
-    do j = 1, size(idx)
-      if (j > 1) text = text // ', '
-      text = text // trim(names(idx(j)))
-    end do
-  end function names_of
-
   function seconds(t) result(text)
     real(dp), intent(in) :: t
     character(len=:), allocatable :: text
@@ -302,23 +285,6 @@ contains
     write (output_unit, '(a)') text
     flush (output_unit)
   end subroutine say
-
-  function argument(k) result(text)
-    integer, intent(in) :: k
-    character(len=:), allocatable :: text
-    integer :: length
-    call get_command_argument(k, length=length)
-    allocate (character(len=length) :: text)
-    if (length > 0) call get_command_argument(k, text)
-  end function argument
-
-  function command_line() result(text)
-    character(len=:), allocatable :: text
-    integer :: length
-    call get_command(length=length)
-    allocate (character(len=length) :: text)
-    if (length > 0) call get_command(text)
-  end function command_line
 
   subroutine usage(unit)
     integer, intent(in) :: unit

@@ -13,7 +13,7 @@ module interlock_fit_output
   use interlock_files, only: path_kind, path_absent, path_regular, same_file, guard_file, &
       unguard_file, remove_file, rename_file, process_id
   use interlock_deck_text, only: group_scan_t, scan_deck
-  use interlock_fit_deck, only: fit_t, fit_groups, output_names
+  use interlock_fit_deck, only: fit_t, fit_groups, output_names, join_selected
   use interlock_lm, only: lm_result_t, lm_stats_t
   implicit none
   private
@@ -90,9 +90,9 @@ contains
       if (stat == 0) call h5_attribute(sg, 'histories', stages(k)%runs, stat)
       if (stat == 0) call h5_attribute(sg, 'cost', stages(k)%result%cost, stat)
       if (stat == 0) call h5_attribute(sg, 'cpu_seconds', stages(k)%seconds, stat)
-      if (stat == 0) call h5_attribute(sg, 'free', join_names(fit%stages(k)%free), stat)
+      if (stat == 0) call h5_attribute(sg, 'free', join_selected(fit%names, fit%stages(k)%free), stat)
       if (stat == 0) call h5_attribute(sg, 'values', stages(k)%result%x, stat)
-      if (stat == 0) call h5_attribute(sg, 'curves', join_curves(fit%stages(k)%curves), stat)
+      if (stat == 0) call h5_attribute(sg, 'curves', join_selected(fit%curve_names, fit%stages(k)%curves), stat)
       if (stat == 0) call h5_close_group(sg, stat)
     end do
     if (stat == 0) call h5_close_group(top, stat)
@@ -128,30 +128,6 @@ contains
       return
     end if
     call output_close(out, stat, message)
-
-  contains
-
-    function join_names(idx) result(text)
-      integer, intent(in) :: idx(:)
-      character(len=:), allocatable :: text
-      integer :: j
-      text = ''
-      do j = 1, size(idx)
-        if (j > 1) text = text // ', '
-        text = text // trim(fit%names(idx(j)))
-      end do
-    end function join_names
-
-    function join_curves(idx) result(text)
-      integer, intent(in) :: idx(:)
-      character(len=:), allocatable :: text
-      integer :: j
-      text = ''
-      do j = 1, size(idx)
-        if (j > 1) text = text // ', '
-        text = text // fit%curves(idx(j))%name
-      end do
-    end function join_curves
 
   end subroutine write_fit_file
 
