@@ -20,10 +20,12 @@ add_test(NAME fit_staged_granite
           $<TARGET_FILE:interlock-fit> $<TARGET_FILE:interlock-history> staged
           ${PROJECT_SOURCE_DIR}/inputs/fit/granite_staged.nml)
 set_tests_properties(fit_staged_granite PROPERTIES LABELS fit TIMEOUT 300)
-add_test(NAME fit_files
-  COMMAND ${INTERLOCK_FIT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_fit.py
-          $<TARGET_FILE:interlock-fit> $<TARGET_FILE:interlock-history> files)
-set_tests_properties(fit_files PROPERTIES LABELS fit TIMEOUT 300)
+foreach(mode files identifiability)
+  add_test(NAME fit_${mode}
+    COMMAND ${INTERLOCK_FIT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_fit.py
+            $<TARGET_FILE:interlock-fit> $<TARGET_FILE:interlock-history> ${mode})
+  set_tests_properties(fit_${mode} PROPERTIES LABELS fit TIMEOUT 300)
+endforeach()
 file(GLOB fit_bad_decks CONFIGURE_DEPENDS ${INTERLOCK_TEST_DATA}/bad_fit_decks/*.expected)
 foreach(expected IN LISTS fit_bad_decks)
   get_filename_component(name ${expected} NAME_WE)

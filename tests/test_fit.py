@@ -4,6 +4,7 @@
 usage: test_fit.py FIT HISTORY recovery SET NOISE   SET: granite | table5; NOISE: 0 or 0.02
        test_fit.py FIT HISTORY staged DECK.nml      the staged deck of inputs/fit/ (section 4.1.5)
        test_fit.py FIT HISTORY files                results replace results, never other files
+       test_fit.py FIT HISTORY identifiability      a parameter the curves ignore is reported
 
 The data are the curves of a history with known parameters (scripts/fit_make_data.py; noise:
 independent normal noise of 2 % of each curve's largest value, numpy default_rng(12), the same on
@@ -207,10 +208,38 @@ def files(fit, history):
         print("foreign files refused, earlier results replaced")
 
 
+def identifiability(fit, history):
+    """A parameter the curves do not depend on (zeta_0 with wear switched off) is reported not
+    identifiable (terminal and HDF5), the others keep finite standard errors."""
+    history_part, _ = SETS["table5"]
+    history_part += "&effects\n  wear = .false.\n/\n"
+    with tempfile.TemporaryDirectory() as work:
+        data_deck = os.path.join(work, "truth.nml")
+        with open(data_deck, "w") as f:
+            f.write(history_part)
+        run([sys.executable, MAKE_DATA, history, data_deck, os.path.join(work, "data.csv"),
+             "--noise", "0.02"], work)
+        deck = os.path.join(work, "t.nml")
+        with open(deck, "w") as f:
+            f.write(history_part + FIT.format(names="'mu', 'zeta0'", start="0.42, 49.0",
+                                              lower="0.1, 1.0", upper="1.5, 500.0"))
+        out, _ = run([fit, "-q", deck], work)
+        print(out)
+        assert "not identifiable from these curves: zeta0" in out, out
+        with h5py.File(os.path.join(work, "t_fit.h5"), "r") as f:
+            ident = list(f.attrs["identifiable"])
+            se = f.attrs["std_error"]
+        assert ident == [1.0, 0.0], ident
+        assert se[0] < 1e-2 and se[1] > 1e300, se
+    print("zeta0 reported not identifiable without wear")
+
+
 def main():
     fit, history, mode = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2]), sys.argv[3]
     if mode == "recovery":
         recovery(fit, history, sys.argv[4], float(sys.argv[5]))
+    elif mode == "identifiability":
+        identifiability(fit, history)
     elif mode == "files":
         files(fit, history)
     elif mode == "staged":

@@ -255,6 +255,7 @@ contains
       write (output_unit, '(a16, *(f9.4))') trim(fit%names(i)), (stats%correlation(i, j), j = 1, n)
     end do
     write (line, '(es10.3)') stats%condition
+    if (stats%condition >= huge(1.0_dp)) line = 'infinite'
     if (stats%ill_conditioned) then
       write (output_unit, '(a)') 'condition number of the scaled Jacobian: ' // &
         trim(adjustl(line)) // ': ILL-CONDITIONED (above 1e4: the data determine some ' // &
@@ -263,7 +264,8 @@ contains
       write (output_unit, '(a)') 'condition number of the scaled Jacobian: ' // trim(adjustl(line))
     end if
     if (len(bad) > 0) write (output_unit, '(a)') 'not identifiable from these curves:' // bad // &
-      ' (a direction of the Jacobian with a relative singular value below 1e-6)'
+      ' (the curves do not depend on it, or only together with others: a direction of the', &
+      ' scaled Jacobian with a relative singular value below 1e-6)'
     write (output_unit, '(a)') 'residuals per curve (weighted norm; rms in the curve''s unit):'
     do i = 1, size(fit%curves)
       write (output_unit, '(2x, a20, es12.4, es12.4, i8, a)') fit%curves(i)%name, &
