@@ -234,7 +234,7 @@ contains
       end do
       if (.not. found) call add_edit(scan(g)%first, 0, achar(10) // '  ' // &
                                      trim(properties(ip)%name) // ' = ' // value // &
-                                     '   ! added by interlock-fit' // achar(10) // ' ')
+                                     '   ! added by interlock-fit' // achar(10))
     end do
     ! remove &fit: from its '&' to the end of its terminator
     amp = index(text(1:scan(9)%first), '&', back=.true.)
