@@ -24,12 +24,13 @@ module interlock_lm
             lm_statistics
 
   !> A least-squares problem: m residuals of n parameters. residuals(x, r, ok): ok = .false.
-  !> where r cannot be computed (the trial point is then rejected).
+  !> where r cannot be computed (the trial point is then rejected); progress: a report per
+  !> accepted iteration.
   type, abstract :: lm_problem_t
     integer :: m = 0
   contains
     procedure(residual_function), deferred :: residuals
-    procedure :: progress => no_progress
+    procedure(progress_report), deferred :: progress
   end type lm_problem_t
 
   abstract interface
@@ -40,6 +41,13 @@ module interlock_lm
       real(dp), intent(out) :: r(:)
       logical, intent(out) :: ok
     end subroutine residual_function
+    !> Called after each accepted iteration (iteration 0: the start).
+    subroutine progress_report(problem, iteration, x, cost, lambda)
+      import :: lm_problem_t, dp
+      class(lm_problem_t), intent(inout) :: problem
+      integer, intent(in) :: iteration
+      real(dp), intent(in) :: x(:), cost, lambda
+    end subroutine progress_report
   end interface
 
   type :: lm_options_t
@@ -92,13 +100,6 @@ module interlock_lm
   end interface
 
 contains
-
-  subroutine no_progress(problem, iteration, x, cost, lambda)
-    class(lm_problem_t), intent(inout) :: problem
-    integer, intent(in) :: iteration
-    real(dp), intent(in) :: x(:), cost, lambda
-    if (.false.) problem%m = problem%m + 0 * iteration + 0 * int(x(1) + cost + lambda)
-  end subroutine no_progress
 
   !> Minimise 1/2 |r(x)|^2 over [lower, upper] from x0 (inside the box). `typical`: the size of
   !> each parameter for the difference steps (> 0).
