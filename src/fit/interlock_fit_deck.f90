@@ -83,7 +83,7 @@ contains
       max_iterations, xtol, ftol, gtol, fd_step
     integer :: u, ios, k, nc, np, ns, i
     character(len=512) :: iomsg
-    character(len=:), allocatable :: where
+    character(len=:), allocatable :: prefix
 
     stat = 1
     call read_deck(path, fd%deck, stat, message, ['fit'])
@@ -94,7 +94,7 @@ contains
       message = path // ': ' // trim(message)
       return
     end if
-    where = path // ': &fit: '
+    prefix = path // ': &fit: '
     if (.not. scan(9)%present) then
       message = path // ': the group &fit is missing (interlock-fit needs the curves and ' // &
                 'the free parameters: docs/fit.md)'
@@ -106,7 +106,7 @@ contains
     end if
     do k = 1, scan(9)%n
       if (index(', ' // fit_vars // ',', ', ' // trim(to_lower(scan(9)%a(k)%name)) // ',') == 0) then
-        message = where // 'line ' // format_integer(scan(9)%a(k)%line) // ': unknown ' // &
+        message = prefix // 'line ' // format_integer(scan(9)%a(k)%line) // ': unknown ' // &
                   'variable ' // trim(scan(9)%a(k)%name) // ' (the variables are ' // fit_vars // ')'
         return
       end if
@@ -138,14 +138,14 @@ contains
     if (ios == 0) read (u, nml=fit, iostat=ios, iomsg=iomsg)
     close (u)
     if (ios /= 0) then
-      message = where // 'cannot read the group: ' // trim(iomsg) // ' (docs/fit.md says what ' // &
+      message = prefix // 'cannot read the group: ' // trim(iomsg) // ' (docs/fit.md says what ' // &
                 'each variable takes)'
       return
     end if
 
     ! options
     if (max_iterations < 1 .or. max_iterations > 100000) then
-      message = where // 'max_iterations = ' // format_integer(max_iterations) // &
+      message = prefix // 'max_iterations = ' // format_integer(max_iterations) // &
                 ' is inadmissible: admissible 1 to 100000'
       return
     end if
@@ -162,7 +162,7 @@ contains
     ! parameters
     np = count(parameters /= '')
     if (np == 0 .or. any(parameters(np + 1:) /= '')) then
-      message = where // 'parameters: give the names of the free parameters, one after the ' // &
+      message = prefix // 'parameters: give the names of the free parameters, one after the ' // &
                 'other (at most ' // format_integer(max_free) // ')'
       return
     end if
@@ -179,7 +179,7 @@ contains
     ! curves
     nc = count(curve_file /= '')
     if (nc == 0 .or. any(curve_file(nc + 1:) /= '')) then
-      message = where // 'curve_file: give one CSV file per curve (at most ' // &
+      message = prefix // 'curve_file: give one CSV file per curve (at most ' // &
                 format_integer(max_curves) // ')'
       return
     end if
@@ -195,7 +195,7 @@ contains
     ns = count(stage_parameters /= '')
     if (ns == 0) then
       if (any(stage_curves /= '')) then
-        message = where // 'stage_curves is given without stage_parameters'
+        message = prefix // 'stage_curves is given without stage_parameters'
         return
       end if
       allocate (fd%stages(1))
@@ -203,7 +203,7 @@ contains
       fd%stages(1)%curves = [(i, i = 1, nc)]
     else
       if (count(stage_curves /= '') /= ns) then
-        message = where // 'stage_curves: give one list of curves per stage (' // &
+        message = prefix // 'stage_curves: give one list of curves per stage (' // &
                   format_integer(ns) // ' stages in stage_parameters)'
         return
       end if
@@ -220,7 +220,7 @@ contains
       end do
       do i = 1, np
         if (.not. any([(any(fd%stages(k)%free == i), k = 1, ns)])) then
-          message = where // 'parameter ' // trim(fd%names(i)) // ' is in no stage ' // &
+          message = prefix // 'parameter ' // trim(fd%names(i)) // ' is in no stage ' // &
                     '(stage_parameters)'
           return
         end if
@@ -229,7 +229,7 @@ contains
     do k = 1, size(fd%stages)
       i = sum([(size(fd%curves(fd%stages(k)%curves(nc))%x), nc = 1, size(fd%stages(k)%curves))])
       if (i <= size(fd%stages(k)%free)) then
-        message = where // 'stage ' // format_integer(k) // ': its curves have ' // &
+        message = prefix // 'stage ' // format_integer(k) // ': its curves have ' // &
                   format_integer(i) // ' points: a fit of ' // &
                   format_integer(size(fd%stages(k)%free)) // ' parameters needs more points ' // &
                   'than parameters'
@@ -245,7 +245,7 @@ contains
       real(dp), intent(in) :: x, lo, hi
       character(len=*), intent(in) :: name
       in_range = x >= lo .and. x <= hi
-      if (.not. in_range) message = where // name // ' = ' // format_real(x) // &
+      if (.not. in_range) message = prefix // name // ' = ' // format_real(x) // &
         ' is inadmissible: admissible ' // format_real(lo) // ' <= ' // name // ' <= ' // format_real(hi)
     end function in_range
 
@@ -259,33 +259,33 @@ contains
       fd%names(i) = name
       ip = property_index(name)
       if (ip == 0) then
-        message = where // 'parameters: ''' // name // ''' is not a property of the material ' // &
+        message = prefix // 'parameters: ''' // name // ''' is not a property of the material ' // &
                   'table (the parameters a fit can free: ' // fittable_names() // ')'
         return
       end if
       if (ip < prop_sigma0_n .or. ip > prop_zeta0) then
-        message = where // 'parameters: ''' // name // ''' is not a parameter a fit can free ' // &
+        message = prefix // 'parameters: ''' // name // ''' is not a parameter a fit can free ' // &
                   '(a flag, a choice or a solver control); the parameters: ' // fittable_names()
         return
       end if
       if (count(fd%names(1:i) == name) > 1) then
-        message = where // 'parameters: ''' // name // ''' is given twice'
+        message = prefix // 'parameters: ''' // name // ''' is given twice'
         return
       end if
       fd%property(i) = ip
       if (same_value(fd%start(i), unset)) fd%start(i) = deck_value(fd%deck, ip)
       if (same_value(fd%lower(i), unset) .or. same_value(fd%upper(i), unset)) then
-        message = where // 'parameter ' // name // ' needs both bounds (lower and upper, ' // &
+        message = prefix // 'parameter ' // name // ' needs both bounds (lower and upper, ' // &
                   'finite, in ' // format_range(ip) // ')'
         return
       end if
       if (.not. (fd%lower(i) < fd%upper(i))) then
-        message = where // 'parameter ' // name // ': lower = ' // format_real(fd%lower(i)) // &
+        message = prefix // 'parameter ' // name // ': lower = ' // format_real(fd%lower(i)) // &
                   ' must be below upper = ' // format_real(fd%upper(i))
         return
       end if
       if (fd%start(i) < fd%lower(i) .or. fd%start(i) > fd%upper(i)) then
-        message = where // 'parameter ' // name // ': the bounds [' // format_real(fd%lower(i)) // &
+        message = prefix // 'parameter ' // name // ': the bounds [' // format_real(fd%lower(i)) // &
                   ', ' // format_real(fd%upper(i)) // '] exclude the start value ' // &
                   format_real(fd%start(i)) // ' (admissible lower <= start <= upper)'
         return
@@ -297,12 +297,12 @@ contains
         why = 'the bounds must be finite (< 1e30)'
       end if
       if (.not. ok) then
-        message = where // 'parameter ' // name // ' bounds [' // format_real(fd%lower(i)) // &
+        message = prefix // 'parameter ' // name // ' bounds [' // format_real(fd%lower(i)) // &
                   ', ' // format_real(fd%upper(i)) // ']: ' // trim(why)
         return
       end if
       if (fd%lower(i) <= 0.0_dp .and. (ip == prop_h_n .or. ip == prop_zeta0)) then
-        message = where // 'parameter ' // name // ': lower = ' // format_real(fd%lower(i)) // &
+        message = prefix // 'parameter ' // name // ': lower = ' // format_real(fd%lower(i)) // &
                   ' is inadmissible: admissible lower > 0 ' // '[' // trim(properties(ip)%unit) // ']'
         return
       end if
@@ -320,12 +320,12 @@ contains
       cname = trim(curve_name(i))
       if (len(cname) == 0) cname = 'curve' // format_integer(i)
       if (index(cname, ',') > 0 .or. index(cname, '/') > 0) then
-        message = where // 'curve_name(' // format_integer(i) // ') = ''' // cname // &
+        message = prefix // 'curve_name(' // format_integer(i) // ') = ''' // cname // &
                   ''': a name without commas or slashes'
         return
       end if
       if (any(curve_name(1:i - 1) == cname)) then
-        message = where // 'curve_name: ''' // cname // ''' is given twice'
+        message = prefix // 'curve_name: ''' // cname // ''' is given twice'
         return
       end if
       c%name = cname
@@ -336,14 +336,14 @@ contains
       c%along = output_index(curve_along(i))
       c%against = output_index(curve_against(i))
       if (c%along == 0 .or. c%against == 0) then
-        message = where // 'curve ' // cname // ': curve_along = ''' // trim(curve_along(i)) // &
+        message = prefix // 'curve ' // cname // ': curve_along = ''' // trim(curve_along(i)) // &
                   ''', curve_against = ''' // trim(curve_against(i)) // ''': each must be one ' // &
                   'of the history outputs ' // join(output_names)
         return
       end if
       call read_csv(file, csv, message)
       if (len_trim(message) > 0) then
-        message = where // 'curve ' // cname // ': ' // trim(message)
+        message = prefix // 'curve ' // cname // ': ' // trim(message)
         return
       end if
       cx = find_column(csv, curve_x(i), 'curve_x', cname)
@@ -361,7 +361,7 @@ contains
         keep = csv%values(:, cwin) >= curve_window_min(i) .and. &
                csv%values(:, cwin) <= curve_window_max(i)
         if (.not. any(keep)) then
-          message = where // 'curve ' // cname // ': the window ' // &
+          message = prefix // 'curve ' // cname // ': the window ' // &
                     trim(curve_window_column(i)) // ' in [' // format_real(curve_window_min(i)) // &
                     ', ' // format_real(curve_window_max(i)) // '] holds no row of ' // file // &
                     ' (its ' // trim(curve_window_column(i)) // ' runs from ' // &
@@ -370,12 +370,12 @@ contains
           return
         end if
       else if (curve_window_min(i) > -huge(1.0_dp) .or. curve_window_max(i) < huge(1.0_dp)) then
-        message = where // 'curve ' // cname // ': curve_window_min/max without ' // &
+        message = prefix // 'curve ' // cname // ': curve_window_min/max without ' // &
                   'curve_window_column (the column the window applies to)'
         return
       end if
       if (count(keep) < 2) then
-        message = where // 'curve ' // cname // ': ' // file // ' has ' // &
+        message = prefix // 'curve ' // cname // ': ' // file // ' has ' // &
                   format_integer(count(keep)) // ' point(s) in the window: too few (at least 2)'
         return
       end if
@@ -389,7 +389,7 @@ contains
         if (len_trim(message) > 0) return
         c%w = pack(csv%values(:, cw), keep)
         if (any(c%w < 0.0_dp)) then
-          message = where // 'curve ' // cname // ': the weight column ' // &
+          message = prefix // 'curve ' // cname // ': the weight column ' // &
                     trim(curve_weight_column(i)) // ' has negative values (admissible >= 0)'
           return
         end if
@@ -399,7 +399,7 @@ contains
       end if
       if (.not. same_value(curve_weight(i), unset)) then
         if (.not. (curve_weight(i) > 0.0_dp .and. curve_weight(i) < huge(1.0_dp))) then
-          message = where // 'curve ' // cname // ': curve_weight = ' // &
+          message = prefix // 'curve ' // cname // ': curve_weight = ' // &
                     format_real(curve_weight(i)) // ' is inadmissible: admissible > 0'
           return
         end if
@@ -416,7 +416,7 @@ contains
       type(csv_t), intent(in) :: csv
       character(len=*), intent(in) :: name, variable, cname
       find_column = csv_column(csv, trim(name))
-      if (find_column == 0) message = where // 'curve ' // cname // ': ' // variable // &
+      if (find_column == 0) message = prefix // 'curve ' // cname // ': ' // variable // &
         ' = ''' // trim(name) // ''' is no column of the file (its columns: ' // &
         join(csv%names) // '; or a column number 1 to ' // format_integer(size(csv%names)) // ')'
     end function find_column
@@ -437,14 +437,14 @@ contains
         end if
         item = to_lower(adjustl(text(a:b - 1)))
         if (item == '') then
-          message = where // variable // ' = ''' // trim(text) // ''': an empty item'
+          message = prefix // variable // ' = ''' // trim(text) // ''': an empty item'
           return
         end if
         do j = 1, size(names)
           if (trim(to_lower(names(j))) == trim(item)) exit
         end do
         if (j > size(names)) then
-          message = where // variable // ': ''' // trim(item) // ''' is none of ' // join(names)
+          message = prefix // variable // ': ''' // trim(item) // ''' is none of ' // join(names)
           return
         end if
         indices = [indices, j]
