@@ -1,13 +1,13 @@
 !> What the command-line programs share (interlock-history, interlock-query, interlock-bench,
 !> interlock-fuzz): ending with an exit status and nothing else. Fortran's `stop 2` and
 !> `error stop 2` print "STOP 2" / "ERROR STOP 2" (and, in the Debug build, a backtrace); a
-!> usage error must print only its message and the usage.
+!> usage error must print only its message and the usage. And reading the command line whole.
 module interlock_cli
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
   use, intrinsic :: iso_c_binding, only: c_int
   implicit none
   private
-  public :: exit_program
+  public :: exit_program, command_argument, command_text
 
   interface
     !> _exit: ends the process at once, without the C exit handlers (HDF5 1.10's own handler
@@ -29,5 +29,24 @@ contains
     flush (error_unit)
     call c_exit(int(code, c_int))
   end subroutine exit_program
+
+  !> Command-line argument k, whatever its length.
+  function command_argument(k) result(text)
+    integer, intent(in) :: k
+    character(len=:), allocatable :: text
+    integer :: length
+    call get_command_argument(k, length=length)
+    allocate (character(len=length) :: text)
+    if (length > 0) call get_command_argument(k, text)
+  end function command_argument
+
+  !> The whole command line, whatever its length.
+  function command_text() result(text)
+    character(len=:), allocatable :: text
+    integer :: length
+    call get_command(length=length)
+    allocate (character(len=length) :: text)
+    if (length > 0) call get_command(text)
+  end function command_text
 
 end module interlock_cli

@@ -25,7 +25,7 @@ module interlock_deck
       ieee_set_halting_mode, ieee_overflow, ieee_invalid, ieee_divide_by_zero
   implicit none
   private
-  public :: deck_t, read_deck, deck_case, deck_n_cases, deck_groups
+  public :: deck_t, read_deck, deck_case, deck_n_cases, deck_groups, deck_set_property
   public :: max_points, max_sweep_values, max_total_steps, max_deck_bytes
   public :: n_datasets, history_datasets, curves_datasets, datasets_text, dataset_index
 
@@ -160,11 +160,14 @@ contains
   !> (file, group, variable) and what is admissible. Every case is built once to validate it.
   !> Floating-point halting is off while the deck is read, so that a value such as 1e400 reads
   !> as +Inf (and is then rejected or taken as infinity) even in a trapping (Debug) build.
-  subroutine read_deck(path, deck, stat, message)
+  !> `extra_groups` (optional): groups of another program's deck (interlock-fit's &fit) that
+  !> the text check accepts and the reader leaves to that program.
+  subroutine read_deck(path, deck, stat, message, extra_groups)
     character(len=*), intent(in) :: path
     type(deck_t), intent(out) :: deck
     integer, intent(out) :: stat
     character(len=*), intent(out) :: message
+    character(len=*), intent(in), optional :: extra_groups(:)
     logical :: halt(3)
     call ieee_get_halting_mode(ieee_overflow, halt(1))
     call ieee_get_halting_mode(ieee_invalid, halt(2))
@@ -172,18 +175,23 @@ contains
     call ieee_set_halting_mode(ieee_overflow, .false.)
     call ieee_set_halting_mode(ieee_invalid, .false.)
     call ieee_set_halting_mode(ieee_divide_by_zero, .false.)
-    call read_deck_text(path, deck, stat, message)
+    if (present(extra_groups)) then
+      call read_deck_text(path, deck, stat, message, extra_groups)
+    else
+      call read_deck_text(path, deck, stat, message, [character(len=1) ::])
+    end if
     call ieee_set_halting_mode(ieee_overflow, halt(1))
     call ieee_set_halting_mode(ieee_invalid, halt(2))
     call ieee_set_halting_mode(ieee_divide_by_zero, halt(3))
   end subroutine read_deck
 
-  subroutine read_deck_text(path, deck, stat, message)
+  subroutine read_deck_text(path, deck, stat, message, extra_groups)
     character(len=*), intent(in) :: path
     type(deck_t), intent(inout) :: deck
     integer, intent(out) :: stat
     character(len=*), intent(out) :: message
-    type(group_scan_t) :: scan(size(deck_groups))
+    character(len=*), intent(in) :: extra_groups(:)
+    type(group_scan_t) :: scan(size(deck_groups) + size(extra_groups))
     integer :: u, ios, g, icase
     character(len=512) :: iomsg
     type(interlock_material_t) :: mat
@@ -197,7 +205,8 @@ contains
     call load_text(path, deck%text, stat, message)
     if (stat /= status_ok) return
     stat = status_bad_input
-    call scan_deck(deck%text, deck_groups, scan, message)
+    call scan_deck(deck%text, [character(len=max(len(deck_groups), len(extra_groups))) :: &
+                   deck_groups, extra_groups], scan, message)
     if (len_trim(message) > 0) then
       message = path // ': ' // trim(message)
       return
@@ -300,36 +309,7 @@ contains
       v = deck%sweep_values(icase)
       label = trim(deck%sweep_parameter) // ' = ' // short_real(v)
       if (trim(properties(ip)%unit) /= '-') label = label // ' ' // trim(properties(ip)%unit)
-      select case (ip)
-      case (prop_sigma0_n)
-        d%sigma0_n = v
-      case (prop_sigma0_t)
-        d%sigma0_t = v
-      case (prop_gc)
-        d%gc = v
-      case (prop_eta)
-        d%eta = v
-      case (prop_mu)
-        d%mu = v
-      case (prop_h_n)
-        d%h_n = v
-      case (prop_theta0)
-        d%theta0_deg(1) = v
-        if (.not. d%paper_ria) d%theta0_deg(1:d%n_planes) = sign(v, deck%theta0_deg(1:d%n_planes))
-      case (prop_thetaf)
-        d%thetaf_deg(1) = v
-        if (.not. d%paper_ria) d%thetaf_deg(1:d%n_planes) = sign(v, deck%theta0_deg(1:d%n_planes))
-      case (prop_zeta0)
-        d%zeta0 = v
-      case (prop_prefractured)
-        d%prefractured = v > 0.5_dp
-      case (prop_scheme)
-        d%solver%scheme = nint(v)
-      case (prop_substep_tol)
-        d%solver%substep_tol = v
-      case (prop_effect_damage:prop_effect_wear)
-        d%effect(ip - prop_effect_damage + 1) = v > 0.5_dp
-      end select
+      call deck_set_property(d, ip, v)
     end if
     ! thetaf_deg absent: = theta0_deg (no wear), unless it is the swept parameter.
     if (.not. d%thetaf_given .and. ip /= prop_thetaf) d%thetaf_deg = d%theta0_deg
@@ -448,6 +428,50 @@ contains
     end subroutine no_friction_traction
 
   end subroutine deck_case
+
+  !> Set property `ip` (a row of the material table that a sweep or a fit may vary) of the
+  !> deck `d` to `v`: a per-plane angle is a magnitude that takes each plane's sign.
+  pure subroutine deck_set_property(d, ip, v)
+    type(deck_t), intent(inout) :: d
+    integer, intent(in) :: ip
+    real(dp), intent(in) :: v
+    select case (ip)
+    case (prop_sigma0_n)
+      d%sigma0_n = v
+    case (prop_sigma0_t)
+      d%sigma0_t = v
+    case (prop_gc)
+      d%gc = v
+    case (prop_eta)
+      d%eta = v
+    case (prop_mu)
+      d%mu = v
+    case (prop_h_n)
+      d%h_n = v
+    case (prop_theta0)
+      if (d%paper_ria) then
+        d%theta0_deg(1) = v
+      else
+        d%theta0_deg(1:d%n_planes) = sign(v, d%theta0_deg(1:d%n_planes))
+      end if
+    case (prop_thetaf)
+      if (d%paper_ria) then
+        d%thetaf_deg(1) = v
+      else
+        d%thetaf_deg(1:d%n_planes) = sign(v, d%theta0_deg(1:d%n_planes))
+      end if
+    case (prop_zeta0)
+      d%zeta0 = v
+    case (prop_prefractured)
+      d%prefractured = v > 0.5_dp
+    case (prop_scheme)
+      d%solver%scheme = nint(v)
+    case (prop_substep_tol)
+      d%solver%substep_tol = v
+    case (prop_effect_damage:prop_effect_wear)
+      d%effect(ip - prop_effect_damage + 1) = v > 0.5_dp
+    end select
+  end subroutine deck_set_property
 
   !> "case 3 (h_n = 0.5 mm): " for sweeps, '' otherwise.
   function case_text(deck, icase) result(text)

@@ -6,7 +6,7 @@
 !> program ends by the signal (interlock_posix.c).
 program interlock_history
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-  use interlock_cli, only: exit_program
+  use interlock_cli, only: exit_program, command_argument, command_text
   use interlock, only: interlock_material_t, interlock_solver_t, interlock_state_t, &
       interlock_version_string, status_ok
   use interlock_deck, only: deck_t, read_deck, deck_case, deck_n_cases
@@ -32,7 +32,7 @@ program interlock_history
   i = 0
   do while (i < nargs)
     i = i + 1
-    arg = argument(i)
+    arg = command_argument(i)
     if (.not. options_done .and. len(arg) > 0) then
       if (arg(1:1) == '-') then
         select case (arg)
@@ -49,7 +49,7 @@ program interlock_history
             call exit_program(1)
           end if
           i = i + 1
-          output_dir = argument(i)
+          output_dir = command_argument(i)
         case ('--')
           options_done = .true.
         case default
@@ -79,7 +79,7 @@ program interlock_history
       call exit_program(1)
     end if
   end if
-  command = command_line()
+  command = command_text()
 
   call h5_open_library(stat)
   if (stat /= 0) then
@@ -190,23 +190,6 @@ contains
     end if
     write (output_unit, '(a)') path // ' -> ' // final_name
   end subroutine run_deck
-
-  function argument(k) result(text)
-    integer, intent(in) :: k
-    character(len=:), allocatable :: text
-    integer :: length
-    call get_command_argument(k, length=length)
-    allocate (character(len=length) :: text)
-    if (length > 0) call get_command_argument(k, text)
-  end function argument
-
-  function command_line() result(text)
-    character(len=:), allocatable :: text
-    integer :: length
-    call get_command(length=length)
-    allocate (character(len=length) :: text)
-    if (length > 0) call get_command(text)
-  end function command_line
 
   subroutine usage(unit)
     integer, intent(in) :: unit

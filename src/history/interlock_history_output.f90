@@ -23,7 +23,7 @@ module interlock_history_output
   implicit none
   private
   public :: output_t, case_writer_t, output_check_target, output_open, output_begin_case, &
-            output_end_case, output_close, output_abort
+            output_end_case, output_close, output_abort, output_create
 
   !> The program name in the root attribute `program`: with the group /cases, the mark of a
   !> file that a later run may replace.
@@ -65,19 +65,28 @@ contains
   !> May a result be written to `final_name`? Only if nothing is there, or an earlier result of
   !> this program (an HDF5 file whose root has the attribute `program` and the group /cases):
   !> never the deck, a file of any other kind, a folder, a FIFO or a device. message = '' if so.
-  subroutine output_check_target(final_name, deck_path, message)
+  !> `program` and `link` (optional, interlock-fit): another program's marks (the value of the
+  !> attribute `program` is not compared: a file of either program is never taken for the other's
+  !> unless it has the other's group).
+  subroutine output_check_target(final_name, deck_path, message, program, link)
     character(len=*), intent(in) :: final_name, deck_path
     character(len=*), intent(out) :: message
+    character(len=*), intent(in), optional :: program, link
+    character(len=:), allocatable :: who, mark
     message = ''
+    who = program_name
+    mark = 'cases'
+    if (present(program)) who = program
+    if (present(link)) mark = link
     select case (path_kind(final_name))
     case (path_absent)
     case (path_regular)
       if (same_file(final_name, deck_path)) then
         message = 'the output file ' // final_name // ' is the deck itself: refusing to ' // &
                   'overwrite it (give another &output file)'
-      else if (.not. h5_has_marks(final_name, 'program', 'cases')) then
+      else if (.not. h5_has_marks(final_name, 'program', mark)) then
         message = 'the output file ' // final_name // ' exists and is not a result of ' // &
-                  program_name // ': refusing to overwrite it (remove it, or give another ' // &
+                  who // ': refusing to overwrite it (remove it, or give another ' // &
                   '&output file)'
       end if
     case (path_folder)
@@ -93,6 +102,31 @@ contains
   subroutine output_open(final_name, deck, command, out, stat, message)
     character(len=*), intent(in) :: final_name, command
     type(deck_t), intent(in) :: deck
+    type(output_t), intent(out) :: out
+    integer, intent(out) :: stat
+    character(len=*), intent(out) :: message
+
+    call output_create(final_name, out, stat, message)
+    if (stat /= 0) return
+    call h5_attribute(out%file, 'program', program_name, stat)
+    if (stat == 0) call h5_attribute(out%file, 'version', interlock_version_string, stat)
+    if (stat == 0) call h5_attribute(out%file, 'command_line', command, stat)
+    if (stat == 0) call h5_attribute(out%file, 'deck', deck%text, stat)
+    if (stat == 0) call h5_attribute(out%file, 'deck_file', deck%path, stat)
+    if (stat == 0) call h5_attribute(out%file, 'title', deck%title, stat)
+    if (stat == 0) call h5_attribute(out%file, 'n_cases', deck_n_cases(deck), stat)
+    if (stat == 0) call h5_attribute(out%file, 'sweep_parameter', trim(deck%sweep_parameter), stat)
+    if (stat == 0) call h5_create_group(out%file, 'cases', out%cases, stat)
+    if (stat /= 0) then
+      message = 'cannot write the file attributes of ' // out%temp_name
+      call output_abort(out)
+    end if
+  end subroutine output_open
+
+  !> Create the temporary file NAME.tmp-PID beside `final_name` (out%file, guarded: removed if
+  !> the program is interrupted by SIGINT, SIGTERM or SIGHUP); output_close renames it.
+  subroutine output_create(final_name, out, stat, message)
+    character(len=*), intent(in) :: final_name
     type(output_t), intent(out) :: out
     integer, intent(out) :: stat
     character(len=*), intent(out) :: message
@@ -115,20 +149,7 @@ contains
       return
     end if
     out%open = .true.
-    call h5_attribute(out%file, 'program', program_name, stat)
-    if (stat == 0) call h5_attribute(out%file, 'version', interlock_version_string, stat)
-    if (stat == 0) call h5_attribute(out%file, 'command_line', command, stat)
-    if (stat == 0) call h5_attribute(out%file, 'deck', deck%text, stat)
-    if (stat == 0) call h5_attribute(out%file, 'deck_file', deck%path, stat)
-    if (stat == 0) call h5_attribute(out%file, 'title', deck%title, stat)
-    if (stat == 0) call h5_attribute(out%file, 'n_cases', deck_n_cases(deck), stat)
-    if (stat == 0) call h5_attribute(out%file, 'sweep_parameter', trim(deck%sweep_parameter), stat)
-    if (stat == 0) call h5_create_group(out%file, 'cases', out%cases, stat)
-    if (stat /= 0) then
-      message = 'cannot write the file attributes of ' // out%temp_name
-      call output_abort(out)
-    end if
-  end subroutine output_open
+  end subroutine output_create
 
   !> Start case `icase` as /cases/NNNN: its attributes and empty datasets; `writer` is then the
   !> sink of the case's history (run_history), and output_end_case completes it.

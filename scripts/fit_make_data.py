@@ -1,0 +1,70 @@
+#!/usr/bin/python3
+"""Measured-curve CSV files from a history: run interlock-history on a deck and write its rows as
+CSV (the columns interlock-fit decks read), optionally with deterministic noise.
+
+usage: fit_make_data.py PROGRAM DECK.nml OUT.csv [--noise FRACTION] [--seed N]
+                        [--cycle-start T0 --cycle-period T]
+
+A fit deck (one with &fit) is run without its &fit group: the curves of the values its
+&interface and &microplanes give.
+Columns: time, cycle, slip (separation_t, mm), dilation (separation_n, mm), shear (traction_t,
+MPa), normal (traction_n, MPa). cycle = 1 + floor((time - T0) / T) for time > T0 (the deck's
+`cycles` repeat the block of period T = times(n) - times(1) after the preload), 1 without
+--cycle-period. --noise f adds independent normal noise of standard deviation f max|column| to
+dilation and shear (numpy's default_rng(seed): the same file on every machine and run).
+"""
+import argparse
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+import h5py
+import numpy as np
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("program")
+    ap.add_argument("deck")
+    ap.add_argument("out")
+    ap.add_argument("--noise", type=float, default=0.0)
+    ap.add_argument("--seed", type=int, default=12)
+    ap.add_argument("--cycle-start", type=float, default=0.0)
+    ap.add_argument("--cycle-period", type=float, default=0.0)
+    a = ap.parse_args()
+    with tempfile.TemporaryDirectory() as work:
+        deck = a.deck
+        with open(deck) as f:
+            text = f.read()
+        if re.search(r"^\s*&fit\b", text, re.M | re.I):
+            # a fit deck: its history part, with the values of its &interface and &microplanes
+            deck = os.path.join(work, os.path.basename(a.deck))
+            with open(deck, "w") as f:
+                f.write(re.sub(r"^\s*&fit\b.*?^\s*/\s*$", "", text, flags=re.M | re.S | re.I))
+        run = subprocess.run([a.program, "--output-dir", work, deck], capture_output=True, text=True)
+        if run.returncode != 0:
+            sys.exit(f"fit_make_data: interlock-history failed: {run.stderr}")
+        name = os.path.splitext(os.path.basename(a.deck))[0] + ".h5"
+        with h5py.File(os.path.join(work, name), "r") as f:
+            case = f["cases/0001"]
+            time = case["time"][()]
+            sep = case["separation"][()]
+            trac = case["traction"][()]
+    cycle = np.ones_like(time)
+    if a.cycle_period > 0:
+        cycle = np.maximum(1, 1 + np.floor((time - a.cycle_start) / a.cycle_period - 1e-9))
+    dilation, shear = sep[:, 0].copy(), trac[:, 1].copy()
+    if a.noise > 0:
+        rng = np.random.default_rng(a.seed)
+        dilation += rng.normal(0.0, a.noise * np.abs(dilation).max(), dilation.size)
+        shear += rng.normal(0.0, a.noise * np.abs(shear).max(), shear.size)
+    with open(a.out, "w") as f:
+        f.write("time,cycle,slip,dilation,shear,normal\n")
+        for row in zip(time, cycle, sep[:, 1], dilation, shear, trac[:, 0]):
+            f.write(",".join(repr(float(v)) for v in row) + "\n")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,553 @@
+!> The &fit group of an interlock-fit deck (docs/fit.md): the measured curves (CSV files, their
+!> columns, the history output each is compared with, weights, a window), the free parameters
+!> (material-table names, start values, bounds) and the stages (which parameters on which
+!> curves, in order). The rest of the deck is an ordinary interlock-history deck (read_deck).
+!> Every error names the deck, the group, the variable and what is admissible.
+module interlock_fit_deck
+  use interlock, only: dp, properties, property_index, check_property, format_range, &
+      format_integer, format_real, same_value, prop_sigma0_n, prop_zeta0, prop_h_n, prop_theta0, prop_thetaf, &
+      prop_sigma0_t, prop_gc, prop_eta, prop_mu, status_ok
+  use interlock_deck, only: deck_t, read_deck, deck_groups
+  use interlock_deck_text, only: group_scan_t, scan_deck, to_lower => lower
+  use interlock_csv, only: csv_t, read_csv, csv_column
+  use interlock_lm, only: lm_options_t
+  implicit none
+  private
+  public :: fit_t, curve_t, stage_t, read_fit_deck, output_names, n_outputs, fit_groups, &
+            split_branches, deck_value, join_selected
+
+  integer, parameter :: max_curves = 32, max_free = 16, max_stages = 16
+  integer, parameter :: name_len = 64, file_len = 1024, list_len = 1024
+  real(dp), parameter :: unset = -huge(1.0_dp)
+
+  !> History outputs a curve can be compared with (one value per row).
+  integer, parameter :: n_outputs = 9
+  character(len=20), parameter :: output_names(n_outputs) = [character(len=20) :: 'time', &
+    'separation_n', 'separation_t', 'traction_n', 'traction_t', 'work', 'stored_energy', &
+    'damage_dissipation', 'friction_dissipation']
+
+  character(len=13), parameter :: fit_groups(9) = [character(len=13) :: deck_groups, 'fit']
+
+  character(len=*), parameter :: fit_vars = 'curve_name, curve_file, curve_x, curve_y, ' // &
+    'curve_along, curve_against, curve_weight, curve_weight_column, curve_window_column, ' // &
+    'curve_window_min, curve_window_max, parameters, start, lower, upper, stage_parameters, ' // &
+    'stage_curves, max_iterations, xtol, ftol, gtol, fd_step'
+
+  !> One measured curve, windowed: points (x, y) with weights w; branch: the monotone run of the
+  !> abscissa (over the whole file, before the window) that each point is on.
+  type :: curve_t
+    character(len=:), allocatable :: name, file, x_column, y_column
+    integer :: along = 0, against = 0      !< indices into output_names
+    real(dp), allocatable :: x(:), y(:), w(:)
+    integer, allocatable :: branch(:)
+    real(dp) :: tolerance = 0.0_dp         !< abscissa tolerance of the branch split
+  end type curve_t
+
+  type :: stage_t
+    integer, allocatable :: free(:)        !< parameter indices
+    integer, allocatable :: curves(:)      !< curve indices
+  end type stage_t
+
+  type :: fit_t
+    type(deck_t) :: deck
+    type(curve_t), allocatable :: curves(:)
+    character(len=name_len), allocatable :: curve_names(:)   !< curves(:)%name
+    character(len=name_len), allocatable :: names(:)
+    integer, allocatable :: property(:)
+    real(dp), allocatable :: start(:), lower(:), upper(:)
+    type(stage_t), allocatable :: stages(:)
+    type(lm_options_t) :: options
+  end type fit_t
+
+contains
+
+  !> Read a fit deck: the history deck (read_deck, &fit allowed) and the &fit group.
+  subroutine read_fit_deck(path, fd, stat, message)
+    character(len=*), intent(in) :: path
+    type(fit_t), intent(out) :: fd
+    integer, intent(out) :: stat
+    character(len=*), intent(out) :: message
+    type(group_scan_t) :: scan(size(fit_groups))
+    character(len=name_len) :: curve_name(max_curves), curve_x(max_curves), curve_y(max_curves), &
+        curve_along(max_curves), curve_against(max_curves), curve_weight_column(max_curves), &
+        curve_window_column(max_curves), parameters(max_free)
+    character(len=file_len) :: curve_file(max_curves)
+    real(dp) :: curve_weight(max_curves), curve_window_min(max_curves), &
+                curve_window_max(max_curves), start(max_free), lower(max_free), upper(max_free)
+    character(len=list_len) :: stage_parameters(max_stages), stage_curves(max_stages)
+    integer :: max_iterations
+    real(dp) :: xtol, ftol, gtol, fd_step
+    namelist /fit/ curve_name, curve_file, curve_x, curve_y, curve_along, curve_against, &
+      curve_weight, curve_weight_column, curve_window_column, curve_window_min, &
+      curve_window_max, parameters, start, lower, upper, stage_parameters, stage_curves, &
+      max_iterations, xtol, ftol, gtol, fd_step
+    integer :: u, ios, k, nc, np, ns, i
+    character(len=512) :: iomsg
+    character(len=:), allocatable :: prefix
+
+    stat = 1
+    call read_deck(path, fd%deck, stat, message, ['fit'])
+    if (stat /= status_ok) return
+    stat = 1
+    call scan_deck(fd%deck%text, fit_groups, scan, message)
+    if (len_trim(message) > 0) then
+      message = path // ': ' // trim(message)
+      return
+    end if
+    prefix = path // ': &fit: '
+    if (.not. scan(9)%present) then
+      message = path // ': the group &fit is missing (interlock-fit needs the curves and ' // &
+                'the free parameters: docs/fit.md)'
+      return
+    end if
+    if (fd%deck%sweep_property > 0) then
+      message = path // ': &sweep: a fit deck has one case (remove &sweep)'
+      return
+    end if
+    do k = 1, scan(9)%n
+      if (index(', ' // fit_vars // ',', ', ' // trim(to_lower(scan(9)%a(k)%name)) // ',') == 0) then
+        message = prefix // 'line ' // format_integer(scan(9)%a(k)%line) // ': unknown ' // &
+                  'variable ' // trim(scan(9)%a(k)%name) // ' (the variables are ' // fit_vars // ')'
+        return
+      end if
+    end do
+
+    curve_name = ''
+    curve_file = ''
+    curve_x = ''
+    curve_y = ''
+    curve_along = ''
+    curve_against = ''
+    curve_weight = unset
+    curve_weight_column = ''
+    curve_window_column = ''
+    curve_window_min = -huge(1.0_dp)
+    curve_window_max = huge(1.0_dp)
+    parameters = ''
+    start = unset
+    lower = unset
+    upper = unset
+    stage_parameters = ''
+    stage_curves = ''
+    max_iterations = fd%options%max_iterations
+    xtol = fd%options%xtol
+    ftol = fd%options%ftol
+    gtol = fd%options%gtol
+    fd_step = fd%options%fd_step
+    open (newunit=u, file=path, status='old', action='read', iostat=ios, iomsg=iomsg)
+    if (ios == 0) read (u, nml=fit, iostat=ios, iomsg=iomsg)
+    close (u)
+    if (ios /= 0) then
+      message = prefix // 'cannot read the group: ' // trim(iomsg) // ' (docs/fit.md says what ' // &
+                'each variable takes)'
+      return
+    end if
+
+    ! options
+    if (max_iterations < 1 .or. max_iterations > 100000) then
+      message = prefix // 'max_iterations = ' // format_integer(max_iterations) // &
+                ' is inadmissible: admissible 1 to 100000'
+      return
+    end if
+    if (.not. in_range(xtol, 0.0_dp, 1.0_dp, 'xtol')) return
+    if (.not. in_range(ftol, 0.0_dp, 1.0_dp, 'ftol')) return
+    if (.not. in_range(gtol, 0.0_dp, 1.0_dp, 'gtol')) return
+    if (.not. in_range(fd_step, 1.0e-12_dp, 0.1_dp, 'fd_step')) return
+    fd%options%max_iterations = max_iterations
+    fd%options%xtol = xtol
+    fd%options%ftol = ftol
+    fd%options%gtol = gtol
+    fd%options%fd_step = fd_step
+
+    ! parameters
+    np = count(parameters /= '')
+    if (np == 0 .or. any(parameters(np + 1:) /= '')) then
+      message = prefix // 'parameters: give the names of the free parameters, one after the ' // &
+                'other (at most ' // format_integer(max_free) // ')'
+      return
+    end if
+    allocate (fd%names(np), fd%property(np))
+    fd%names = parameters(1:np)
+    fd%start = start(1:np)
+    fd%lower = lower(1:np)
+    fd%upper = upper(1:np)
+    do i = 1, np
+      call check_parameter(i)
+      if (len_trim(message) > 0) return
+    end do
+
+    ! curves
+    nc = count(curve_file /= '')
+    if (nc == 0 .or. any(curve_file(nc + 1:) /= '')) then
+      message = prefix // 'curve_file: give one CSV file per curve (at most ' // &
+                format_integer(max_curves) // ')'
+      return
+    end if
+    allocate (fd%curves(nc))
+    do i = 1, nc
+      call read_curve(i)
+      if (len_trim(message) > 0) return
+    end do
+
+    fd%curve_names = curve_name(1:nc)
+
+    ! stages
+    ns = count(stage_parameters /= '')
+    if (ns == 0) then
+      if (any(stage_curves /= '')) then
+        message = prefix // 'stage_curves is given without stage_parameters'
+        return
+      end if
+      allocate (fd%stages(1))
+      fd%stages(1)%free = [(i, i = 1, np)]
+      fd%stages(1)%curves = [(i, i = 1, nc)]
+    else
+      if (count(stage_curves /= '') /= ns) then
+        message = prefix // 'stage_curves: give one list of curves per stage (' // &
+                  format_integer(ns) // ' stages in stage_parameters)'
+        return
+      end if
+      allocate (fd%stages(ns))
+      do k = 1, ns
+        call parse_list(stage_parameters(k), fd%names, 'stage_parameters', fd%stages(k)%free)
+        if (len_trim(message) > 0) return
+        if (trim(to_lower(adjustl(stage_curves(k)))) == 'all') then
+          fd%stages(k)%curves = [(i, i = 1, nc)]
+        else
+          call parse_list(stage_curves(k), curve_name(1:nc), 'stage_curves', fd%stages(k)%curves)
+          if (len_trim(message) > 0) return
+        end if
+      end do
+      do i = 1, np
+        if (.not. any([(any(fd%stages(k)%free == i), k = 1, ns)])) then
+          message = prefix // 'parameter ' // trim(fd%names(i)) // ' is in no stage ' // &
+                    '(stage_parameters)'
+          return
+        end if
+      end do
+    end if
+    do k = 1, size(fd%stages)
+      i = sum([(size(fd%curves(fd%stages(k)%curves(nc))%x), nc = 1, size(fd%stages(k)%curves))])
+      if (i <= size(fd%stages(k)%free)) then
+        message = prefix // 'stage ' // format_integer(k) // ': its curves have ' // &
+                  format_integer(i) // ' points: a fit of ' // &
+                  format_integer(size(fd%stages(k)%free)) // ' parameters needs more points ' // &
+                  'than parameters'
+        return
+      end if
+    end do
+    stat = status_ok
+    message = ''
+
+  contains
+
+    logical function in_range(x, lo, hi, name)
+      real(dp), intent(in) :: x, lo, hi
+      character(len=*), intent(in) :: name
+      in_range = x >= lo .and. x <= hi
+      if (.not. in_range) message = prefix // name // ' = ' // format_real(x) // &
+        ' is inadmissible: admissible ' // format_real(lo) // ' <= ' // name // ' <= ' // format_real(hi)
+    end function in_range
+
+    subroutine check_parameter(i)
+      integer, intent(in) :: i
+      integer :: ip
+      logical :: ok
+      character(len=256) :: why
+      character(len=:), allocatable :: name
+      name = trim(to_lower(fd%names(i)))
+      fd%names(i) = name
+      ip = property_index(name)
+      if (ip == 0) then
+        message = prefix // 'parameters: ''' // name // ''' is not a property of the material ' // &
+                  'table (the parameters a fit can free: ' // fittable_names() // ')'
+        return
+      end if
+      if (ip < prop_sigma0_n .or. ip > prop_zeta0) then
+        message = prefix // 'parameters: ''' // name // ''' is not a parameter a fit can free ' // &
+                  '(a flag, a choice or a solver control); the parameters: ' // fittable_names()
+        return
+      end if
+      if (count(fd%names(1:i) == name) > 1) then
+        message = prefix // 'parameters: ''' // name // ''' is given twice'
+        return
+      end if
+      fd%property(i) = ip
+      if (same_value(fd%start(i), unset)) fd%start(i) = deck_value(fd%deck, ip)
+      if (same_value(fd%lower(i), unset) .or. same_value(fd%upper(i), unset)) then
+        message = prefix // 'parameter ' // name // ' needs both bounds (lower and upper, ' // &
+                  'finite, in ' // format_range(ip) // ')'
+        return
+      end if
+      if (.not. (fd%lower(i) < fd%upper(i))) then
+        message = prefix // 'parameter ' // name // ': lower = ' // format_real(fd%lower(i)) // &
+                  ' must be below upper = ' // format_real(fd%upper(i))
+        return
+      end if
+      if (fd%start(i) < fd%lower(i) .or. fd%start(i) > fd%upper(i)) then
+        message = prefix // 'parameter ' // name // ': the bounds [' // format_real(fd%lower(i)) // &
+                  ', ' // format_real(fd%upper(i)) // '] exclude the start value ' // &
+                  format_real(fd%start(i)) // ' (admissible lower <= start <= upper)'
+        return
+      end if
+      call check_property(ip, fd%lower(i), ok, why)
+      if (ok) call check_property(ip, fd%upper(i), ok, why)
+      if (ok .and. fd%upper(i) >= 1.0e30_dp) then
+        ok = .false.
+        why = 'the bounds must be finite (< 1e30)'
+      end if
+      if (.not. ok) then
+        message = prefix // 'parameter ' // name // ' bounds [' // format_real(fd%lower(i)) // &
+                  ', ' // format_real(fd%upper(i)) // ']: ' // trim(why)
+        return
+      end if
+      if (fd%lower(i) <= 0.0_dp .and. (ip == prop_h_n .or. ip == prop_zeta0)) then
+        message = prefix // 'parameter ' // name // ': lower = ' // format_real(fd%lower(i)) // &
+                  ' is inadmissible: admissible lower > 0 ' // '[' // trim(properties(ip)%unit) // ']'
+        return
+      end if
+    end subroutine check_parameter
+
+    subroutine read_curve(i)
+      integer, intent(in) :: i
+      type(csv_t) :: csv
+      integer :: cx, cy, cw, cwin, n
+      logical, allocatable :: keep(:)
+      real(dp) :: scale
+      character(len=:), allocatable :: file, cname
+      type(curve_t) :: c
+
+      cname = trim(curve_name(i))
+      if (len(cname) == 0) cname = 'curve' // format_integer(i)
+      if (index(cname, ',') > 0 .or. index(cname, '/') > 0) then
+        message = prefix // 'curve_name(' // format_integer(i) // ') = ''' // cname // &
+                  ''': a name without commas or slashes'
+        return
+      end if
+      if (any(curve_name(1:i - 1) == cname)) then
+        message = prefix // 'curve_name: ''' // cname // ''' is given twice'
+        return
+      end if
+      c%name = cname
+      curve_name(i) = cname
+      file = trim(curve_file(i))
+      if (file(1:1) /= '/') file = folder_of(path) // file
+      c%file = file
+      c%along = output_index(curve_along(i))
+      c%against = output_index(curve_against(i))
+      if (c%along == 0 .or. c%against == 0) then
+        message = prefix // 'curve ' // cname // ': curve_along = ''' // trim(curve_along(i)) // &
+                  ''', curve_against = ''' // trim(curve_against(i)) // ''': each must be one ' // &
+                  'of the history outputs ' // join(output_names)
+        return
+      end if
+      call read_csv(file, csv, message)
+      if (len_trim(message) > 0) then
+        message = prefix // 'curve ' // cname // ': ' // trim(message)
+        return
+      end if
+      cx = find_column(csv, curve_x(i), 'curve_x', cname)
+      if (len_trim(message) > 0) return
+      cy = find_column(csv, curve_y(i), 'curve_y', cname)
+      if (len_trim(message) > 0) return
+      c%x_column = trim(curve_x(i))
+      c%y_column = trim(curve_y(i))
+      n = size(csv%values, 1)
+      allocate (keep(n))
+      keep = .true.
+      if (curve_window_column(i) /= '') then
+        cwin = find_column(csv, curve_window_column(i), 'curve_window_column', cname)
+        if (len_trim(message) > 0) return
+        keep = csv%values(:, cwin) >= curve_window_min(i) .and. &
+               csv%values(:, cwin) <= curve_window_max(i)
+        if (.not. any(keep)) then
+          message = prefix // 'curve ' // cname // ': the window ' // &
+                    trim(curve_window_column(i)) // ' in [' // format_real(curve_window_min(i)) // &
+                    ', ' // format_real(curve_window_max(i)) // '] holds no row of ' // file // &
+                    ' (its ' // trim(curve_window_column(i)) // ' runs from ' // &
+                    format_real(minval(csv%values(:, cwin))) // ' to ' // &
+                    format_real(maxval(csv%values(:, cwin))) // ')'
+          return
+        end if
+      else if (curve_window_min(i) > -huge(1.0_dp) .or. curve_window_max(i) < huge(1.0_dp)) then
+        message = prefix // 'curve ' // cname // ': curve_window_min/max without ' // &
+                  'curve_window_column (the column the window applies to)'
+        return
+      end if
+      if (count(keep) < 2) then
+        message = prefix // 'curve ' // cname // ': ' // file // ' has ' // &
+                  format_integer(count(keep)) // ' point(s) in the window: too few (at least 2)'
+        return
+      end if
+      c%tolerance = 1.0e-6_dp * (maxval(csv%values(:, cx)) - minval(csv%values(:, cx)))
+      call split_branches(csv%values(:, cx), c%tolerance, c%branch)
+      c%branch = pack(c%branch, keep)
+      c%x = pack(csv%values(:, cx), keep)
+      c%y = pack(csv%values(:, cy), keep)
+      if (curve_weight_column(i) /= '') then
+        cw = find_column(csv, curve_weight_column(i), 'curve_weight_column', cname)
+        if (len_trim(message) > 0) return
+        c%w = pack(csv%values(:, cw), keep)
+        if (any(c%w < 0.0_dp)) then
+          message = prefix // 'curve ' // cname // ': the weight column ' // &
+                    trim(curve_weight_column(i)) // ' has negative values (admissible >= 0)'
+          return
+        end if
+      else
+        allocate (c%w(size(c%x)))
+        c%w = 1.0_dp
+      end if
+      if (.not. same_value(curve_weight(i), unset)) then
+        if (.not. (curve_weight(i) > 0.0_dp .and. curve_weight(i) < huge(1.0_dp))) then
+          message = prefix // 'curve ' // cname // ': curve_weight = ' // &
+                    format_real(curve_weight(i)) // ' is inadmissible: admissible > 0'
+          return
+        end if
+        c%w = c%w * curve_weight(i)
+      else
+        scale = maxval(abs(c%y))
+        if (scale > 0.0_dp) c%w = c%w / scale**2
+      end if
+      fd%curves(i) = c
+    end subroutine read_curve
+
+    !> The column `name` of `csv` (header name or number); 0 and a message if there is none.
+    integer function find_column(csv, name, variable, cname)
+      type(csv_t), intent(in) :: csv
+      character(len=*), intent(in) :: name, variable, cname
+      find_column = csv_column(csv, trim(name))
+      if (find_column == 0) message = prefix // 'curve ' // cname // ': ' // variable // &
+        ' = ''' // trim(name) // ''' is no column of the file (its columns: ' // &
+        join(csv%names) // '; or a column number 1 to ' // format_integer(size(csv%names)) // ')'
+    end function find_column
+
+    subroutine parse_list(text, names, variable, indices)
+      character(len=*), intent(in) :: text, names(:), variable
+      integer, allocatable, intent(out) :: indices(:)
+      integer :: a, b, j
+      character(len=name_len) :: item
+      allocate (indices(0))
+      a = 1
+      do while (a <= len_trim(text))
+        b = index(text(a:), ',')
+        if (b == 0) then
+          b = len_trim(text) + 1
+        else
+          b = a + b - 1
+        end if
+        item = to_lower(adjustl(text(a:b - 1)))
+        if (item == '') then
+          message = prefix // variable // ' = ''' // trim(text) // ''': an empty item'
+          return
+        end if
+        do j = 1, size(names)
+          if (trim(to_lower(names(j))) == trim(item)) exit
+        end do
+        if (j > size(names)) then
+          message = prefix // variable // ': ''' // trim(item) // ''' is none of ' // join(names)
+          return
+        end if
+        indices = [indices, j]
+        a = b + 1
+      end do
+    end subroutine parse_list
+
+  end subroutine read_fit_deck
+
+  !> The deck's value of property ip (plane 1 for per-plane properties).
+  pure real(dp) function deck_value(deck, ip) result(v)
+    type(deck_t), intent(in) :: deck
+    integer, intent(in) :: ip
+    select case (ip)
+    case (prop_sigma0_n)
+      v = deck%sigma0_n
+    case (prop_sigma0_t)
+      v = deck%sigma0_t
+    case (prop_gc)
+      v = deck%gc
+    case (prop_eta)
+      v = deck%eta
+    case (prop_mu)
+      v = deck%mu
+    case (prop_h_n)
+      v = deck%h_n
+    case (prop_theta0)
+      v = abs(deck%theta0_deg(1))
+    case (prop_thetaf)
+      v = abs(deck%thetaf_deg(1))
+      if (.not. deck%thetaf_given) v = abs(deck%theta0_deg(1))   ! no thetaf_deg: no wear
+    case default
+      v = deck%zeta0(1)
+    end select
+  end function deck_value
+
+  !> Number each value by the monotone run of x it is on (1, 2, ...): a run ends where x turns
+  !> back by more than `tolerance` from its extreme; the points after the extreme start the next.
+  pure subroutine split_branches(x, tolerance, branch)
+    real(dp), intent(in) :: x(:), tolerance
+    integer, allocatable, intent(out) :: branch(:)
+    integer :: i, dir, iext, b
+    allocate (branch(size(x)))
+    if (size(x) == 0) return
+    b = 1
+    dir = 0
+    iext = 1
+    branch(1) = 1
+    do i = 2, size(x)
+      branch(i) = b
+      if (dir == 0) then
+        if (x(i) > x(iext) + tolerance) dir = 1
+        if (x(i) < x(iext) - tolerance) dir = -1
+        iext = i
+      else if (dir * (x(i) - x(iext)) >= 0.0_dp) then
+        iext = i
+      else if (abs(x(i) - x(iext)) > tolerance) then
+        b = b + 1
+        branch(iext + 1:i) = b
+        dir = -dir
+        iext = i
+      end if
+    end do
+  end subroutine split_branches
+
+  integer function output_index(name)
+    character(len=*), intent(in) :: name
+    do output_index = 1, n_outputs
+      if (trim(output_names(output_index)) == trim(to_lower(adjustl(name)))) return
+    end do
+    output_index = 0
+  end function output_index
+
+  function folder_of(path) result(folder)
+    character(len=*), intent(in) :: path
+    character(len=:), allocatable :: folder
+    integer :: slash
+    slash = index(path, '/', back=.true.)
+    folder = path(1:slash)
+  end function folder_of
+
+  function join(names) result(text)
+    character(len=*), intent(in) :: names(:)
+    character(len=:), allocatable :: text
+    integer :: i
+    text = ''
+    do i = 1, size(names)
+      if (i > 1) text = text // ', '
+      text = text // trim(names(i))
+    end do
+  end function join
+
+  !> names(idx(1)), names(idx(2)), ... joined by ', '.
+  function join_selected(names, idx) result(text)
+    character(len=*), intent(in) :: names(:)
+    integer, intent(in) :: idx(:)
+    character(len=:), allocatable :: text
+    text = join(names(idx))
+  end function join_selected
+
+  function fittable_names() result(text)
+    character(len=:), allocatable :: text
+    text = join(properties(prop_sigma0_n:prop_zeta0)%name)
+  end function fittable_names
+
+end module interlock_fit_deck

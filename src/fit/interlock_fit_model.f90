@@ -1,0 +1,245 @@
+!> The model side of a fit: the history of the deck with given parameter values (run in
+!> memory), the history outputs along which the curves are compared, and the residuals of a
+!> stage: sqrt(w_i) (y_model(x_i) - y_i) for every point of every curve of the stage.
+!> Matching by branches: the abscissa of a cyclic test (the slip) runs back and forth, so a
+!> measured point on the b-th monotone run of its abscissa is compared with the history
+!> interpolated linearly on the history's b-th monotone run of the same output (with the run's
+!> turning point before it). The branches of the file are counted before the window is applied,
+!> so that a window (one cycle) keeps its place in the history.
+module interlock_fit_model
+  use, intrinsic :: iso_fortran_env, only: output_unit
+  use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
+      prop_thetaf, status_ok, format_integer, format_real
+  use interlock_deck, only: deck_t, deck_case, deck_set_property
+  use interlock_mixed_control, only: history_t, run_history, run_history_extrapolated
+  use interlock_fit_deck, only: fit_t, curve_t, split_branches
+  use interlock_lm, only: lm_problem_t
+  implicit none
+  private
+  public :: fit_problem_t, fit_history, curve_model, history_output
+
+  !> One stage's least-squares problem: all parameters' current values, the free ones of the
+  !> stage (x of the problem) and its curves.
+  type, extends(lm_problem_t) :: fit_problem_t
+    type(fit_t) :: fit
+    real(dp), allocatable :: values(:)
+    integer, allocatable :: free(:), curves(:)
+    integer :: stage = 1
+    integer :: runs = 0
+    real(dp) :: clock_start = 0.0_dp
+    logical :: verbose = .true.
+    character(len=:), allocatable :: failure   !< why the last evaluation failed
+  contains
+    procedure :: residuals => fit_residuals
+    procedure :: progress => fit_progress
+  end type fit_problem_t
+
+contains
+
+  !> The history of the deck with the parameters set to `values` (fit%names order).
+  !> message /= '': the values are inadmissible together or the history stopped.
+  subroutine fit_history(fit, values, hist, message)
+    type(fit_t), intent(in) :: fit
+    real(dp), intent(in) :: values(:)
+    type(history_t), intent(inout) :: hist
+    character(len=:), allocatable, intent(out) :: message
+    type(deck_t) :: d
+    type(interlock_material_t) :: mat
+    type(interlock_solver_t) :: solver
+    type(interlock_state_t) :: state
+    character(len=:), allocatable :: label
+    character(len=1024) :: why
+    integer :: i, stat
+
+    message = ''
+    d = fit%deck
+    do i = 1, size(values)
+      call deck_set_property(d, fit%property(i), values(i))
+      if (fit%property(i) == prop_thetaf) d%thetaf_given = .true.
+    end do
+    call deck_case(d, 1, mat, solver, state, label, stat, why)
+    if (stat /= status_ok) then
+      message = trim(why)
+      return
+    end if
+    hist%n_rows = 0
+    if (d%extrapolate) then
+      call run_history_extrapolated(mat, solver, d%control, d%times, d%values, d%steps, state, hist)
+    else
+      call run_history(mat, solver, d%control, d%times, d%values, d%steps, state, hist)
+    end if
+    if (hist%status /= 'completed') message = 'the history ' // hist%status
+  end subroutine fit_history
+
+  !> History output k (interlock_fit_deck's output_names) as a series over the rows.
+  function history_output(hist, k) result(v)
+    type(history_t), intent(in) :: hist
+    integer, intent(in) :: k
+    real(dp), allocatable :: v(:)
+    integer :: n
+    n = hist%n_rows
+    select case (k)
+    case (1)
+      v = hist%time(1:n)
+    case (2)
+      v = hist%separation(1, 1:n)
+    case (3)
+      v = hist%separation(2, 1:n)
+    case (4)
+      v = hist%traction(1, 1:n)
+    case (5)
+      v = hist%traction(2, 1:n)
+    case (6)
+      v = hist%work(1:n)
+    case (7)
+      v = hist%stored(1:n)
+    case (8)
+      v = hist%diss_damage(1:n)
+    case default
+      v = hist%diss_friction(1:n)
+    end select
+  end function history_output
+
+  !> The model's values at the curve's points (branch matching, linear interpolation), and the
+  !> range of history rows between the first and the last row used (first_row:last_row), for plots.
+  subroutine curve_model(c, hist, y, first_row, last_row, message)
+    type(curve_t), intent(in) :: c
+    type(history_t), intent(in) :: hist
+    real(dp), intent(out) :: y(:)
+    integer, intent(out) :: first_row, last_row
+    character(len=:), allocatable, intent(out) :: message
+    real(dp), allocatable :: hx(:), hy(:)
+    integer, allocatable :: hb(:)
+    integer :: i, b, lo, hi, k, a, z, nb
+    real(dp) :: tol, t
+
+    message = ''
+    allocate (hx(hist%n_rows), hy(hist%n_rows))
+    hx = history_output(hist, c%along)
+    hy = history_output(hist, c%against)
+    first_row = 1
+    last_row = size(hx)
+    y = 0.0_dp
+    if (size(hx) < 2) then
+      message = 'the history has fewer than 2 rows'
+      return
+    end if
+    tol = 1.0e-6_dp * (maxval(hx) - minval(hx))
+    call split_branches(hx, tol, hb)
+    nb = hb(size(hb))
+    if (maxval(c%branch) > nb) then
+      message = 'curve ' // c%name // ': its abscissa ' // c%x_column // ' runs through ' // &
+                format_integer(maxval(c%branch)) // ' monotone branches, the history''s ' // &
+                trim(c%x_column) // ' through ' // format_integer(nb) // ' only: the loading ' // &
+                'of the deck must follow the test''s path'
+      return
+    end if
+    first_row = size(hx)
+    last_row = 1
+    b = 0
+    lo = 1
+    hi = 0
+    do i = 1, size(c%x)
+      if (c%branch(i) /= b) then
+        b = c%branch(i)
+        lo = findloc(hb, b, dim=1)
+        hi = findloc(hb, b, dim=1, back=.true.)
+        if (lo > 1) lo = lo - 1
+      end if
+      ! the segment of [lo, hi] that holds x (the branch is monotone)
+      a = 0
+      do k = lo, hi - 1
+        if ((hx(k) - c%x(i)) * (hx(k + 1) - c%x(i)) <= 0.0_dp .and. abs(hx(k + 1) - hx(k)) > 0.0_dp) then
+          a = k
+          exit
+        end if
+      end do
+      if (a == 0) then
+        ! outside the branch's range by at most the split tolerance: the nearer end
+        z = merge(lo, hi, abs(hx(lo) - c%x(i)) <= abs(hx(hi) - c%x(i)))
+        if (abs(hx(z) - c%x(i)) > max(tol, c%tolerance)) then
+          message = 'curve ' // c%name // ': the point ' // c%x_column // ' = ' // &
+                    format_real(c%x(i)) // ' (branch ' // format_integer(b) // ') is outside ' // &
+                    'the history''s range [' // format_real(min(hx(lo), hx(hi))) // ', ' // &
+                    format_real(max(hx(lo), hx(hi))) // '] on that branch'
+          return
+        end if
+        y(i) = hy(z)
+        first_row = min(first_row, z)
+        last_row = max(last_row, z)
+      else
+        t = (c%x(i) - hx(a)) / (hx(a + 1) - hx(a))
+        y(i) = hy(a) + t * (hy(a + 1) - hy(a))
+        first_row = min(first_row, a)
+        last_row = max(last_row, a + 1)
+      end if
+    end do
+  end subroutine curve_model
+
+  subroutine fit_residuals(problem, x, r, ok)
+    class(fit_problem_t), intent(inout) :: problem
+    real(dp), intent(in) :: x(:)
+    real(dp), intent(out) :: r(:)
+    logical, intent(out) :: ok
+    type(history_t) :: hist
+    real(dp), allocatable :: values(:), y(:)
+    character(len=:), allocatable :: message
+    integer :: k, ic, first, n, r1, r2
+
+    allocate (values(size(problem%values)))
+    values = problem%values
+    values(problem%free) = x
+    problem%runs = problem%runs + 1
+    call fit_history(problem%fit, values, hist, message)
+    ok = len(message) == 0
+    if (.not. ok) then
+      problem%failure = message
+      return
+    end if
+    first = 0
+    do k = 1, size(problem%curves)
+      ic = problem%curves(k)
+      associate (c => problem%fit%curves(ic))
+        n = size(c%x)
+        allocate (y(n))
+        call curve_model(c, hist, y, r1, r2, message)
+        if (len(message) > 0) then
+          problem%failure = message
+          ok = .false.
+          return
+        end if
+        r(first + 1:first + n) = sqrt(c%w) * (y - c%y)
+        deallocate (y)
+      end associate
+      first = first + n
+    end do
+  end subroutine fit_residuals
+
+  !> One line per accepted iteration: the cost, the free parameters, histories run, CPU time.
+  subroutine fit_progress(problem, iteration, x, cost, lambda)
+    class(fit_problem_t), intent(inout) :: problem
+    integer, intent(in) :: iteration
+    real(dp), intent(in) :: x(:), cost, lambda
+    character(len=:), allocatable :: line
+    character(len=32) :: buf
+    real(dp) :: now
+    integer :: j
+    if (.not. problem%verbose) return
+    call cpu_time(now)
+    write (buf, '(es11.4)') cost
+    line = '  stage ' // format_integer(problem%stage) // ' iteration ' // &
+           format_integer(iteration) // ': cost ' // trim(adjustl(buf))
+    do j = 1, size(x)
+      write (buf, '(g0.8)') x(j)
+      line = line // ', ' // trim(problem%fit%names(problem%free(j))) // ' = ' // trim(buf)
+    end do
+    write (buf, '(es8.1)') lambda
+    line = line // ' (lambda ' // trim(adjustl(buf)) // ', ' // format_integer(problem%runs) // &
+           ' histories, '
+    write (buf, '(f0.1)') now - problem%clock_start
+    line = line // trim(buf) // ' s)'
+    write (output_unit, '(a)') line
+    flush (output_unit)
+  end subroutine fit_progress
+
+end module interlock_fit_model
