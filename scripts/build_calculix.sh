@@ -73,13 +73,13 @@ if [ ! -f "$src/.fetched" ]; then
     add_deb_src
   fi
   log "installing the build dependencies of calculix-ccx and fetching its source"
-  $sudo_cmd apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get build-dep -y -qq -o DPkg::Lock::Timeout=600 calculix-ccx
+  $sudo_cmd apt-get update -qq >&2
+  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get build-dep -y -qq -o DPkg::Lock::Timeout=600 calculix-ccx >&2
   DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends \
-    -o DPkg::Lock::Timeout=600 dpkg-dev python3 gfortran
+    -o DPkg::Lock::Timeout=600 dpkg-dev python3 gfortran >&2
   rm -rf "$src"
   mkdir -p "$src"
-  (cd "$src" && apt-get source -qq calculix-ccx)
+  (cd "$src" && apt-get source -qq calculix-ccx >&2)
   touch "$src/.fetched"
 fi
 

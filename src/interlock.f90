@@ -16,6 +16,7 @@ module interlock
   use interlock_state, only: interlock_state_t, interlock_state_init
   use interlock_integrate, only: interlock_update
   use interlock_props, only: props_to_material, statev_to_state, state_to_statev, umat_controls_t
+  use interlock_host_tangent, only: interlock_symmetric_tangent
   use interlock_version, only: interlock_version_string
   use interlock_replay, only: interlock_write_replay_deck
   implicit none

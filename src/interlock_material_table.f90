@@ -15,7 +15,8 @@ module interlock_material_table
   public :: prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
             prop_thetaf, prop_zeta0, prop_prefractured, prop_scheme, prop_substep_tol, &
             prop_max_dd, prop_max_dtheta, prop_effect_damage, prop_effect_friction, &
-            prop_effect_interlocking, prop_effect_finite_depth, prop_effect_wear
+            prop_effect_interlocking, prop_effect_finite_depth, prop_effect_wear, prop_tangent, &
+            tangent_exact, tangent_symmetric
   public :: sv_damage, sv_beta, sv_frictional_slip, sv_zeta, sv_theta, sv_friction_traction, &
             sv_work, sv_damage_dissipation, sv_friction_dissipation, sv_initialized
 
@@ -51,7 +52,7 @@ module interlock_material_table
     character(len=96) :: description
   end type statevar_t
 
-  integer, parameter :: n_properties = 19
+  integer, parameter :: n_properties = 20
   !> PROPS(1:n_required_properties) must be given; the rest take their defaults.
   integer, parameter :: n_required_properties = 9
 
@@ -61,7 +62,10 @@ module interlock_material_table
                         prop_substep_tol = 12, prop_max_dd = 13, prop_max_dtheta = 14, &
                         prop_effect_damage = 15, prop_effect_friction = 16, &
                         prop_effect_interlocking = 17, prop_effect_finite_depth = 18, &
-                        prop_effect_wear = 19
+                        prop_effect_wear = 19, prop_tangent = 20
+  !> The codes of property `tangent`: the exact algorithmic tangent, or a symmetric one for
+  !> hosts that keep only the symmetric part of DDSDDE (CalculiX).
+  integer, parameter :: tangent_exact = 1, tangent_symmetric = 2
 
   type(property_t), parameter :: properties(n_properties) = [ &
     property_t('sigma0_n', 'sigma0_n', 'MPa', 'interface', kind_real, .true., 0.0_dp, &
@@ -117,7 +121,10 @@ module interlock_material_table
                'effect switch: finite asperity depth; 0: as H_N = infinity'), &
     property_t('wear', 'wear', '-', 'effects', kind_flag, .false., 1.0_dp, &
                0.0_dp, .false., 1.0_dp, .false., .false., &
-               'effect switch: asperity wear; 0: as zeta_0 = infinity (theta constant)') ]
+               'effect switch: asperity wear; 0: as zeta_0 = infinity (theta constant)'), &
+    property_t('tangent', 'tangent', '-', 'umat', kind_choice, .false., 1.0_dp, &
+               1.0_dp, .false., 2.0_dp, .false., .false., &
+               'UMAT: DDSDDE 1 exact, 2 symmetric, for hosts that symmetrize (CalculiX)') ]
 
   integer, parameter :: n_statevars_per_plane = 6
   integer, parameter :: n_statevars_global = 4

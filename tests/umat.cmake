@@ -61,7 +61,7 @@ if(TARGET interlock_query)
       -P ${CMAKE_CURRENT_SOURCE_DIR}/test_umat_doc.cmake)
   add_test(NAME test_umat_query_props COMMAND interlock_query --props)
   set_tests_properties(test_umat_query_props PROPERTIES PASS_REGULAR_EXPRESSION
-    "PROPS +name.*\n4 +eta +- +required +0 < +eta < +1.*\n19 +wear +- +1 .*NPROPS from 9 to 19")
+    "PROPS +name.*\n4 +eta +- +required +0 < +eta < +1.*\n19 +wear +- +1 .*\n20 +tangent +- +1 .*NPROPS from 9 to 20")
   add_test(NAME test_umat_query_statev COMMAND interlock_query --statev)
   set_tests_properties(test_umat_query_statev PROPERTIES PASS_REGULAR_EXPRESSION
     "STATEV +name.*\n13 +theta +1 \\(-theta_0\\) +rad.*\n22 +initialized +- .*NSTATV >= 22")
@@ -99,3 +99,21 @@ if(TARGET interlock-history)
     PASS_REGULAR_EXPRESSION "unstable on small sub-increments"
     FAIL_REGULAR_EXPRESSION "completed")
 endif()
+
+# --- The symmetric tangent for hosts that symmetrize (PROPS 20 tangent = 2): the interface
+#     alone under traction control, Newton with the exact tangent, its symmetric part, the
+#     library's symmetric tangent and two other candidates (a measurement: docs/calculix.md).
+add_executable(tangent_newton tangent_newton.f90)
+target_link_libraries(tangent_newton PRIVATE interlock::interlock)
+target_compile_options(tangent_newton PRIVATE ${INTERLOCK_FFLAGS})
+set_target_properties(tangent_newton PROPERTIES
+  Fortran_MODULE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/mod_tangent_newton)
+add_test(NAME tangent_newton COMMAND tangent_newton)
+
+# --- The thin-layer entry for hosts without cohesive elements (CalculiX).
+interlock_add_suite(test_umat_layer test_umat_layer.f90)
+target_link_libraries(test_umat_layer PRIVATE interlock_umat)
+target_include_directories(test_umat_layer PRIVATE ${PROJECT_BINARY_DIR}/umat/mod_umat)
+set_tests_properties(test_umat_layer PROPERTIES
+  PASS_REGULAR_EXPRESSION "layer PROPS\\(1\\): 'h' = 0 is inadmissible: admissible 0 < h.*layer PROPS\\(2\\): 'e_other' = -5 is inadmissible.*layer PROPS\\(3\\): 'normal_axis' = 4 is inadmissible: admissible 1, 2 or 3.*layer PROPS\\(4\\): 'slip_axis' = 3 is inadmissible.*layer PROPS\\(8\\) = interlock PROPS\\(4\\): property 'eta' = 1.5 is inadmissible.*layer PROPS\\(24\\) = interlock PROPS\\(20\\): property 'tangent' = 3 is inadmissible.*NPROPS = 12 is inadmissible: admissible 13 <= NPROPS <= 24.*inadmissible with NTENS = 4.*umat_layer: [0-9]+ checks, 0 failed"
+  FAIL_REGULAR_EXPRESSION "FAIL|ERROR STOP")

@@ -11,10 +11,12 @@
 !> STRAN, the end-of-increment one STRAN + DSTRAN; STRESS on entry is the start traction.
 !>
 !> **Material.** PROPS and STATEV follow the material table (`interlock-query --props`,
-!> `interlock-query --statev`, docs/material.md): NPROPS from 9 (the required properties) to 19,
+!> `interlock-query --statev`, docs/material.md): NPROPS from 9 (the required properties) to 20,
 !> NSTATV >= 22 (`*DEPVAR` 22; extra slots are left alone). The three-plane RIA of the paper.
 !> DDSDDE is the library's exact algorithmic tangent, which is not symmetric once friction or
-!> wear acts: declare `*USER MATERIAL, UNSYMM`.
+!> wear acts: declare `*USER MATERIAL, UNSYMM`. For a host that keeps only the symmetric part
+!> (CalculiX), PROPS(20) `tangent` = 2 returns a symmetric tangent with the exact one's
+!> eigenvalues (src/interlock_host_tangent.f90); the stress update is the same.
 !>
 !> **Energies.** SSE = stored (free) energy, SCD = total dissipation (damage + friction; the split
 !> is in STATEV 20 and 21), SPD = 0. All per unit area [N/mm].
@@ -73,7 +75,8 @@ contains
     use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
         interlock_info_t, interlock_update, umat_controls_t, props_to_material, statev_to_state, &
         state_to_statev, umat_nstatv, status_ok, status_local_failure, message_len, is_nan_value, &
-        interlock_write_replay_deck, format_integer
+        interlock_write_replay_deck, format_integer, prop_tangent, tangent_symmetric, &
+        interlock_symmetric_tangent
     use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
     implicit none
     integer, intent(in) :: NDI                 !< direct components (1 for a 2D cohesive element)
@@ -164,6 +167,11 @@ contains
       return
     end if
 
+    ! Property `tangent` = 2: a symmetric DDSDDE for hosts that symmetrize (the update is not
+    ! touched; src/interlock_host_tangent.f90 says why this one).
+    if (NPROPS >= prop_tangent) then
+      if (nint(PROPS(prop_tangent)) == tangent_symmetric) call interlock_symmetric_tangent(tangent)
+    end if
     STRESS(1:2) = sigma
     DDSDDE(1:2, 1:2) = tangent
     call state_to_statev(new, STATEV(1:umat_nstatv))

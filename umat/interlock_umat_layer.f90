@@ -21,7 +21,10 @@
 !> **PROPS** (`layer_nprops_head` = 4 values, then the 2D law's PROPS 1 .. 9 to 1 .. 20):
 !>   1 h [mm] > 0, 2 e_other [MPa] > 0, 3 normal_axis 1..3, 4 slip_axis 1..3 (/= normal_axis),
 !>   5 .. the interlock PROPS (interlock-query --props). NPROPS from 13 to 24.
-!> **STATEV**: the 2D law's (NSTATV >= 22). **Energies** per unit volume: the law's SSE and SCD
+!> **STATEV**: the 2D law's 22 (NSTATV >= 22); with NSTATV >= 26 (`*DEPVAR` 26) also 23, 24 the
+!> separation (normal, slip) [mm] and 25, 26 the traction (normal, slip) [MPa] at the end of the
+!> increment, in the interface's axes (for output: hosts print S in their global axes).
+!> **Energies** per unit volume: the law's SSE and SCD
 !> (per unit area) / h, plus the elastic energy of the other components in SSE; SPD = 0.
 !>
 !> **PNEWDT** (`host`):
@@ -41,16 +44,20 @@
 module interlock_umat_layer
   use interlock, only: dp, props_to_material, interlock_material_t, interlock_solver_t, &
       umat_controls_t, status_ok, message_len, format_integer, format_real, is_nan_value, &
-      same_value, umat_nstatv
+      same_value, umat_nstatv, n_required_properties, n_properties
   use interlock_umat_body, only: interlock_umat_cohesive
   implicit none
   private
   public :: interlock_umat_layer_point, host_abaqus, host_calculix, layer_nprops_head, &
+            layer_nstatv_extra, &
             pnewdt_calculix_stop, layer_components
 
   integer, parameter :: host_abaqus = 1    !< PNEWDT starts at >= 1 and is only lowered
   integer, parameter :: host_calculix = 2  !< PNEWDT starts at -1 ("no request")
   integer, parameter :: layer_nprops_head = 4  !< h, e_other, normal_axis, slip_axis
+  !> Optional STATEV after the law's 22: separation (normal, slip) and traction (normal, slip)
+  !> in the interface's own axes, for output (a host prints stresses in its global axes).
+  integer, parameter :: layer_nstatv_extra = 4
   !> The cutback factor that makes CalculiX stop on bad input (below any sensible minimum).
   real(dp), parameter :: pnewdt_calculix_stop = 1.0e-6_dp
 
@@ -105,10 +112,11 @@ contains
                 // '6 (11, 22, 33, 12, 13, 23) or 4 (11, 22, 33, 12)', .true.)
       return
     end if
-    if (NPROPS < layer_nprops_head + 1) then
+    if (NPROPS < layer_nprops_head + n_required_properties .or. &
+        NPROPS > layer_nprops_head + n_properties) then
       call fail('NPROPS = ' // format_integer(NPROPS) // ' is inadmissible: admissible ' // &
-                format_integer(layer_nprops_head + 9) // ' <= NPROPS <= ' // &
-                format_integer(layer_nprops_head + 20) // ' (h, e_other, normal_axis, ' // &
+                format_integer(layer_nprops_head + n_required_properties) // ' <= NPROPS <= ' // &
+                format_integer(layer_nprops_head + n_properties) // ' (h, e_other, normal_axis, ' // &
                 'slip_axis, then the interlock PROPS)', .true.)
       return
     end if
@@ -213,8 +221,12 @@ contains
     DDSDDT = 0.0_dp
     DRPLDE = 0.0_dp
     DRPLDT = 0.0_dp
+    if (NSTATV >= umat_nstatv + layer_nstatv_extra) then
+      STATEV(umat_nstatv + 1:umat_nstatv + 2) = s0 + ds
+      STATEV(umat_nstatv + 3:umat_nstatv + 4) = t
+    end if
     if (p2 < pnewdt_none) call request(p2, .false.)
-    associate (unused_1 => NDI, unused_2 => NSHR, unused_3 => umat_nstatv)
+    associate (unused_1 => NDI, unused_2 => NSHR)
     end associate
 
   contains

@@ -14,7 +14,7 @@ module interlock_deck
       properties, property_index, check_property, format_range, format_integer, format_real, &
       prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
       prop_thetaf, prop_zeta0, prop_prefractured, prop_scheme, prop_substep_tol, prop_max_dd, &
-      prop_max_dtheta, prop_effect_damage, prop_effect_wear, is_nan_value, same_value, &
+      prop_max_dtheta, prop_tangent, prop_effect_damage, prop_effect_wear, is_nan_value, same_value, &
       is_infinite_value, &
       status_ok, status_bad_input
   use interlock_mixed_control, only: control_t
@@ -1066,7 +1066,7 @@ contains
       message = "parameter = '" // trim(parameter) // "' is not a property name of the material table"
       return
     end if
-    if (ip == prop_max_dd .or. ip == prop_max_dtheta) then
+    if (ip == prop_max_dd .or. ip == prop_max_dtheta .or. ip == prop_tangent) then
       message = "parameter = '" // trim(parameter) // "' is a UMAT control: it has no effect " // &
                 'in interlock-history'
       return

@@ -237,7 +237,8 @@ contains
       'file `interlock_umat_bundle.f90`) is for 2D cohesive elements: NTENS = 2 (1 normal,', &
       '2 shear), STRAN/DSTRAN are separations (constitutive thickness 1), the three-plane RIA', &
       'of the paper (planes -theta_0, 0, +theta_0 with area fraction 1/3 each). DDSDDE is not', &
-      'symmetric once friction or wear acts: declare `*USER MATERIAL, UNSYMM`. SSE is the', &
+      'symmetric once friction or wear acts: declare `*USER MATERIAL, UNSYMM` (for a host', &
+      'that symmetrizes, e.g. CalculiX, `tangent` = 2: docs/calculix.md). SSE is the', &
       'stored energy, SCD the total dissipation (damage + friction), SPD = 0. PNEWDT is only', &
       'lowered: -1 on bad input (with a one-line message naming element and point), 0.5 on a', &
       'local integration failure, and the first-order fraction of the increment (clamped to', &

@@ -1,0 +1,408 @@
+#!/usr/bin/env python3
+"""Direct shear in CalculiX with the interlock thin layer, checked against interlock-history.
+
+A block with one interface layer (h = 0.01 mm) between two elastic blocks: a normal pressure of
+0.2 MPa, then displacement-controlled slip of 1.5 mm, with the paper's Table 1 interface and
+theta_0 = 25 deg, H_N = 0.5 mm (no wear). Three element types: C3D8 (normal = local 3, slip =
+local 1), CPE4 (normal 2, slip 1), CAX4 (a bar in a sleeve: the layer is a tube, normal =
+local 1 = radial and slip = local 3 = axial of *ORIENTATION, SYSTEM=CYLINDRICAL).
+
+    direct_shear.py write --element C3D8 [--tangent 1|2] [--out DIR]      (the .inp only)
+    direct_shear.py run --ccx CCX --history INTERLOCK_HISTORY --element C3D8
+                        [--tangent 1|2] [--out DIR] [--tolerance 1e-5]
+
+`run` writes the deck, runs ccx, reads the layer's separations, tractions and state per
+increment (*EL PRINT SDV: *DEPVAR 26, STATEV 23-26 are the separation and the traction in the
+interface's axes), replays the separation history of one layer point through
+interlock-history (a deck with one step per ccx increment) and asserts that the tractions and
+the state agree to the tolerance (relative, floor: the largest traction / the largest value of
+the variable over the run). It also writes convergence.txt: the global iterations of every
+increment and the residual sequence (ccx's .cvg and .sta). Exit status 0 when all agree.
+Standard library plus h5py (for interlock-history's output).
+"""
+import argparse
+import math
+import pathlib
+import re
+import subprocess
+import sys
+
+H = 0.01            # layer thickness [mm]
+E_OTHER = 10.0      # modulus of the layer's other components [MPa]
+E_BLOCK, NU_BLOCK = 30000.0, 0.2   # the blocks (concrete-like) [MPa]
+PRESSURE = 0.2      # normal pressure [MPa]
+SLIP = 1.5          # imposed slip [mm]
+INCREMENT = 0.01    # slip increment [mm] (fixed: 150 increments)
+# Table 1, theta_0 = theta_f = 25 deg (no wear), H_N = 0.5 mm; scheme 2 (implicit); the
+# accuracy bounds off (max_damage_increment 1, max_angle_increment_deg 90: ccx acts on a
+# PNEWDT request at every iteration, not only at convergence).
+INTERLOCK = {"sigma0_n": 3.0, "sigma0_t": 3.0, "gc": 0.3, "eta": 0.9, "mu": 0.5, "h_n": 0.5,
+             "theta0_deg": 25.0, "thetaf_deg": 25.0, "zeta0": 1e30, "prefractured": 0,
+             "scheme": 2, "substep_tol": 0.0, "max_damage_increment": 1.0,
+             "max_angle_increment_deg": 90.0, "damage": 1, "friction": 1, "interlocking": 1,
+             "finite_depth": 1, "wear": 1}
+AXES = {"C3D8": (3, 1), "CPE4": (2, 1), "CAX4": (1, 3)}   # (normal, slip) local axes
+NSTATV = 26
+# STATEV of the 2D law (interlock-query --statev) and the history file's datasets.
+STATEV_NAMES = [("damage", 3), ("beta", 3), ("frictional_slip", 3), ("zeta", 3), ("theta", 3),
+                ("friction_traction", 3), ("work", 1), ("damage_dissipation", 1),
+                ("friction_dissipation", 1)]
+
+
+def user_material(element, tangent, interlock):
+    normal, slip = AXES[element]
+    values = [H, E_OTHER, normal, slip] + list(interlock.values()) + [float(tangent)]
+    lines = []
+    for i in range(0, len(values), 8):
+        lines.append(", ".join(f"{v:.12g}" for v in values[i:i + 8]))
+    if len(values) % 8 == 0:
+        lines.append("0.")     # ccx reads a temperature after the constants: its own line here
+    return (f"*MATERIAL, NAME=ABAQUSLAYER\n*USER MATERIAL, CONSTANTS={len(values)}\n"
+            + "\n".join(lines) + f"\n*DEPVAR\n{NSTATV}\n")
+
+
+def grid_3d():
+    """Nodes and C3D8 elements: 2 x 2 in plane (10 x 10 mm), z: block 5, layer h, block 5."""
+    zs = [0.0, 5.0, 5.0 + H, 10.0 + H]
+    xs = [0.0, 5.0, 10.0]
+    nodes, nid = {}, {}
+    n = 0
+    for k, z in enumerate(zs):
+        for j, y in enumerate(xs):
+            for i, x in enumerate(xs):
+                n += 1
+                nodes[n] = (x, y, z)
+                nid[i, j, k] = n
+    elements = {"LOWER": [], "LAYER": [], "UPPER": []}
+    e = 0
+    for k, name in enumerate(["LOWER", "LAYER", "UPPER"]):
+        for j in range(2):
+            for i in range(2):
+                e += 1
+                c = [nid[i, j, k], nid[i + 1, j, k], nid[i + 1, j + 1, k], nid[i, j + 1, k]]
+                c += [nid[i, j, k + 1], nid[i + 1, j, k + 1], nid[i + 1, j + 1, k + 1],
+                      nid[i, j + 1, k + 1]]
+                elements[name].append((e, c))
+    bottom = [nid[i, j, 0] for i in range(3) for j in range(3)]
+    top = [nid[i, j, 3] for i in range(3) for j in range(3)]
+    return nodes, elements, bottom, top
+
+
+def grid_2d(levels, xs):
+    """Nodes and 4-node elements on a grid: columns xs, rows `levels`, the element sets by row."""
+    nodes, nid = {}, {}
+    n = 0
+    for k, y in enumerate(levels):
+        for i, x in enumerate(xs):
+            n += 1
+            nodes[n] = (x, y, 0.0)
+            nid[i, k] = n
+    return nodes, nid
+
+
+def model(element, tangent, shear_force=None, prefractured=0):
+    out = [f"** Direct shear, {element}, interlock thin layer h = {H} mm (tangent option "
+           f"{tangent}); written by examples/calculix/direct_shear/direct_shear.py"]
+    if element == "C3D8":
+        nodes, elements, bottom, top = grid_3d()
+        etype = "C3D8"
+        pressure_face = [(e, "P2") for e, _ in elements["UPPER"]]
+        fixed = {"BOTTOM": (bottom, (1, 3))}
+        held = {"TOPREF": (top[:1], (1, 1)), "TOP": (top, (2, 2))}   # 3 free (pressure)
+        slip_set, slip_dof = "TOPREF", 1
+        tied = (top, (1, 3))
+        orientation = ""
+    elif element == "CPE4":
+        levels = [0.0, 5.0, 5.0 + H, 10.0 + H]
+        xs = [0.0, 5.0, 10.0]
+        nodes, nid = grid_2d(levels, xs)
+        elements = {"LOWER": [], "LAYER": [], "UPPER": []}
+        e = 0
+        for k, name in enumerate(["LOWER", "LAYER", "UPPER"]):
+            for i in range(2):
+                e += 1
+                elements[name].append((e, [nid[i, k], nid[i + 1, k], nid[i + 1, k + 1],
+                                           nid[i, k + 1]]))
+        etype = "CPE4"
+        pressure_face = [(e, "P3") for e, _ in elements["UPPER"]]
+        fixed = {"BOTTOM": ([nid[i, 0] for i in range(3)], (1, 2))}
+        held = {"TOPREF": ([nid[0, 3]], (1, 1))}
+        slip_set, slip_dof = "TOPREF", 1
+        tied = ([nid[i, 3] for i in range(3)], (1, 2))
+        orientation = ""
+    else:   # CAX4: a bar (r < 5) in a sleeve, the layer a tube at r = 5; x radial, y axial
+        xs = [0.0, 2.5, 5.0, 5.0 + H, 7.5 + H, 10.0 + H]
+        levels = [0.0, 5.0, 10.0]
+        nodes, nid = grid_2d(levels, xs)
+        elements = {"LOWER": [], "LAYER": [], "UPPER": []}   # LOWER = bar, UPPER = sleeve
+        e = 0
+        for i in range(5):
+            name = "LOWER" if i < 2 else ("LAYER" if i == 2 else "UPPER")
+            for k in range(2):
+                e += 1
+                elements[name].append((e, [nid[i, k], nid[i + 1, k], nid[i + 1, k + 1],
+                                           nid[i, k + 1]]))
+        etype = "CAX4"
+        # the confining pressure on the sleeve's outer face (face 2: nodes 2-3)
+        pressure_face = [(e, "P2") for e, c in elements["UPPER"] if nodes[c[1]][0] > 10.0]
+        fixed = {"SLEEVEBOTTOM": ([nid[i, 0] for i in range(3, 6)], (2, 2)),
+                 "AXIS": ([nid[0, k] for k in range(3)], (1, 1))}
+        held = {"BARTOP": ([nid[i, 2] for i in range(3)], (2, 2))}
+        slip_set, slip_dof = "BARTOP", 2
+        tied = None
+        orientation = ("*ORIENTATION, NAME=CYL, SYSTEM=CYLINDRICAL\n"
+                       "0., 0., 0., 0., 1., 0.\n")
+    out.append("*NODE, NSET=NALL")
+    out += [f"{n}, {x:.10g}, {y:.10g}, {z:.10g}" for n, (x, y, z) in nodes.items()]
+    for name, els in elements.items():
+        out.append(f"*ELEMENT, TYPE={etype}, ELSET={name}")
+        out += [f"{e}, " + ", ".join(str(c) for c in conn) for e, conn in els]
+    for name, (ns, _) in list(fixed.items()) + list(held.items()):
+        out.append(f"*NSET, NSET={name}")
+        out += [", ".join(str(n) for n in ns[i:i + 8]) for i in range(0, len(ns), 8)]
+    out.append("*ELSET, ELSET=BLOCKS\nLOWER, UPPER")
+    out.append(f"*MATERIAL, NAME=BLOCK\n*ELASTIC\n{E_BLOCK}, {NU_BLOCK}")
+    out.append(user_material(element, tangent, dict(INTERLOCK, prefractured=prefractured)).rstrip("\n"))
+    if orientation:
+        out.append(orientation.rstrip("\n"))
+        out.append("*SOLID SECTION, ELSET=LAYER, MATERIAL=ABAQUSLAYER, ORIENTATION=CYL")
+    else:
+        out.append("*SOLID SECTION, ELSET=LAYER, MATERIAL=ABAQUSLAYER")
+    if element == "CPE4":
+        out.append("1.")
+    out.append("*SOLID SECTION, ELSET=BLOCKS, MATERIAL=BLOCK")
+    if element == "CPE4":
+        out.append("1.")
+    if tied:
+        # The loaded face moves as one, in slip and normal (no rotation of the upper block:
+        # the normal traction stays the pressure, as in a direct shear box); its first node
+        # carries the slip (displacement or force).
+        nodes_tied, dofs = tied
+        out.append("*EQUATION")
+        for dof in dofs:
+            for n in nodes_tied[1:]:
+                out.append(f"2\n{n}, {dof}, 1., {nodes_tied[0]}, {dof}, -1.")
+    out.append("*BOUNDARY")
+    for name, (_, (a, b)) in fixed.items():
+        out.append(f"{name}, {a}, {b}")
+    # Step 1: the normal pressure, slip held at zero.
+    out.append("*STEP, INC=1000\n*STATIC\n0.1, 1.0, 1e-6, 0.1")
+    out.append("*BOUNDARY")
+    for name, (_, (a, b)) in held.items():
+        out.append(f"{name}, {a}, {b}, 0.")
+    out.append("*DLOAD")
+    out += [f"{e}, {face}, {PRESSURE}" for e, face in pressure_face]
+    out.append("*EL PRINT, ELSET=LAYER, FREQUENCY=1\nSDV")
+    out.append("*END STEP")
+    if shear_force is None:
+        # Step 2: the slip, displacement controlled, fixed increments.
+        n_inc = round(SLIP / INCREMENT)
+        out.append(f"*STEP, INC={n_inc + 10}\n*STATIC, DIRECT\n{1.0 / n_inc:.12g}, 1.0")
+        out.append("*BOUNDARY")
+        out.append(f"{slip_set}, {slip_dof}, {slip_dof}, {SLIP}")
+    else:
+        # Step 2 (measurement only): the shear force on the tied face, automatic increments.
+        out.append("*STEP, INC=1000\n*STATIC\n0.02, 1.0, 1e-5, 0.02")
+        out.append("*BOUNDARY, OP=NEW")
+        for name, (_, (a, b)) in fixed.items():
+            out.append(f"{name}, {a}, {b}")
+        for name, (_, (a, b)) in held.items():
+            if name != slip_set:
+                out.append(f"{name}, {a}, {b}, 0.")
+        out.append(f"*CLOAD\n{slip_set}, {slip_dof}, {shear_force:.12g}")
+    out.append("*EL PRINT, ELSET=LAYER, FREQUENCY=1\nSDV")
+    out.append("*END STEP")
+    return "\n".join(out) + "\n"
+
+
+# ---------------------------------------------------------------- reading ccx's output
+def read_dat_sdv(path):
+    """{(element, point): [row of SDV per printed increment]} and the step times."""
+    rows, times = {}, []
+    block = False
+    for line in path.read_text().splitlines():
+        m = re.match(r"\s*internal state variables \(elem, integ\.pnt\.,values\) for set "
+                     r"(\S+) and time\s+(\S+)", line)
+        if m:
+            block = True
+            times.append(float(m.group(2)))
+            continue
+        if block:
+            parts = line.split()
+            if not parts:
+                continue
+            try:
+                e, p = int(parts[0]), int(parts[1])
+            except ValueError:
+                block = False
+                continue
+            rows.setdefault((e, p), []).append([float(v) for v in parts[2:]])
+    return rows, times
+
+
+def read_convergence(job):
+    """Per increment (step, increment): the iterations and the residual sequence (.cvg)."""
+    incs = {}
+    cvg = job.with_suffix(".cvg")
+    for line in cvg.read_text().splitlines():
+        parts = line.split()
+        if len(parts) < 9 or not parts[0].isdigit():
+            continue
+        step, inc, att, it = (int(x) for x in parts[:4])
+        # RESID. FORCE (%) and CORR. DISP (%): ccx's largest residual force and correction
+        # relative to the average force and displacement increment.
+        incs.setdefault((step, inc), []).append((att, it, float(parts[5]), float(parts[6])))
+    return incs
+
+
+def convergence_lines(job):
+    """The second step's global iterations per increment and its hardest residual sequence."""
+    conv = read_convergence(job)
+    step2 = [(inc, v) for (st, inc), v in sorted(conv.items()) if st == 2]
+    iters = [len(v) for _, v in step2]
+    lines = []
+    reached = 0.0
+    for line in job.with_suffix(".sta").read_text().splitlines():
+        parts = line.split()
+        if len(parts) == 7 and parts[0] == "2" and parts[2].isdigit():
+            reached = float(parts[5])      # STEP TIME of a converged increment
+    lines.append(f"step 2 reached step time {reached:.4g} of 1")
+    if iters:
+        srt = sorted(iters)
+        cutbacks = sum(1 for _, v in step2 if any(a > 1 for a, _, _, _ in v))
+        lines.append(f"slip step: {len(iters)} increments ({cutbacks} with cutbacks), "
+                     f"global iterations per increment: "
+                     f"median {srt[len(srt) // 2]}, max {max(iters)}, total {sum(iters)}")
+        lines.append("iterations per increment: " + " ".join(str(i) for i in iters))
+        worst_inc = max(step2, key=lambda kv: len(kv[1]))
+        lines.append(f"residual sequence of increment {worst_inc[0]} (largest residual force): "
+                     + " ".join(f"{r:.2e}" for _, _, r, _ in worst_inc[1][:16])
+                     + (" ..." if len(worst_inc[1]) > 16 else "")
+                     + "  (% of the average force)")
+    return lines
+
+
+def run(args):
+    out = pathlib.Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    job = out / f"direct_shear_{args.element.lower()}_t{args.tangent}"
+    force = None
+    if args.shear_traction is not None:
+        if args.element == "CAX4":
+            sys.exit("direct_shear: --shear-traction is for C3D8 and CPE4")
+        force = args.shear_traction * (100.0 if args.element == "C3D8" else 10.0)
+        job = job.with_name(job.name + f"_tau{round(args.shear_traction * 1000)}kPa")
+    if args.prefractured:
+        job = job.with_name(job.name + "_prefractured")
+    job.with_suffix(".inp").write_text(model(args.element, args.tangent, force,
+                                             int(args.prefractured)))
+    for suffix in (".dat", ".cvg", ".sta"):
+        job.with_suffix(suffix).unlink(missing_ok=True)
+    proc = subprocess.run([args.ccx, "-i", job.name], cwd=out, capture_output=True, text=True,
+                          env={"OMP_NUM_THREADS": "1", "CCX_NPROC_STIFFNESS": "1",
+                               "PATH": "/usr/bin:/bin"})
+    job.with_suffix(".log").write_text(proc.stdout + proc.stderr)
+    if proc.returncode != 0 or "Job finished" not in proc.stdout:
+        lines = [f"{job.name}: {args.element}, tangent option {args.tangent}: ccx stopped"]
+        lines += convergence_lines(job)
+        (out / f"{job.name}_convergence.txt").write_text("\n".join(lines) + "\n")
+        print("\n".join(lines))
+        sys.exit(f"direct_shear: FAIL, ccx stopped on {job.name}.inp (log: {job}.log)")
+    rows, times = read_dat_sdv(job.with_suffix(".dat"))
+    point = min(rows)
+    sdv = rows[point]
+    n = len(sdv)
+    s_ccx = [r[22:24] for r in sdv]
+    t_ccx = [r[24:26] for r in sdv]
+
+    # The replay deck: the separations of the point at every ccx increment, one step each.
+    deck = out / f"{job.name}_replay.nml"
+    h5 = out / f"{job.name}_replay.h5"
+    p = INTERLOCK
+    tpts = ", ".join(str(i) for i in range(n + 1))
+    normal = ", ".join(["0"] + [repr(s[0]) for s in s_ccx])
+    tangential = ", ".join(["0"] + [repr(s[1]) for s in s_ccx])
+    deck.write_text(
+        f"! Replay of {job.name}.inp, element {point[0]} point {point[1]}: ccx's separations\n"
+        f"&interface\n  sigma0_n = {p['sigma0_n']}, sigma0_t = {p['sigma0_t']}, gc = {p['gc']},"
+        f" eta = {p['eta']}, mu = {p['mu']}, h_n = {p['h_n']},"
+        f" prefractured = {'.true.' if args.prefractured else '.false.'}\n/\n"
+        f"&microplanes\n  theta0_deg = {p['theta0_deg']}, thetaf_deg = {p['thetaf_deg']},"
+        f" zeta0 = {p['zeta0']}\n/\n"
+        f"&loading\n  normal_control = 'separation', tangential_control = 'separation'\n"
+        f"  times = {tpts}\n  normal = {normal}\n  tangential = {tangential}\n"
+        f"  steps = {', '.join(['1'] * n)}\n/\n"
+        f"&solver\n  scheme = 'implicit'\n/\n"
+        f"&output\n  file = '{h5.name}'\n/\n")
+    h5.unlink(missing_ok=True)
+    proc = subprocess.run([args.history, deck.name], cwd=out, capture_output=True, text=True)
+    if proc.returncode != 0:
+        sys.exit(f"direct_shear: interlock-history failed on {deck}:\n{proc.stdout}{proc.stderr}")
+    import h5py
+    with h5py.File(h5, "r") as f:
+        case = f["cases/0001"]
+        data = {k: case[k][()] for k in case.keys()}
+    worst = {}
+
+    def compare(name, ccx_values, history_values, scale=None):
+        scale = scale or max(max(abs(v) for v in ccx_values), 1e-300)
+        err = max(abs(a - b) for a, b in zip(ccx_values, history_values)) / scale
+        worst[name] = (err, scale)
+
+    # Tractions relative to the largest traction (norm of the vector) of the run.
+    trac = data["traction"]
+    t_scale = max(math.hypot(*t) for t in t_ccx)
+    for c, label in enumerate(["normal traction", "shear traction"]):
+        compare(label, [t[c] for t in t_ccx], [trac[i][c] for i in range(n)], t_scale)
+    col = 0
+    for name, count in STATEV_NAMES:
+        hist = data.get(name)
+        for k in range(count):
+            values = [r[col + k] for r in sdv]
+            if hist is not None:
+                hv = [hist[i][k] if count > 1 else hist[i] for i in range(n)]
+                if max(abs(v) for v in values) > 0:
+                    compare(f"{name}[{k + 1}]" if count > 1 else name, values, hv)
+        col += count
+    failed = {k: v for k, v in worst.items() if v[0] > args.tolerance}
+
+    lines = [f"{job.name}: {args.element}, tangent option {args.tangent}, point {point}, "
+             f"{n} printed increments",
+             "agreement with interlock-history (max |ccx - history| / max |ccx|):"]
+    lines += [f"  {k:28s} {v[0]:.2e}  (scale {v[1]:.4g})" for k, v in sorted(worst.items())]
+    lines += convergence_lines(job)
+    (out / f"{job.name}_convergence.txt").write_text("\n".join(lines) + "\n")
+    print("\n".join(lines))
+    if failed:
+        sys.exit(f"direct_shear: FAIL, disagreement above {args.tolerance}: {sorted(failed)}")
+    print(f"direct_shear: {args.element} agrees with interlock-history to {args.tolerance}")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("command", choices=["write", "run"])
+    parser.add_argument("--element", choices=sorted(AXES), required=True)
+    parser.add_argument("--tangent", type=int, choices=[1, 2], default=1)
+    parser.add_argument("--out", default=".")
+    parser.add_argument("--ccx")
+    parser.add_argument("--history")
+    parser.add_argument("--tolerance", type=float, default=1e-5)
+    parser.add_argument("--shear-traction", type=float,
+                        help="measurement variant: step 2 shears by this mean traction [MPa] "
+                             "(a force on the tied top face, automatic increments) instead of "
+                             "imposing the slip")
+    parser.add_argument("--prefractured", action="store_true",
+                        help="the interface fully debonded from the start (D = 1)")
+    args = parser.parse_args()
+    if args.command == "write":
+        path = pathlib.Path(args.out) / f"direct_shear_{args.element.lower()}.inp"
+        path.write_text(model(args.element, args.tangent))
+        print(path)
+        return
+    if not (args.ccx and args.history):
+        parser.error("run needs --ccx and --history")
+    run(args)
+
+
+if __name__ == "__main__":
+    main()
