@@ -52,7 +52,11 @@ def parse_args(argv):
     p.add_argument("--radius", type=float, default=250.0, help="block radius [mm] (250)")
     p.add_argument("--uniform-radius", type=float, default=60.0,
                    help="radius [mm] up to which the radial size is --element (60)")
+    p.add_argument("--bar-element", choices=("CAX4R", "CAX4"), default="CAX4R",
+                   help="the steel's element (CAX4R: ccx's CAX4 locks in plastic flow)")
     p.add_argument("--layer-thickness", type=float, default=0.01, help="h [mm] (0.01)")
+    p.add_argument("--layer-e-other", type=float, default=0.01,
+                   help="layer PROPS 2, modulus [MPa] of its non-interface components (0.01)")
     p.add_argument("--layer", choices=("umat", "elastic"), default="umat")
     p.add_argument("--tangent", type=int, choices=(0, 1, 2), default=2,
                    help="interlock PROPS 20: 1 exact (ccx averages it), 2 symmetric for hosts "
@@ -151,11 +155,16 @@ def main(argv):
     for j in range(ny):
         for i in range(nr):
             w(f"{node(i, j)}, {r[i]:.8g}, {y[j]:.8g}")
-    w("*ELEMENT, TYPE=CAX4, ELSET=EALL")
-    for j in range(ny - 1):
-        for i in range(nr - 1):
-            w(f"{elem(i, j)}, {node(i, j)}, {node(i + 1, j)}, {node(i + 1, j + 1)}, "
-              f"{node(i, j + 1)}")
+    # The steel's element: ccx's CAX4 is fully integrated without a B-bar treatment, so the
+    # plastically incompressible bar locks (spurious hydrostatic stresses of hundreds of MPa,
+    # the pull-out force far above the yield force); CAX4R (one point, hourglass control) does
+    # not. Layer and concrete: CAX4.
+    for etype, first_col, last_col in ((a.bar_element, 0, layer_col), ("CAX4", layer_col, nr - 1)):
+        w(f"*ELEMENT, TYPE={etype}, ELSET=EALL")
+        for j in range(ny - 1):
+            for i in range(first_col, last_col):
+                w(f"{elem(i, j)}, {node(i, j)}, {node(i + 1, j)}, {node(i + 1, j + 1)}, "
+                  f"{node(i, j + 1)}")
     for name, ids in (("BAR", bar), ("LAYERCLAY", clay), ("LAYERCONC", conc_layer),
                       ("CONCRETE", concrete)):
         w(f"*ELSET, ELSET={name}")
@@ -196,15 +205,17 @@ def main(argv):
         if a.layer == "umat":
             w(f"*SOLID SECTION, ELSET={set_name}, MATERIAL=ABAQUS{mat}, ORIENTATION=CYL")
             w(f"*MATERIAL, NAME=ABAQUS{mat}")
-            props = [a.layer_thickness, E_CONCRETE, 1, 3,
+            props = [a.layer_thickness, a.layer_e_other, 1, 3,
                      s0, s0, gc, eta, mu, hn, th0, thf, z0,
                      0, a.scheme, 0.0, a.max_damage_increment, a.max_angle_increment,
                      1, 1, 1, 1, 1] + ([a.tangent] if a.tangent else [])
             w(f"*USER MATERIAL, CONSTANTS={len(props)}")
             w("** h, e_other, normal axis (radial), slip axis (bar axis), then interlock PROPS")
             w(lines8(props))
+            if len(props) % 8 == 0:
+                w("0.")          # ccx reads a temperature after the constants
             w("*DEPVAR")
-            w("22")
+            w("26")            # the law's 22, then separation and traction (normal, slip)
         else:
             # Stand-in: isotropic elastic of the interface's initial stiffness K h.
             k = s0 / ((1.0 - eta) * 2.0 * gc / s0)

@@ -96,12 +96,13 @@ def read_dat(path):
 
 
 def read_sta(path):
-    """Converged increments: (inc, attempts, iterations, total time, increment)."""
+    """Converged increments: (inc, attempts, iterations, total time, increment); ccx marks an
+    unsuccessful attempt with a U after its number (those rows are skipped)."""
     rows = []
     with open(path) as f:
         for line in f:
             fields = line.split()
-            if len(fields) == 7 and fields[0].isdigit():
+            if len(fields) == 7 and fields[0].isdigit() and fields[2].isdigit():
                 rows.append((int(fields[1]), int(fields[2]), int(fields[3]),
                              to_float(fields[4]), to_float(fields[6])))
     return rows

@@ -21,6 +21,34 @@ sys.path.insert(0, HERE)
 import post  # noqa: E402
 
 
+def umat_share(run_dir):
+    """Shares of ccx's CPU samples (perf report, by symbol): interlock's code (the bundle's
+    module procedures and its umat), ccx's UMAT interface (umat_main, umat_abaqus: rotation
+    into the local axes and the tangent's averaging), the linear solver (SPOOLES) and the rest."""
+    out = subprocess.run(["perf", "report", "-i", "perf.data", "--stdio", "--sort", "sym",
+                          "--percent-limit", "0"], cwd=run_dir, capture_output=True,
+                         text=True).stdout
+    shares = {"interlock": 0.0, "ccx_umat_interface": 0.0, "spooles": 0.0, "other": 0.0}
+    samples = 0
+    for line in out.splitlines():
+        if line.startswith("# Samples:"):
+            samples = int(line.split()[2])
+        fields = line.split()
+        if len(fields) < 3 or not fields[0].endswith("%"):
+            continue
+        pct, sym = float(fields[0][:-1]), fields[-1]
+        if "interlock" in sym or sym in ("umat_", "umat"):
+            shares["interlock"] += pct
+        elif sym.startswith("umat_main") or sym.startswith("umat_abaqus"):
+            shares["ccx_umat_interface"] += pct
+        elif any(sym.startswith(k) for k in ("FrontMtx", "Chv", "A2_", "SubMtx", "IV", "DV",
+                                             "InpMtx", "Graph", "ETree", "IVL", "DenseMtx")):
+            shares["spooles"] += pct
+        else:
+            shares["other"] += pct
+    return {"samples": samples, "percent": {k: round(v, 2) for k, v in shares.items()}}
+
+
 def main(argv):
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--ccx", required=True, help="the ccx binary (linked with interlock)")
@@ -29,6 +57,9 @@ def main(argv):
     p.add_argument("--figures", help="directory for the PNG files (default: --dir)")
     p.add_argument("--title", default="", help="text added to the figure titles")
     p.add_argument("--no-figures", action="store_true", help="summary only")
+    p.add_argument("--profile", action="store_true",
+                   help="run ccx under `perf record` (Debian's linux-perf) and add the share of "
+                        "CPU samples spent in the UMAT to the summary")
     a, mesh_args = p.parse_known_args(argv)
     os.makedirs(a.dir, exist_ok=True)
     inp = os.path.join(a.dir, "pullout.inp")
@@ -45,7 +76,9 @@ def main(argv):
     start = time.monotonic()
     with open(os.path.join(a.dir, "ccx.log"), "w") as log:
         try:
-            rc = subprocess.run([a.ccx, "-i", "pullout"], cwd=a.dir, stdout=log,
+            prefix = (["perf", "record", "-q", "-F", "499", "-o", "perf.data", "--"]
+                      if a.profile else [])
+            rc = subprocess.run(prefix + [a.ccx, "-i", "pullout"], cwd=a.dir, stdout=log,
                                 stderr=subprocess.STDOUT, env=env).returncode
         except OSError as e:
             print(f"run.py: cannot run {a.ccx}: {e}", file=sys.stderr)
@@ -62,6 +95,8 @@ def main(argv):
     summary["wall_time_s"] = round(wall, 2)
     summary["threads"] = a.threads
     summary["mesh_options"] = " ".join(mesh_args)
+    if a.profile:
+        summary["profile"] = umat_share(a.dir)
     if not a.no_figures:
         post.plot(data, summary, a.figures or a.dir, a.title or " ".join(mesh_args) or "full")
     tmp = job + ".summary.tmp"
