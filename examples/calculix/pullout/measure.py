@@ -9,7 +9,8 @@ Sets (each a list of runs of run.py; every run in DIR/<set>/<variant>):
             symmetric option (layer PROPS 24 = interlock PROPS 20 = 2)
   bounds    coarse mesh, the UMAT's accuracy bounds (PROPS 13, 14 = 0.25, 1 deg) on and off
   radius    coarse mesh, block radius 250 mm against 500 mm and 125 mm
-  plateau   full mesh, what the steel's perfectly plastic plateau needs (see the docs)
+  plateau   full mesh, the steel's perfectly plastic plateau: CAX4R (default) against ccx's
+            fully integrated CAX4, which locks
   profile   full mesh under perf: the share of CPU time spent in the UMAT
 """
 import argparse
@@ -80,9 +81,9 @@ def main(argv):
     p.add_argument("--out", required=True)
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--set", action="append", choices=sorted(SETS), required=True)
-    p.add_argument("--plateau-variants", default="none",
-                   help="comma list for the plateau set: none, hardening:<MPa>, "
-                        "controls:<data line> (default: none)")
+    p.add_argument("--plateau-variants", default="none,bar:CAX4",
+                   help="comma list for the plateau set: none, bar:<CAX4|CAX4R>, "
+                        "hardening:<MPa>, controls:<data line> (default: none,bar:CAX4)")
     a = p.parse_args(argv)
     for v in a.plateau_variants.split(","):
         kind, _, value = v.partition(":")
@@ -92,6 +93,8 @@ def main(argv):
         elif kind == "hardening":
             SETS["plateau"].append((f"full, plateau slope {value} MPa",
                                     base + ["--plateau-hardening", value]))
+        elif kind == "bar":
+            SETS["plateau"].append((f"full, steel in {value}", base + ["--bar-element", value]))
         elif kind == "controls":
             SETS["plateau"].append((f"full, *CONTROLS {value}", base + ["--controls", value]))
     rows, curves = [], []

@@ -190,8 +190,9 @@ def analyse(job):
         slip = b[:, 2] - c[:, 2]
         opening = c[:, 1] - b[:, 1]
         state = next(rows for x, rows in layer if x == tm)
-        # STATEV 1-3 damage, 10-12 zeta, 13-15 theta of the planes -theta0, 0, +theta0
-        means = element_means(state, list(range(15)))
+        # STATEV 1-3 damage, 10-12 zeta, 13-15 theta of the planes -theta0, 0, +theta0,
+        # 23-24 separation, 25-26 traction (normal, slip) in the interface's axes
+        means = element_means(state, list(range(26)))
         es = sorted(means, key=lambda e: heights[e])
         ye = np.array([heights[e] for e in es])
         damage = np.array([means[e][0:3].mean() for e in es])
@@ -199,9 +200,10 @@ def analyse(job):
         theta0 = np.where(ye > sleeve_start, 1.75, 45.0) * math.pi / 180.0
         wear = 1.0 - np.min(np.abs(theta[:, [0, 2]]), axis=1) / theta0
         zeta = np.array([means[e][9:12].max() for e in es])
+        bond = np.array([means[e][25] for e in es])
         profiles.append(dict(level=level, s_top=tm * top, y=b[:, 0], ym=ym, strain=strain,
                              slip=slip, opening=opening, ye=ye, damage=damage, wear=wear,
-                             zeta=zeta))
+                             zeta=zeta, bond=bond))
 
     def slip_ratio(p):
         clay = np.abs(p["slip"][p["y"] >= sleeve_start]).mean()
@@ -289,16 +291,18 @@ def plot(data, summary, outdir, title):
     save(fig, os.path.join(outdir, "fig17_bar_strain.png"))
     plt.close(fig)
 
-    fig, axes = plt.subplots(3, 1, figsize=(6, 7.5), sharex=True)
+    fig, axes = plt.subplots(4, 1, figsize=(6, 9.5), sharex=True)
     for p in data["profiles"]:
         lab = f"s = {p['s_top']:.2f} mm"
         axes[0].semilogy(depth(p["y"]), np.maximum(np.abs(p["slip"]), 1e-6), lw=1.2, label=lab)
         axes[1].plot(depth(p["ye"]), p["damage"], lw=1.2, label=lab)
-        axes[2].plot(depth(p["ye"]), p["wear"], lw=1.2, label=lab)
+        axes[2].plot(depth(p["ye"]), np.abs(p["bond"]), lw=1.2, label=lab)
+        axes[3].plot(depth(p["ye"]), p["wear"], lw=1.2, label=lab)
     axes[0].set_ylabel("|slip| [mm]")
     axes[1].set_ylabel("damage (mean of planes)")
-    axes[2].set_ylabel("wear 1 - theta/theta_0")
-    axes[2].set_xlabel("distance from the loaded end [mm]  (dashed: end of the clay sleeve)")
+    axes[2].set_ylabel("|bond stress| [MPa]")
+    axes[3].set_ylabel("wear 1 - theta/theta_0")
+    axes[3].set_xlabel("distance from the loaded end [mm]  (dashed: end of the clay sleeve)")
     for ax in axes:
         ax.axvline(SLEEVE_LENGTH, color="0.6", ls="--", lw=1)
         ax.grid(alpha=0.3)
