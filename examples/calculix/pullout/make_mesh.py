@@ -13,7 +13,7 @@ together: the grip); the concrete's top face bears on the reaction plate (u_y = 
 u_r = 0. The mesh is structured: --element mm along the bar and radially up to
 --uniform-radius, then radial sizes growing geometrically (ratio <= 1.15) to the block's radius.
 
-    /usr/bin/python3 make_mesh.py --output DIR/pullout.inp [--element 5] [--radius 250] ...
+    /usr/bin/python3 make_mesh.py --output DIR/pullout.inp [--element 5] [--radius 500] ...
 
 The layer material is the interlock UMAT (--layer umat, needs ccx linked with it) or an
 isotropic elastic stand-in of the same initial stiffness (--layer elastic, for Debian's stock
@@ -49,7 +49,9 @@ def parse_args(argv):
     p.add_argument("--element", type=float, default=5.0, help="element length [mm] (5)")
     p.add_argument("--embedment", type=float, default=50.0 * BAR_DIAMETER,
                    help="embedded length [mm] (50 D = 975)")
-    p.add_argument("--radius", type=float, default=250.0, help="block radius [mm] (250)")
+    p.add_argument("--radius", type=float, default=500.0, help="block radius [mm] (500)")
+    p.add_argument("--concrete-modulus", type=float, default=E_CONCRETE,
+                   help=f"E_c [MPa] ({E_CONCRETE}: Table 3 as printed)")
     p.add_argument("--uniform-radius", type=float, default=60.0,
                    help="radius [mm] up to which the radial size is --element (60)")
     p.add_argument("--bar-element", choices=("CAX4R", "CAX4"), default="CAX4R",
@@ -190,7 +192,7 @@ def main(argv):
     w("*SOLID SECTION, ELSET=CONCRETE, MATERIAL=CONCRETE")
     w("*MATERIAL, NAME=CONCRETE")
     w("*ELASTIC")
-    w(f"{E_CONCRETE}, {NU_CONCRETE}")
+    w(f"{a.concrete_modulus}, {NU_CONCRETE}")
     w("*MATERIAL, NAME=STEEL")
     w("*ELASTIC")
     w(f"{E_STEEL}, {NU_STEEL}")

@@ -8,7 +8,8 @@ Sets (each a list of runs of run.py; every run in DIR/<set>/<variant>):
   tangent   coarse and full mesh, the exact tangent (ccx keeps its symmetric part) against the
             symmetric option (layer PROPS 24 = interlock PROPS 20 = 2)
   bounds    coarse mesh, the UMAT's accuracy bounds (PROPS 13, 14 = 0.25, 1 deg) on and off
-  radius    coarse mesh, block radius 250 mm against 500 mm and 125 mm
+  radius    coarse mesh, block radius 500 mm (the default) against 1000 mm and 250 mm
+  concrete  coarse mesh, Table 3's E_c = 2621 MPa against ten times that
   plateau   full mesh, the steel's perfectly plastic plateau: CAX4R (default) against ccx's
             fully integrated CAX4, which locks
   profile   full mesh under perf: the share of CPU time spent in the UMAT
@@ -40,9 +41,13 @@ SETS = {
         ("coarse, bounds off", ["--element", "10", "--tangent", "2"] + OFF),
     ],
     "radius": [
-        ("coarse, R = 250 mm", ["--element", "10", "--radius", "250"] + OFF),
         ("coarse, R = 500 mm", ["--element", "10", "--radius", "500"] + OFF),
-        ("coarse, R = 125 mm", ["--element", "10", "--radius", "125"] + OFF),
+        ("coarse, R = 1000 mm", ["--element", "10", "--radius", "1000"] + OFF),
+        ("coarse, R = 250 mm", ["--element", "10", "--radius", "250"] + OFF),
+    ],
+    "concrete": [
+        ("coarse, E_c = 2621 MPa (Table 3 as printed)", ["--element", "10"] + OFF),
+        ("coarse, E_c = 26210 MPa", ["--element", "10", "--concrete-modulus", "26210"] + OFF),
     ],
     "plateau": [],          # filled in main() from --plateau-variants
     "profile": [
@@ -55,8 +60,12 @@ def slug(text):
     return "".join(c if c.isalnum() else "_" for c in text).strip("_")[:60]
 
 
-def run(ccx, out, threads, name, args):
+def run(ccx, out, threads, name, args, reuse):
     d = os.path.join(out, slug(name))
+    if reuse and os.path.isfile(os.path.join(d, "summary.json")):
+        with open(os.path.join(d, "summary.json")) as f:
+            s = json.load(f)
+        return s, post.analyse(os.path.join(d, "pullout"))[1]
     profile = "--profile" in args
     args = [x for x in args if x != "--profile"]
     cmd = [sys.executable, os.path.join(HERE, "run.py"), "--ccx", ccx, "--dir", d,
@@ -80,6 +89,8 @@ def main(argv):
     p.add_argument("--ccx", required=True)
     p.add_argument("--out", required=True)
     p.add_argument("--threads", type=int, default=2)
+    p.add_argument("--reuse", action="store_true",
+                   help="tabulate the runs already in --out (no ccx run)")
     p.add_argument("--set", action="append", choices=sorted(SETS), required=True)
     p.add_argument("--plateau-variants", default="none,bar:CAX4",
                    help="comma list for the plateau set: none, bar:<CAX4|CAX4R>, "
@@ -100,7 +111,7 @@ def main(argv):
     rows, curves = [], []
     for set_name in a.set:
         for name, args in SETS[set_name]:
-            s, data = run(a.ccx, os.path.join(a.out, set_name), a.threads, name, args)
+            s, data = run(a.ccx, os.path.join(a.out, set_name), a.threads, name, args, a.reuse)
             if s is None:
                 rows.append(f"| {name} | did not run | | | | | | | |")
                 continue
@@ -121,14 +132,22 @@ def main(argv):
     print("\n".join(rows))
     if len(curves) > 1:
         print()
-        ref_name, ref_s, ref_f = curves[0]
-        for name, s_top, force in curves[1:]:
-            top = min(s_top[-1], ref_s[-1])
-            grid = np.linspace(0.0, top, 200)
+    for i, (ref_name, ref_s, ref_f) in enumerate(curves):
+        for name, s_top, force in curves[i + 1:]:
+            # At the top displacements both runs converged at (interpolating across the kink
+            # at yield would compare different points of the curve), else interpolated.
+            common = sorted(set(np.round(s_top, 7)) & set(np.round(ref_s, 7)))
+            how = "at the common increments"
+            if len(common) < 10:
+                # at the increments of the run with fewer, the other one interpolated
+                coarser = s_top if len(s_top) < len(ref_s) else ref_s
+                common = coarser[coarser <= min(s_top[-1], ref_s[-1]) + 1e-12]
+                how = "at the increments of the run with fewer, the other interpolated"
+            grid = np.array(common)
             diff = np.interp(grid, s_top, force) - np.interp(grid, ref_s, ref_f)
             k = int(np.argmax(np.abs(diff)))
-            print(f"- {name} against {ref_name}: largest force difference over 0..{top:.2f} mm "
-                  f"{diff[k] / 1000:+.3f} kN at {grid[k]:.2f} mm "
+            print(f"- {name} against {ref_name}: largest force difference over 0..{grid[-1]:.2f}"
+                  f" mm ({how}) {diff[k] / 1000:+.3f} kN at {grid[k]:.2f} mm "
                   f"({diff[k] / max(np.interp(grid[k], ref_s, ref_f), 1.0) * 100:+.3f} %)")
     return 0
 

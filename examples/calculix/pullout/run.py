@@ -24,21 +24,27 @@ import post  # noqa: E402
 def umat_share(run_dir):
     """Shares of ccx's CPU samples (perf report, by symbol): interlock's code (the bundle's
     module procedures and its umat), ccx's UMAT interface (umat_main, umat_abaqus: rotation
-    into the local axes and the tangent's averaging), the linear solver (SPOOLES) and the rest."""
+    into the local axes and the tangent's averaging), the linear solver (SPOOLES) and the rest;
+    of interlock's share, the part spent reading and checking PROPS (every call)."""
     out = subprocess.run(["perf", "report", "-i", "perf.data", "--stdio", "--sort", "sym",
                           "--percent-limit", "0"], cwd=run_dir, capture_output=True,
                          text=True).stdout
-    shares = {"interlock": 0.0, "ccx_umat_interface": 0.0, "spooles": 0.0, "other": 0.0}
+    shares = {"interlock": 0.0, "interlock_props_and_prepare": 0.0, "ccx_umat_interface": 0.0,
+              "spooles": 0.0, "other": 0.0}
     samples = 0
     for line in out.splitlines():
         if line.startswith("# Samples:"):
-            samples = int(line.split()[2])
+            text = line.split()[2]                 # e.g. 33K
+            scale = {"K": 1e3, "M": 1e6}.get(text[-1], 1.0)
+            samples = int(float(text.rstrip("KM")) * scale)
         fields = line.split()
         if len(fields) < 3 or not fields[0].endswith("%"):
             continue
         pct, sym = float(fields[0][:-1]), fields[-1]
         if "interlock" in sym or sym in ("umat_", "umat"):
-            shares["interlock"] += pct
+            shares["interlock"] += pct           # all of it (the next key is a part)
+            if any(k in sym for k in ("material_table", "material_prepare", "props_to")):
+                shares["interlock_props_and_prepare"] += pct
         elif sym.startswith("umat_main") or sym.startswith("umat_abaqus"):
             shares["ccx_umat_interface"] += pct
         elif any(sym.startswith(k) for k in ("FrontMtx", "Chv", "A2_", "SubMtx", "IV", "DV",
