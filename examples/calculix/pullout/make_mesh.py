@@ -65,10 +65,12 @@ def parse_args(argv):
                         "that symmetrize (2); 0: PROPS 20 not given (the law's default)")
     p.add_argument("--scheme", type=int, choices=(1, 2), default=2,
                    help="interlock PROPS 11: 1 explicit, 2 implicit (2)")
-    p.add_argument("--max-damage-increment", type=float, default=0.25,
-                   help="interlock PROPS 13 (0.25)")
-    p.add_argument("--max-angle-increment", type=float, default=1.0,
-                   help="interlock PROPS 14 [deg] (1)")
+    # The UMAT's accuracy bounds off by default: in ccx every positive PNEWDT is a cutback, and
+    # here they add increments without changing the forces (docs/calculix_pullout.md).
+    p.add_argument("--max-damage-increment", type=float, default=1.0,
+                   help="interlock PROPS 13 (1: off)")
+    p.add_argument("--max-angle-increment", type=float, default=90.0,
+                   help="interlock PROPS 14 [deg] (90: off)")
     p.add_argument("--plateau-hardening", type=float, default=0.0,
                    help="slope [MPa] given to Table 4's plateau (0: as the paper)")
     p.add_argument("--top-displacement", type=float, default=5.2, help="mm (5.2)")

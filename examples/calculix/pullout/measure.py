@@ -9,6 +9,7 @@ Sets (each a list of runs of run.py; every run in DIR/<set>/<variant>):
             symmetric option (layer PROPS 24 = interlock PROPS 20 = 2)
   bounds    coarse mesh, the UMAT's accuracy bounds (PROPS 13, 14 = 0.25, 1 deg) on and off
   radius    coarse mesh, block radius 500 mm (the default) against 1000 mm and 250 mm
+  layer     coarse mesh, the layer's e_other 0.01 MPa (the default) against 1 and 2621 MPa
   concrete  coarse mesh, Table 3's E_c = 2621 MPa against ten times that
   plateau   full mesh, the steel's perfectly plastic plateau: CAX4R (default) against ccx's
             fully integrated CAX4, which locks
@@ -48,6 +49,12 @@ SETS = {
     "concrete": [
         ("coarse, E_c = 2621 MPa (Table 3 as printed)", ["--element", "10"] + OFF),
         ("coarse, E_c = 26210 MPa", ["--element", "10", "--concrete-modulus", "26210"] + OFF),
+    ],
+    "layer": [
+        ("coarse, e_other = 0.01 MPa", ["--element", "10"] + OFF),
+        ("coarse, e_other = 1 MPa", ["--element", "10", "--layer-e-other", "1"] + OFF),
+        ("coarse, e_other = 2621 MPa (= E_c)", ["--element", "10", "--layer-e-other", "2621"]
+         + OFF),
     ],
     "plateau": [],          # filled in main() from --plateau-variants
     "profile": [
