@@ -20,7 +20,6 @@ isotropic elastic stand-in of the same initial stiffness (--layer elastic, for D
 ccx, which cannot load a user material).
 """
 import argparse
-import math
 import os
 import sys
 
@@ -41,6 +40,14 @@ INTERFACES = {
     "CONCBAR": (1.0, 0.1, 0.995, 0.7, 45.0, 0.0, 1.5, 33.3),
     "CLAYBAR": (0.5, 0.05, 0.995, 0.6, 1.75, 0.0, 0.5, 33.3),
 }
+
+
+def write_text(path, text):
+    """Writes a whole file under a temporary name and renames it: never half-written."""
+    tmp = path + ".tmp"
+    with open(tmp, "w") as f:
+        f.write(text)
+    os.replace(tmp, path)
 
 
 def parse_args(argv):
@@ -254,10 +261,7 @@ def main(argv):
     w("*END STEP")
 
     os.makedirs(os.path.dirname(os.path.abspath(a.output)), exist_ok=True)
-    tmp = a.output + ".tmp"
-    with open(tmp, "w") as f:
-        f.write("\n".join(out) + "\n")
-    os.replace(tmp, a.output)
+    write_text(a.output, "\n".join(out) + "\n")
     print(f"{a.output}: {nr * ny} nodes, {(nr - 1) * (ny - 1)} CAX4 "
           f"({len(bar)} bar, {len(clay)} clay-bar layer, {len(conc_layer)} concrete-bar layer, "
           f"{len(concrete)} concrete)")

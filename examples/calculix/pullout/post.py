@@ -23,12 +23,12 @@ import sys
 
 import numpy as np
 
-BAR_DIAMETER = 19.5
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from make_mesh import BAR_DIAMETER, E_STEEL, HARDENING, SLEEVE_LENGTH, write_text  # noqa: E402
+
 BAR_AREA = math.pi * BAR_DIAMETER ** 2 / 4.0
-YIELD_STRESS = 350.0                  # Table 3
-E_STEEL = 190000.0
+YIELD_STRESS = HARDENING[0][0]        # Table 3's f_sy = Table 4's first yield strength
 WEDGE = 180.0                         # ccx prints CAX4 forces for a 2-degree wedge
-SLEEVE_LENGTH = 10.0 * BAR_DIAMETER
 PROFILE_LEVELS = (0.5, 1.0, 2.0, 3.0, 4.0, 5.2)   # top displacements [mm] of the profiles
 
 HEADER = re.compile(r"^\s*(.+?)\s*for set\s+(\S+)\s+and time\s+(\S+)")
@@ -351,10 +351,7 @@ def main(argv):
         plot(data, summary, a.figures, a.title or os.path.basename(a.job))
     text = json.dumps(summary, indent=1)
     if a.summary:
-        tmp = a.summary + ".tmp"
-        with open(tmp, "w") as f:
-            f.write(text + "\n")
-        os.replace(tmp, a.summary)
+        write_text(a.summary, text + "\n")
     brief = {k: v for k, v in summary.items() if k not in ("yielded_length_mm",)}
     print(json.dumps(brief, indent=1))
     return 0

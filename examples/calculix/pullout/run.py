@@ -105,11 +105,7 @@ def main(argv):
         summary["profile"] = umat_share(a.dir)
     if not a.no_figures:
         post.plot(data, summary, a.figures or a.dir, a.title or " ".join(mesh_args) or "full")
-    tmp = job + ".summary.tmp"
-    with open(tmp, "w") as f:
-        json.dump(summary, f, indent=1)
-        f.write("\n")
-    os.replace(tmp, os.path.join(a.dir, "summary.json"))
+    post.write_text(os.path.join(a.dir, "summary.json"), json.dumps(summary, indent=1) + "\n")
     s = summary
     print(f"pull-out {' '.join(mesh_args) or '(full)'}: reached {s['top_displacement_reached_mm']:.3f}"
           f" of {s['top_displacement_target_mm']} mm, {s['increments']} increments "
