@@ -12,7 +12,7 @@ Sets (each a list of runs of run.py; every run in DIR/<set>/<variant>):
   layer     coarse mesh, the layer's e_other 0.01 MPa (the default) against 1 and 2621 MPa
   concrete  coarse mesh, Table 3's E_c = 2621 MPa against ten times that
   plateau   full mesh, the steel's perfectly plastic plateau: CAX4R (default) against ccx's
-            fully integrated CAX4, which locks
+            fully integrated CAX4
   profile   full mesh under perf: the share of CPU time spent in the UMAT
 """
 import argparse
