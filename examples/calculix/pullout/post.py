@@ -315,8 +315,8 @@ def plot(data, summary, outdir, title):
 
     fig, axes = plt.subplots(1, 2, figsize=(9, 3.6))
     sta = data["sta"]
-    axes[0].plot([data["s_top"][0]] + [r[3] * summary["top_displacement_target_mm"]
-                                       for r in sta], [0] + [r[2] for r in sta], "k.-", lw=0.8)
+    axes[0].plot([r[3] * summary["top_displacement_target_mm"] for r in sta],
+                 [r[2] for r in sta], "k.-", lw=0.8)
     axes[0].set_xlabel("top displacement [mm]")
     axes[0].set_ylabel("global iterations (converged attempt)")
     seq = {}
