@@ -24,9 +24,10 @@ import post  # noqa: E402
 def umat_share(run_dir):
     """Shares of ccx's CPU samples (perf report, by symbol): interlock's code (the bundle's
     module procedures and its umat), ccx's UMAT interface (umat_main, umat_abaqus: rotation
-    into the local axes and the tangent's averaging), the linear solver (SPOOLES) and the rest;
+    into the local axes and the tangent's averaging), the linear solver (libspooles) and the
+    rest (mostly ccx's element routines and assembly);
     of interlock's share, the part spent reading and checking PROPS (every call)."""
-    out = subprocess.run(["perf", "report", "-i", "perf.data", "--stdio", "--sort", "sym",
+    out = subprocess.run(["perf", "report", "-i", "perf.data", "--stdio", "--sort", "dso,sym",
                           "--percent-limit", "0"], cwd=run_dir, capture_output=True,
                          text=True).stdout
     shares = {"interlock": 0.0, "interlock_props_and_prepare": 0.0, "ccx_umat_interface": 0.0,
@@ -47,8 +48,7 @@ def umat_share(run_dir):
                 shares["interlock_props_and_prepare"] += pct
         elif sym.startswith("umat_main") or sym.startswith("umat_abaqus"):
             shares["ccx_umat_interface"] += pct
-        elif any(sym.startswith(k) for k in ("FrontMtx", "Chv", "A2_", "SubMtx", "IV", "DV",
-                                             "InpMtx", "Graph", "ETree", "IVL", "DenseMtx")):
+        elif "spooles" in fields[1]:
             shares["spooles"] += pct
         else:
             shares["other"] += pct
