@@ -107,15 +107,15 @@ fi
 # --- 3. interlock's bundle for ccx, compiled and linked only when its text changed.
 mkdir -p "$build/interlock" "$build/bin"
 bundle="$build/interlock/interlock_ccx_bundle.f90"
+next="$build/interlock/interlock_ccx_bundle_next.f90"
 python3 "$here/scripts/make_bundle.py" --source-dir "$here" \
-  --entry umat/calculix/interlock_ccx_umat.f90 --output "$bundle.new" > /dev/null
+  --entry umat/calculix/interlock_ccx_umat.f90 --output "$next" > /dev/null
 binary="$build/bin/ccx_interlock"
-if [ -x "$binary" ] && [ -f "$bundle" ] && cmp -s "$bundle" "$bundle.new"; then
-  rm -f "$bundle.new"
+if [ -x "$binary" ] && [ -f "$bundle" ] && cmp -s "$bundle" "$next"; then
+  rm -f "$next"
 else
   log "compiling interlock's thin-layer umat and linking $binary"
-  mv "$bundle.new" "$bundle"
-  (cd "$build/interlock" && gfortran -O2 -fopenmp -c interlock_ccx_bundle.f90 -o interlock_ccx_bundle.o)
+  (cd "$build/interlock" && gfortran -O2 -fopenmp -c "$next" -o interlock_ccx_bundle.o)
   # ccx's own link line (its Makefile: $(FC) -Wall -O2 -o $@ ccx_2.20.o ccx_2.20.a $(LIBS)
   # -fopenmp $(LDFLAGS)) with our umat before the archive without the stub.
   # shellcheck disable=SC2046
@@ -123,5 +123,6 @@ else
     "$build/ccx_without_umat.a" -lspooles -lpthread -larpack -llapack -lblas -lm -lc -fopenmp \
     $(cat "$build/ccx_ldflags")
   mv "$binary.tmp" "$binary"
+  mv "$next" "$bundle"     # last: an interrupted build relinks next time
 fi
 echo "$binary"

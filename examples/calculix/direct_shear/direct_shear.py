@@ -28,7 +28,7 @@ import subprocess
 import sys
 
 H = 0.01            # layer thickness [mm]
-E_OTHER = 10.0      # modulus of the layer's other components [MPa]
+E_OTHER = 0.01      # modulus of the layer's other components [MPa] (small: see below)
 E_BLOCK, NU_BLOCK = 30000.0, 0.2   # the blocks (concrete-like) [MPa]
 PRESSURE = 0.2      # normal pressure [MPa]
 SLIP = 1.5          # imposed slip [mm]
