@@ -3,12 +3,13 @@
 # interlock-query and docs/material.md, and install + find_package from a consumer project.
 
 # --- The UMAT against the library; bad input; PNEWDT.
-interlock_add_suite(test_umat test_umat_interface.f90 test_umat.f90)
-target_link_libraries(test_umat PRIVATE interlock_umat)
+interlock_add_pfunit_suite(test_umat TEST_SOURCES test_umat.pf OTHER_SOURCES test_umat_interface.f90
+  LINK_LIBRARIES interlock_umat)
 # The rejections must also be reported: one line each, naming element, point and the property.
+# (A pass regular expression overrides the exit status: pFUnit's "OK" line must be there too.)
 set_tests_properties(test_umat PROPERTIES
-  PASS_REGULAR_EXPRESSION "interlock UMAT: element 7, point 3 \\(material 'TEST', increment 1\\): PROPS\\(4\\): property 'eta' = 0 is inadmissible: admissible 0 < +eta < +1.*NPROPS = 8 is inadmissible.*NSTATV = 21 is inadmissible.*NTENS = 3 is inadmissible.*separation STRAN \\+ DSTRAN is not finite.*STATEV\\(1\\) = -0.1 \\(damage of plane 1\\) is inadmissible: admissible 0 <= damage <= 1 \\[-\\].*STRESS\\(1\\) = NaN on entry is inadmissible.*DSTRAN = \\(1e\\+100, 0\\) mm is inadmissible: admissible \\|s_N\\|, \\|s_T\\| <= 1000000 mm.*umat: [0-9]+ checks, 0 failed"
-  FAIL_REGULAR_EXPRESSION "FAIL|ERROR STOP")
+  PASS_REGULAR_EXPRESSION "interlock UMAT: element 7, point 3 \\(material 'TEST', increment 1\\): PROPS\\(4\\): property 'eta' = 0 is inadmissible: admissible 0 < +eta < +1.*NPROPS = 8 is inadmissible.*NSTATV = 21 is inadmissible.*NTENS = 3 is inadmissible.*separation STRAN \\+ DSTRAN is not finite.*STATEV\\(1\\) = -0.1 \\(damage of plane 1\\) is inadmissible: admissible 0 <= damage <= 1 \\[-\\].*STRESS\\(1\\) = NaN on entry is inadmissible.*DSTRAN = \\(1e\\+100, 0\\) mm is inadmissible: admissible \\|s_N\\|, \\|s_T\\| <= 1000000 mm.*OK\n \\(16 tests\\)"
+  FAIL_REGULAR_EXPRESSION "FAIL|ERROR STOP|Encountered 1 or more failures")
 
 # --- The table tells the truth (defaults, PROPS slots, STATEV layout).
 interlock_add_suite(test_umat_table test_umat_table.f90)
