@@ -52,12 +52,28 @@ if(NOT PFUNIT_FOUND)
           "  - set INTERLOCK_PFUNIT_SHA256 to the sha256 of ${INTERLOCK_PFUNIT_URL} to download it,\n"
           "  - or configure with -DINTERLOCK_BUILD_TESTS=OFF (the library needs no pFUnit).")
       endif()
-      set(pfunit_url "${INTERLOCK_PFUNIT_URL}")
-      message(STATUS "pFUnit: downloading ${pfunit_url}")
+      # One attempt, here, so that an offline machine fails at once and says what to do
+      # (FetchContent's own download retries for minutes).
+      get_filename_component(archive_name "${INTERLOCK_PFUNIT_URL}" NAME)
+      set(pfunit_url ${PROJECT_BINARY_DIR}/_deps/${archive_name})
+      if(NOT EXISTS ${pfunit_url})
+        message(STATUS "pFUnit: downloading ${INTERLOCK_PFUNIT_URL}")
+        file(DOWNLOAD "${INTERLOCK_PFUNIT_URL}" ${pfunit_url}.part STATUS download_status
+          INACTIVITY_TIMEOUT 30 TIMEOUT 600)
+        list(GET download_status 0 download_code)
+        if(NOT download_code EQUAL 0)
+          list(GET download_status 1 download_message)
+          file(REMOVE ${pfunit_url}.part)
+          message(FATAL_ERROR "pFUnit: the download of ${INTERLOCK_PFUNIT_URL} failed "
+            "(${download_message}). Offline, set INTERLOCK_PFUNIT_SOURCE to a pFUnit archive or "
+            "source tree, or CMAKE_PREFIX_PATH to an installed pFUnit.")
+        endif()
+        file(RENAME ${pfunit_url}.part ${pfunit_url})
+      endif()
     endif()
-    # A download that cannot connect gives up after 30 s of silence, not after minutes.
+    # FetchContent checks the archive against the checksum and unpacks it.
     FetchContent_Declare(interlock_pfunit URL "${pfunit_url}" ${hash_option}
-      DOWNLOAD_EXTRACT_TIMESTAMP TRUE INACTIVITY_TIMEOUT 30 TIMEOUT 600)
+      DOWNLOAD_EXTRACT_TIMESTAMP TRUE)
     FetchContent_GetProperties(interlock_pfunit)
     if(NOT interlock_pfunit_POPULATED)
       FetchContent_Populate(interlock_pfunit)
