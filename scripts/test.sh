@@ -17,6 +17,9 @@ pfunit_options=(-DPython_EXECUTABLE=/usr/bin/python3)
 if [ -f "$pfunit_archive" ]; then
   pfunit_options+=("-DINTERLOCK_PFUNIT_SOURCE=$(cd "$(dirname "$pfunit_archive")" && pwd)/$(basename "$pfunit_archive")"
     -DINTERLOCK_PFUNIT_SHA256=070200f8018c61d70198edfac73e5460b5407339f062af9832123aada516fada)
+  echo "=== pFUnit from $pfunit_archive"
+else
+  echo "=== no $pfunit_archive: pFUnit must be installed (CMAKE_PREFIX_PATH) or downloadable"
 fi
 status=0
 for config in Release Debug; do
