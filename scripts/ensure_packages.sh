@@ -2,8 +2,10 @@
 # Installs the Debian packages interlock needs, only those that are missing (Debian 12).
 # Sourced or run by scripts/main.sh, scripts/test.sh and .ci/run.
 set -euo pipefail
+# m4 and python3: pFUnit's build (gFTL's templates, the .pf preprocessor), when it is built
+# from source for the tests.
 needed=(gfortran cmake ninja-build libhdf5-dev liblapack-dev libblas-dev
-        python3-h5py python3-matplotlib python3-numpy)
+        python3-h5py python3-matplotlib python3-numpy python3 m4)
 missing=()
 for p in "${needed[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

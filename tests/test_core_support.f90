@@ -3,7 +3,7 @@
 !> finite-difference tangent, and a portable random-number generator for the random histories.
 module test_core_support
   use interlock
-  use interlock_assert, only: assert_true
+  use funit, only: assertTrue
   implicit none
   private
   public :: table1_material, table2_material, flat_material, prepare_or_fail
@@ -36,7 +36,7 @@ contains
     integer :: stat
     character(len=message_len) :: msg
     call interlock_material_prepare(mat, stat, msg)
-    call assert_true(stat == status_ok, 'material prepare: ' // trim(msg))
+    call assertTrue(stat == status_ok, 'material prepare: ' // trim(msg))
   end subroutine prepare_or_fail
 
   !> Table 1 of the paper (sigma0 = 3 MPa, Gc_bar = 0.3 N/mm, eta = 0.9, mu = 0.5), the
@@ -101,7 +101,7 @@ contains
     integer :: i
     do i = 1, size(path, 2)
       call interlock_update(mat, solver, path(:, i), state, new, sigma, tangent, info)
-      call assert_true(info%status == status_ok, 'drive_to: ' // trim(info%message))
+      call assertTrue(info%status == status_ok, 'drive_to: ' // trim(info%message))
       if (info%status /= status_ok) return
       state = new
     end do
@@ -132,7 +132,7 @@ contains
       if (.not. (tangent(1, 1) > 0.0_dp)) exit
       s(1) = s(1) - (sigma(1) - sig_n) / tangent(1, 1)
     end do
-    call assert_true(ok, 'solve_sigma_n converged')
+    call assertTrue(ok, 'solve_sigma_n converged')
   end subroutine solve_sigma_n
 
   !> The paper's protocol (D8): sigma_N applied in one step at s_T = 0, then n uniform slip
@@ -178,7 +178,7 @@ contains
     real(dp) :: sp(2), sm(2), sigp(2), sigm(2), sig0(2), ktmp(2, 2)
     integer :: j
     call interlock_update(mat, solver, s, old, new, sig0, kan, info0)
-    call assert_true(info0%status == status_ok, 'fd_tangent base: ' // trim(info0%message))
+    call assertTrue(info0%status == status_ok, 'fd_tangent base: ' // trim(info0%message))
     same_steps = .true.
     do j = 1, 2
       sp = s
@@ -187,7 +187,7 @@ contains
       sm(j) = s(j) - h
       call interlock_update(mat, solver, sp, old, tmp, sigp, ktmp, infop)
       call interlock_update(mat, solver, sm, old, tmp, sigm, ktmp, infom)
-      call assert_true(infop%status == status_ok .and. infom%status == status_ok, &
+      call assertTrue(infop%status == status_ok .and. infom%status == status_ok, &
                        'fd_tangent perturbed updates succeed')
       kfd(:, j) = (sigp - sigm) / (sp(j) - sm(j))
       same_steps = same_steps .and. infop%substeps == info0%substeps .and. &
@@ -217,11 +217,11 @@ contains
     integer :: u, ios
     row = 0.0_dp
     open (newunit=u, file=path, status='old', action='read', iostat=ios)
-    call assert_true(ios == 0, 'open reference ' // path)
+    call assertTrue(ios == 0, 'open reference ' // path)
     if (ios /= 0) return
     read (u, *, iostat=ios)
     if (ios == 0) read (u, *, iostat=ios) row
-    call assert_true(ios == 0, 'read reference ' // path)
+    call assertTrue(ios == 0, 'read reference ' // path)
     close (u)
   end subroutine read_reference_row
 

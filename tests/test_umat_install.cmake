@@ -14,6 +14,11 @@ if(NOT CONFIG)
   set(CONFIG Release)
 endif()
 run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${PREFIX} --config ${CONFIG})
+# pFUnit is for our tests only: nothing of it is installed with interlock.
+file(GLOB_RECURSE pfunit_files ${PREFIX}/*PFUNIT* ${PREFIX}/*funit* ${PREFIX}/*gftl* ${PREFIX}/*fargparse*)
+if(pfunit_files)
+  message(FATAL_ERROR "pFUnit was installed with interlock: ${pfunit_files}")
+endif()
 run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE} -B ${CONSUMER_BUILD} -G ${GENERATOR}
     -DCMAKE_BUILD_TYPE=${CONFIG} -DCMAKE_Fortran_COMPILER=${FC} -DCMAKE_PREFIX_PATH=${PREFIX})
 run(${CMAKE_COMMAND} --build ${CONSUMER_BUILD})
