@@ -17,7 +17,11 @@ set(INTERLOCK_PFUNIT_URL
   "https://github.com/Goddard-Fortran-Ecosystem/pFUnit/releases/download/v4.14.0/pFUnit-v4.14.0.tar"
   CACHE STRING "pFUnit's pinned release (used when neither an installed pFUnit nor INTERLOCK_PFUNIT_SOURCE)")
 set(INTERLOCK_PFUNIT_SHA256 "" CACHE STRING
-  "sha256 of the archive to use (INTERLOCK_PFUNIT_SOURCE or INTERLOCK_PFUNIT_URL); required for a download")
+  "sha256 of the archive to use (INTERLOCK_PFUNIT_SOURCE, or INTERLOCK_PFUNIT_URL instead of the pinned one)")
+# The pinned release asset's sha256, as Spack's builtin pfunit recipe pins pFUnit-v4.14.0.tar
+# (not re-measured here: the build machines reach no network but Debian's archive).
+set(INTERLOCK_PFUNIT_URL_SHA256 "3f5fcc79cf5f12ed08eb8e49aff23e0826243b14d4b2b2efee91ce823ac1749d"
+  CACHE STRING "sha256 of INTERLOCK_PFUNIT_URL (the pinned release)")
 
 find_package(Python COMPONENTS Interpreter REQUIRED)
 
@@ -46,11 +50,14 @@ if(NOT PFUNIT_FOUND)
       message(STATUS "pFUnit: building the local archive ${pfunit_url} (no download)")
     else()
       if(NOT INTERLOCK_PFUNIT_SHA256)
-        message(FATAL_ERROR "pFUnit 4 not found, and no INTERLOCK_PFUNIT_SOURCE. Either\n"
-          "  - point CMAKE_PREFIX_PATH (or PFUNIT_DIR) at an installed pFUnit 4,\n"
-          "  - set INTERLOCK_PFUNIT_SOURCE to a pFUnit archive or source tree with submodules, or\n"
-          "  - set INTERLOCK_PFUNIT_SHA256 to the sha256 of ${INTERLOCK_PFUNIT_URL} to download it,\n"
-          "  - or configure with -DINTERLOCK_BUILD_TESTS=OFF (the library needs no pFUnit).")
+        if(NOT INTERLOCK_PFUNIT_URL_SHA256)
+          message(FATAL_ERROR "pFUnit 4 not found, and no INTERLOCK_PFUNIT_SOURCE. Either\n"
+            "  - point CMAKE_PREFIX_PATH (or PFUNIT_DIR) at an installed pFUnit 4,\n"
+            "  - set INTERLOCK_PFUNIT_SOURCE to a pFUnit archive or source tree with submodules, or\n"
+            "  - set INTERLOCK_PFUNIT_URL_SHA256 to the sha256 of ${INTERLOCK_PFUNIT_URL} to download it,\n"
+            "  - or configure with -DINTERLOCK_BUILD_TESTS=OFF (the library needs no pFUnit).")
+        endif()
+        set(hash_option URL_HASH SHA256=${INTERLOCK_PFUNIT_URL_SHA256})
       endif()
       # One attempt, here, so that an offline machine fails at once and says what to do
       # (FetchContent's own download retries for minutes).
