@@ -20,10 +20,10 @@ contains
   !> Integrate from `old` (state at the start of the increment) to the relative displacement
   !> `s` (end of the increment). `new` receives the state at the end (its contents on entry do
   !> not matter; it must not be `old` itself), `sigma` the traction and `tangent` =
-  !> d sigma / d s, the exact derivative of the computed traction. Every field of `info` is
-  !> set by the call (it is intent(inout) only so that a successful update does not pay for
-  !> clearing the message). On failure `info%status` /= status_ok, `info%message` says why,
-  !> `new` = `old` and `sigma` = `old%sigma`.
+  !> d sigma / d s, the exact derivative of the computed traction. Every field of `info` but
+  !> the message is set by the call (it is intent(inout) so that a successful update does not
+  !> pay for clearing the message). On failure `info%status` /= status_ok, `info%message` says
+  !> why, `new` = `old` and `sigma` = `old%sigma`; on success the message is not defined.
   pure subroutine interlock_update(mat, solver, s, old, new, sigma, tangent, info)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
@@ -33,7 +33,6 @@ contains
     real(dp), intent(out) :: sigma(2), tangent(2, 2)
     type(interlock_info_t), intent(inout) :: info
 
-    if (info%status /= status_ok) info%message = ''
     info%status = status_ok
     info%newton_iterations = 0
     info%substeps = 1

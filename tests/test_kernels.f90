@@ -76,8 +76,14 @@ contains
         call interlock_update(mat, solver, s, old, new_k, sig_k, k_k, info_k)
         call interlock_update(gen, solver, s, old, new_g, sig_g, k_g, info_g)
         if (info_k%status /= status_ok .or. info_g%status /= status_ok) then
-          call assert_true(.false., label // ': an update failed: ' // trim(info_k%message) // &
-                           trim(info_g%message))
+          ! (a message is defined only for the update that failed)
+          if (info_k%status /= status_ok) then
+            call assert_true(.false., label // ': the kernel''s update failed: ' // &
+                             trim(info_k%message))
+          else
+            call assert_true(.false., label // ': the general update failed: ' // &
+                             trim(info_g%message))
+          end if
           return
         end if
         err = max(maxval(abs(sig_k - sig_g)) / ssc, maxval(abs(k_k - k_g)) / ksc, &
