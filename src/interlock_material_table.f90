@@ -269,7 +269,7 @@ contains
     do i = 1, n
       key = transfer(x(i), 0_int64)
       key = ieor(key, iand(shifta(key, 63), huge(key)))
-      n_out = n_out + merge(1, 0, key < lo(i)) + merge(1, 0, key > hi(i))
+      n_out = n_out + merge(1, 0, key < lo(i) .or. key > hi(i))
     end do
     ok = n_out == 0
   end function keys_in_range
