@@ -4,7 +4,7 @@ module interlock_damage
   use interlock_kinds, only: dp
   implicit none
   private
-  public :: equivalent_displacement, damage_of_beta, damage_dissipation_increment
+  public :: equivalent_displacement, damage_of_beta, damage_dissipation_increment, damage_growth
 
 contains
 
@@ -23,6 +23,34 @@ contains
       dbeq = 0.0_dp
     end if
   end subroutine equivalent_displacement
+
+  !> One increment of the law at a point whose equivalent relative displacement is beq (the
+  !> fused kernels' form: scalars only, divisions only while damage grows): beta = max(beta_old,
+  !> beq), D = (beta - 1)/(eta beta) (1 from beta_break = 1/(1 - eta) on, as damage_of_beta,
+  !> to the bit), and ddb = (dD/dbeta) / beta = 1/(eta beta^3) while D grows below 1, else 0
+  !> (d beq / d(s_n, s_t) = (an / s_0n, at / s_0t) / beq, so that dD/ds = ddb (an / s_0n,
+  !> at / s_0t)). Unchanged (beta_old, d_old, 0) when beq does not exceed beta_old.
+  elemental subroutine damage_growth(beq, beta_old, d_old, eta, inv_eta, beta_break, beta, d, &
+                                     ddb)
+    real(dp), intent(in) :: beq, beta_old, d_old, eta, inv_eta, beta_break
+    real(dp), intent(out) :: beta, d, ddb
+    real(dp) :: rb
+    beta = beta_old
+    d = d_old
+    ddb = 0.0_dp
+    if (beq > beta_old) then
+      beta = beq
+      if (beq >= beta_break) then
+        d = 1.0_dp
+      else if (beq > 1.0_dp) then
+        d = (beq - 1.0_dp) / (eta * beq)
+        rb = 1.0_dp / beq
+        ddb = inv_eta * rb * rb * rb
+      else
+        d = 0.0_dp
+      end if
+    end if
+  end subroutine damage_growth
 
   !> D(beta) = (beta - 1)/(eta beta) clipped to [0, 1], and dD/dbeta (0 outside (1, 1/(1-eta))).
   !> D = 1 exactly from beta_break = 1/(1 - eta) on, so that a state set to full damage (a
