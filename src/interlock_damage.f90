@@ -24,20 +24,23 @@ contains
     end if
   end subroutine equivalent_displacement
 
-  !> One increment of the law at a point whose equivalent relative displacement is beq (the
-  !> fused kernels' form: scalars only, divisions only while damage grows): beta = max(beta_old,
-  !> beq), D = (beta - 1)/(eta beta) (1 from beta_break = 1/(1 - eta) on, as damage_of_beta,
-  !> to the bit), and ddb = (dD/dbeta) / beta = 1/(eta beta^3) while D grows below 1, else 0
-  !> (d beq / d(s_n, s_t) = (an / s_0n, at / s_0t) / beq, so that dD/ds = ddb (an / s_0n,
-  !> at / s_0t)). Unchanged (beta_old, d_old, 0) when beq does not exceed beta_old.
-  elemental subroutine damage_growth(beq, beta_old, d_old, eta, inv_eta, beta_break, beta, d, &
-                                     ddb)
-    real(dp), intent(in) :: beq, beta_old, d_old, eta, inv_eta, beta_break
-    real(dp), intent(out) :: beta, d, ddb
-    real(dp) :: rb
+  !> One increment of the law in the fused kernels' form (scalars only, divisions only while
+  !> damage grows): an = <s_n>_+ / s_0n and at = s_t / s_0t (inv_s0n = 1/s_0n, inv_s0t =
+  !> 1/s_0t) give beta_eq = sqrt(an^2 + at^2); beta = max(beta_old, beta_eq), D = (beta -
+  !> 1)/(eta beta) (1 from beta_break = 1/(1 - eta) on, as damage_of_beta, to the bit: the
+  !> stored damage may come from either path, and D must never decrease by a rounding), and
+  !> (gd_n, gd_t) = dD/d(s_n, s_t) = (an / s_0n, at / s_0t) / (eta beta^3) while D grows below
+  !> 1, else 0. Unchanged (beta_old, d_old, 0) when beta_eq does not exceed beta_old.
+  elemental subroutine damage_growth(an, at, beta_old, d_old, eta, inv_eta, beta_break, &
+                                     inv_s0n, inv_s0t, beta, d, gd_n, gd_t)
+    real(dp), intent(in) :: an, at, beta_old, d_old, eta, inv_eta, beta_break, inv_s0n, inv_s0t
+    real(dp), intent(out) :: beta, d, gd_n, gd_t
+    real(dp) :: beq, rb, ddb
+    beq = sqrt(an * an + at * at)
     beta = beta_old
     d = d_old
-    ddb = 0.0_dp
+    gd_n = 0.0_dp
+    gd_t = 0.0_dp
     if (beq > beta_old) then
       beta = beq
       if (beq >= beta_break) then
@@ -46,6 +49,8 @@ contains
         d = (beq - 1.0_dp) / (eta * beq)
         rb = 1.0_dp / beq
         ddb = inv_eta * rb * rb * rb
+        gd_n = ddb * an * inv_s0n
+        gd_t = ddb * at * inv_s0t
       else
         d = 0.0_dp
       end if

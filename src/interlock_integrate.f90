@@ -70,7 +70,7 @@ contains
     type(interlock_state_t), intent(in) :: old
     type(interlock_state_t), intent(inout) :: new
     real(dp), intent(out) :: sigma(2), tangent(2, 2)
-    real(dp) :: pos, an, at, beq, d, ddb, gd1, gd2, kpos, kts
+    real(dp) :: pos, d, gd1, gd2, kpos, kts
 
     pos = max(0.0_dp, s(1))
     d = old%damage(1)
@@ -79,15 +79,11 @@ contains
     new%beta(1) = old%beta(1)
     new%diss_damage = old%diss_damage
     if (mat%use_damage) then
-      an = pos * mat%inv_s0n
-      at = s(2) * mat%inv_s0t
-      beq = sqrt(an * an + at * at)
-      call damage_growth(beq, old%beta(1), old%damage(1), mat%eta, mat%inv_eta, &
-                         mat%beta_break, new%beta(1), d, ddb)
-      gd1 = ddb * an * mat%inv_s0n
-      gd2 = ddb * at * mat%inv_s0t
+      call damage_growth(pos * mat%inv_s0n, s(2) * mat%inv_s0t, old%beta(1), old%damage(1), &
+                         mat%eta, mat%inv_eta, mat%beta_break, mat%inv_s0n, mat%inv_s0t, &
+                         new%beta(1), d, gd1, gd2)
       if (d > old%damage(1)) new%diss_damage = old%diss_damage + &
-        mat%decohesion_energy_factor * (min(beq, mat%beta_break) - &
+        mat%decohesion_energy_factor * (min(new%beta(1), mat%beta_break) - &
                                         min(max(old%beta(1), 1.0_dp), mat%beta_break))
     end if
     kpos = mat%kn * pos
@@ -130,7 +126,7 @@ contains
     type(interlock_state_t), intent(in) :: old
     type(interlock_state_t), intent(inout) :: new
     real(dp), intent(out) :: sigma(2), tangent(2, 2)
-    real(dp) :: pos, an, at, beq, d, ddb, gd1, gd2, kpos, kts, mu_p, slip_sign, sf, tauf, &
+    real(dp) :: pos, d, gd1, gd2, kpos, kts, mu_p, slip_sign, sf, tauf, &
                 dtauf1, dtauf2, slip, work_fric
 
     pos = max(0.0_dp, s(1))
@@ -138,15 +134,9 @@ contains
     gd1 = 0.0_dp
     gd2 = 0.0_dp
     new%beta(1) = old%beta(1)
-    if (mat%use_damage) then
-      an = pos * mat%inv_s0n
-      at = s(2) * mat%inv_s0t
-      beq = sqrt(an * an + at * at)
-      call damage_growth(beq, old%beta(1), old%damage(1), mat%eta, mat%inv_eta, &
-                         mat%beta_break, new%beta(1), d, ddb)
-      gd1 = ddb * an * mat%inv_s0n
-      gd2 = ddb * at * mat%inv_s0t
-    end if
+    if (mat%use_damage) call damage_growth(pos * mat%inv_s0n, s(2) * mat%inv_s0t, old%beta(1), &
+      old%damage(1), mat%eta, mat%inv_eta, mat%beta_break, mat%inv_s0n, mat%inv_s0t, &
+      new%beta(1), d, gd1, gd2)
     ! Friction return (interlock_friction): elastic predictor, return to |tau_f| = mu p.
     mu_p = -mat%mu_eff * mat%kn * min(0.0_dp, s(1))
     call friction_step(mu_p, mat%mu_eff * mat%kn, mat%kt, mat%inv_kt, s(2), old%sf(1), sf, tauf, &

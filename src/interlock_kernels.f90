@@ -156,7 +156,7 @@ contains
     type(interlock_state_t), intent(in) :: old
     type(interlock_state_t), intent(inout) :: new
     real(dp), intent(inout) :: sigma(2), tangent(2, 2)
-    real(dp) :: sl1, sl2, pos, an, at, beq, beta, d, ddb, gd1, gd2, mu_p, slip_sign, sf, &
+    real(dp) :: sl1, sl2, pos, beta, d, gd1, gd2, mu_p, slip_sign, sf, &
                 tauf, dtauf1, dtauf2, slip, kpos, kts, ls1, ls2, k11, k12, k21, k22, t11, t12, &
                 t21, t22, wc, ws, wfric, wdmg
 
@@ -168,15 +168,9 @@ contains
     d = old%damage(k)
     gd1 = 0.0_dp
     gd2 = 0.0_dp
-    if (mat%use_damage) then
-      an = pos * mat%inv_s0n
-      at = sl2 * mat%inv_s0t
-      beq = sqrt(an * an + at * at)
-      call damage_growth(beq, old%beta(k), old%damage(k), mat%eta, mat%inv_eta, &
-                         mat%beta_break, beta, d, ddb)
-      gd1 = ddb * an * mat%inv_s0n
-      gd2 = ddb * at * mat%inv_s0t
-    end if
+    if (mat%use_damage) call damage_growth(pos * mat%inv_s0n, sl2 * mat%inv_s0t, old%beta(k), &
+      old%damage(k), mat%eta, mat%inv_eta, mat%beta_break, mat%inv_s0n, mat%inv_s0t, beta, d, &
+      gd1, gd2)
     ! Friction return (interlock_friction).
     mu_p = 0.0_dp
     if (mat%use_friction) mu_p = -mat%mu_eff * mat%kn * min(0.0_dp, sl1)
@@ -313,7 +307,7 @@ contains
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: sl(2), beta_o, sf_o, zeta_o, dmg_o, a_end, g_start
     type(plane_law_t), intent(out) :: p
-    real(dp) :: an, at, beq, ddb, gd(2), dtau(2), mu_p, sgn, pos_n, neg_n, slip, &
+    real(dp) :: gd(2), dtau(2), mu_p, sgn, pos_n, neg_n, slip, &
                 dslip(2)
 
     ! Damage (interlock_damage): beta = max(beta_o, beta_eq), D = (beta - 1)/(eta beta);
@@ -321,16 +315,9 @@ contains
     p%beta = beta_o
     p%dmg = dmg_o
     gd = 0.0_dp
-    if (mat%use_damage) then
-      an = max(0.0_dp, sl(1)) * mat%inv_s0n
-      at = sl(2) * mat%inv_s0t
-      beq = sqrt(an * an + at * at)
-      ! (D to the bit as interlock_damage:damage_of_beta: the stored damage may come from
-      ! either path, and D must never decrease by a rounding)
-      call damage_growth(beq, beta_o, dmg_o, mat%eta, mat%inv_eta, mat%beta_break, p%beta, &
-                         p%dmg, ddb)
-      gd = [ddb * an * mat%inv_s0n, ddb * at * mat%inv_s0t]
-    end if
+    if (mat%use_damage) call damage_growth(max(0.0_dp, sl(1)) * mat%inv_s0n, &
+      sl(2) * mat%inv_s0t, beta_o, dmg_o, mat%eta, mat%inv_eta, mat%beta_break, mat%inv_s0n, &
+      mat%inv_s0t, p%beta, p%dmg, gd(1), gd(2))
 
     ! Friction (interlock_friction).
     mu_p = 0.0_dp
