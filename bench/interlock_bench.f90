@@ -37,17 +37,20 @@ program interlock_bench
   real(dp) :: target_error
   integer :: problems
 
-  !> The UMAT rows of the cost study: 1..10 UMAT calls (effect set, scheme), 11..20 the updates
-  !> they wrap, 21..25 the floor of the UMAT's overhead per effect set.
-  integer, parameter :: n_umat_cols = 5 * n_effect_sets
+  !> The UMAT rows of the cost study: 1..n_umat_rows UMAT calls (effect set, scheme: explicit,
+  !> implicit, trapezoidal), then the updates they wrap, then the floor of the UMAT's overhead
+  !> per effect set.
+  integer, parameter :: n_umat_schemes = 3
+  integer, parameter :: n_umat_rows = n_umat_schemes * n_effect_sets
+  integer, parameter :: n_umat_cols = 2 * n_umat_rows + n_effect_sets
   type :: umat_rows_t
-    real(dp) :: props(n_properties, 2 * n_effect_sets)
-    type(interlock_material_t) :: mats(2 * n_effect_sets)
-    type(interlock_solver_t) :: solvers(2 * n_effect_sets)
+    real(dp) :: props(n_properties, n_umat_rows)
+    type(interlock_material_t) :: mats(n_umat_rows)
+    type(interlock_solver_t) :: solvers(n_umat_rows)
     type(umat_controls_t) :: controls
     real(dp), allocatable :: times(:, :)
     real(dp) :: chk(0:n_umat_cols)
-    integer :: inner(0:n_umat_cols), cuts(2 * n_effect_sets), fails
+    integer :: inner(0:n_umat_cols), cuts(n_umat_rows), fails
   end type umat_rows_t
 
   call parse_arguments()
@@ -460,10 +463,11 @@ contains
       um%cuts = 0
       um%inner = 1
       do c = 1, n_effect_sets
-        do j = 1, 2
-          call umat_props(c, j, um%props(:, 2 * c - 2 + j))
-          call props_to_material(um%props(:, 2 * c - 2 + j), um%mats(2 * c - 2 + j), &
-                                 um%solvers(2 * c - 2 + j), um%controls, stat, message)
+        do j = 1, n_umat_schemes
+          k = n_umat_schemes * (c - 1) + j
+          call umat_props(c, j, um%props(:, k))
+          call props_to_material(um%props(:, k), um%mats(k), um%solvers(k), um%controls, stat, &
+                                 message)
           if (stat /= status_ok) then
             write (error_unit, '(a)') 'UMAT rows, effect set ' // trim(effect_set_names(c)) // &
               ': ' // trim(message)
@@ -472,7 +476,7 @@ contains
         end do
       end do
     end if
-    do j = 1, 2 * n_effect_sets
+    do j = 1, n_umat_rows
       call cpu_time(t0)
       cuts = 0
       do k = 1, um%inner(j)
@@ -482,18 +486,18 @@ contains
       if (rep == 0) um%cuts(j) = cuts   ! one pass
       call record_time(rep, j, t1 - t0, min_rep, um%inner, um%times)
       call cpu_time(t0)
-      do k = 1, um%inner(2 * n_effect_sets + j)
-        call time_interlock(um%mats(j), um%solvers(j), h, um%chk(2 * n_effect_sets + j), &
+      do k = 1, um%inner(n_umat_rows + j)
+        call time_interlock(um%mats(j), um%solvers(j), h, um%chk(n_umat_rows + j), &
                             um%fails, nsub)
       end do
       call cpu_time(t1)
-      call record_time(rep, 2 * n_effect_sets + j, t1 - t0, min_rep, um%inner, um%times)
+      call record_time(rep, n_umat_rows + j, t1 - t0, min_rep, um%inner, um%times)
     end do
     do c = 1, n_effect_sets
-      j = 4 * n_effect_sets + c
+      j = 2 * n_umat_rows + c
       call cpu_time(t0)
       do k = 1, um%inner(j)
-        call time_umat_floor(um%props(:, 2 * c - 1), h, um%chk(j))
+        call time_umat_floor(um%props(:, n_umat_schemes * (c - 1) + 1), h, um%chk(j))
       end do
       call cpu_time(t1)
       call record_time(rep, j, t1 - t0, min_rep, um%inner, um%times)
@@ -527,11 +531,11 @@ contains
     worst = 0.0_dp
     full_ratio = 0.0_dp
     do c = 1, n_effect_sets
-      floor_ns = ns(4 * n_effect_sets + c)
-      do sch = 1, 2
-        j = 2 * c - 2 + sch
+      floor_ns = ns(2 * n_umat_rows + c)
+      do sch = 1, n_umat_schemes
+        j = n_umat_schemes * (c - 1) + sch
         umat_ns = ns(j)
-        update_ns = ns(2 * n_effect_sets + j)
+        update_ns = ns(n_umat_rows + j)
         over = umat_ns - update_ns
         worst = max(worst, over / ns_bilinear)
         ok_over = ok_over .and. over <= 5.0_dp * ns_bilinear

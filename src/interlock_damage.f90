@@ -4,7 +4,7 @@ module interlock_damage
   use interlock_kinds, only: dp
   implicit none
   private
-  public :: equivalent_displacement, damage_of_beta, damage_dissipation_increment
+  public :: equivalent_displacement, damage_of_beta, damage_dissipation_increment, damage_growth
 
 contains
 
@@ -23,6 +23,39 @@ contains
       dbeq = 0.0_dp
     end if
   end subroutine equivalent_displacement
+
+  !> One increment of the law in the fused kernels' form (scalars only, divisions only while
+  !> damage grows): an = <s_n>_+ / s_0n and at = s_t / s_0t (inv_s0n = 1/s_0n, inv_s0t =
+  !> 1/s_0t) give beta_eq = sqrt(an^2 + at^2); beta = max(beta_old, beta_eq), D = (beta -
+  !> 1)/(eta beta) (1 from beta_break = 1/(1 - eta) on, as damage_of_beta, to the bit: the
+  !> stored damage may come from either path, and D must never decrease by a rounding), and
+  !> (gd_n, gd_t) = dD/d(s_n, s_t) = (an / s_0n, at / s_0t) / (eta beta^3) while D grows below
+  !> 1, else 0. Unchanged (beta_old, d_old, 0) when beta_eq does not exceed beta_old.
+  elemental subroutine damage_growth(an, at, beta_old, d_old, eta, inv_eta, beta_break, &
+                                     inv_s0n, inv_s0t, beta, d, gd_n, gd_t)
+    real(dp), intent(in) :: an, at, beta_old, d_old, eta, inv_eta, beta_break, inv_s0n, inv_s0t
+    real(dp), intent(out) :: beta, d, gd_n, gd_t
+    real(dp) :: beq, rb, ddb
+    beq = sqrt(an * an + at * at)
+    beta = beta_old
+    d = d_old
+    gd_n = 0.0_dp
+    gd_t = 0.0_dp
+    if (beq > beta_old) then
+      beta = beq
+      if (beq >= beta_break) then
+        d = 1.0_dp
+      else if (beq > 1.0_dp) then
+        d = (beq - 1.0_dp) / (eta * beq)
+        rb = 1.0_dp / beq
+        ddb = inv_eta * rb * rb * rb
+        gd_n = ddb * an * inv_s0n
+        gd_t = ddb * at * inv_s0t
+      else
+        d = 0.0_dp
+      end if
+    end if
+  end subroutine damage_growth
 
   !> D(beta) = (beta - 1)/(eta beta) clipped to [0, 1], and dD/dbeta (0 outside (1, 1/(1-eta))).
   !> D = 1 exactly from beta_break = 1/(1 - eta) on, so that a state set to full damage (a

@@ -4,7 +4,7 @@ module interlock_friction
   use interlock_kinds, only: dp
   implicit none
   private
-  public :: friction_return, friction_free, friction_stick, friction_slide
+  public :: friction_return, friction_free, friction_stick, friction_slide, friction_step
 
   integer, parameter :: friction_free = 0   !< mu p = 0: the damaged part carries no shear
   integer, parameter :: friction_stick = 1
@@ -58,5 +58,44 @@ contains
       dslip = sg * (dsf - [0.0_dp, 0.0_dp, 1.0_dp])
     end if
   end subroutine friction_return
+
+  !> The return of friction_return in the fused kernels' form (scalars only, the material's
+  !> inverse 1/K_t): mu_p = mu K_n <-s_n>_- is the bound (0 on an open plane or with friction
+  !> off: the damaged part follows freely), mu_kn = mu K_n its derivative wrt -s_n, st the
+  !> tangential separation, sf_old the slip at the start. Returns the slip sf, the friction
+  !> traction tauf and its derivatives wrt (s_n, s_t), the slip increment |d sf| and its sign
+  !> (0 while sticking or without slip; d|d sf|/d s_t).
+  elemental subroutine friction_step(mu_p, mu_kn, kt, inv_kt, st, sf_old, sf, tauf, &
+                                     dtauf_dsn, dtauf_dst, slip, slip_sign)
+    real(dp), intent(in) :: mu_p, mu_kn, kt, inv_kt, st, sf_old
+    real(dp), intent(out) :: sf, tauf, dtauf_dsn, dtauf_dst, slip, slip_sign
+    real(dp) :: tau_trial
+    if (mu_p > 0.0_dp) then
+      tau_trial = kt * (st - sf_old)
+      if (abs(tau_trial) <= mu_p) then
+        sf = sf_old
+        tauf = tau_trial
+        dtauf_dsn = 0.0_dp
+        dtauf_dst = kt
+        slip = 0.0_dp
+        slip_sign = 0.0_dp
+      else
+        tauf = sign(mu_p, tau_trial)
+        sf = st - tauf * inv_kt
+        dtauf_dsn = -sign(mu_kn, tau_trial)
+        dtauf_dst = 0.0_dp
+        slip = (abs(tau_trial) - mu_p) * inv_kt
+        slip_sign = sign(1.0_dp, tau_trial)
+      end if
+    else
+      sf = st
+      tauf = 0.0_dp
+      dtauf_dsn = 0.0_dp
+      dtauf_dst = 0.0_dp
+      slip = abs(sf - sf_old)
+      slip_sign = 0.0_dp
+      if (slip > 0.0_dp) slip_sign = sign(1.0_dp, sf - sf_old)
+    end if
+  end subroutine friction_step
 
 end module interlock_friction

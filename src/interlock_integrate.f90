@@ -11,6 +11,8 @@ module interlock_integrate
   use interlock_status, only: interlock_info_t, status_ok
   use interlock_general_update, only: general_update
   use interlock_kernels, only: share_first_plane
+  use interlock_damage, only: damage_growth
+  use interlock_friction, only: friction_step
   implicit none
   private
   public :: interlock_update
@@ -20,10 +22,10 @@ contains
   !> Integrate from `old` (state at the start of the increment) to the relative displacement
   !> `s` (end of the increment). `new` receives the state at the end (its contents on entry do
   !> not matter; it must not be `old` itself), `sigma` the traction and `tangent` =
-  !> d sigma / d s, the exact derivative of the computed traction. Every field of `info` is
-  !> set by the call (it is intent(inout) only so that a successful update does not pay for
-  !> clearing the message). On failure `info%status` /= status_ok, `info%message` says why,
-  !> `new` = `old` and `sigma` = `old%sigma`.
+  !> d sigma / d s, the exact derivative of the computed traction. Every field of `info` but
+  !> the message is set by the call (it is intent(inout) so that a successful update does not
+  !> pay for clearing the message). On failure `info%status` /= status_ok, `info%message` says
+  !> why, `new` = `old` and `sigma` = `old%sigma`; on success the message is not defined.
   pure subroutine interlock_update(mat, solver, s, old, new, sigma, tangent, info)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
@@ -33,7 +35,6 @@ contains
     real(dp), intent(out) :: sigma(2), tangent(2, 2)
     type(interlock_info_t), intent(inout) :: info
 
-    if (info%status /= status_ok) info%message = ''
     info%status = status_ok
     info%newton_iterations = 0
     info%substeps = 1
@@ -69,7 +70,7 @@ contains
     type(interlock_state_t), intent(in) :: old
     type(interlock_state_t), intent(inout) :: new
     real(dp), intent(out) :: sigma(2), tangent(2, 2)
-    real(dp) :: pos, an, at, beq, d, rb, ddb, gd1, gd2, kpos, kts
+    real(dp) :: pos, d, gd1, gd2, kpos, kts
 
     pos = max(0.0_dp, s(1))
     d = old%damage(1)
@@ -78,24 +79,12 @@ contains
     new%beta(1) = old%beta(1)
     new%diss_damage = old%diss_damage
     if (mat%use_damage) then
-      an = pos * mat%inv_s0n
-      at = s(2) * mat%inv_s0t
-      beq = sqrt(an * an + at * at)
-      if (beq > old%beta(1)) then
-        new%beta(1) = beq
-        if (beq >= mat%beta_break) then
-          d = 1.0_dp
-        else if (beq > 1.0_dp) then
-          d = (beq - 1.0_dp) / (mat%eta * beq)
-          rb = 1.0_dp / beq
-          ddb = mat%inv_eta * rb * rb * rb
-          gd1 = ddb * an * mat%inv_s0n
-          gd2 = ddb * at * mat%inv_s0t
-        end if
-        if (d > old%damage(1)) new%diss_damage = old%diss_damage + &
-          mat%decohesion_energy_factor * (min(beq, mat%beta_break) - &
-                                          min(max(old%beta(1), 1.0_dp), mat%beta_break))
-      end if
+      call damage_growth(pos * mat%inv_s0n, s(2) * mat%inv_s0t, old%beta(1), old%damage(1), &
+                         mat%eta, mat%inv_eta, mat%beta_break, mat%inv_s0n, mat%inv_s0t, &
+                         new%beta(1), d, gd1, gd2)
+      if (d > old%damage(1)) new%diss_damage = old%diss_damage + &
+        mat%decohesion_energy_factor * (min(new%beta(1), mat%beta_break) - &
+                                        min(max(old%beta(1), 1.0_dp), mat%beta_break))
     end if
     kpos = mat%kn * pos
     kts = mat%kt * s(2)
@@ -137,7 +126,7 @@ contains
     type(interlock_state_t), intent(in) :: old
     type(interlock_state_t), intent(inout) :: new
     real(dp), intent(out) :: sigma(2), tangent(2, 2)
-    real(dp) :: pos, an, at, beq, d, rb, ddb, gd1, gd2, kpos, kts, mu_p, tau_trial, sf, tauf, &
+    real(dp) :: pos, d, gd1, gd2, kpos, kts, mu_p, slip_sign, sf, tauf, &
                 dtauf1, dtauf2, slip, work_fric
 
     pos = max(0.0_dp, s(1))
@@ -145,48 +134,13 @@ contains
     gd1 = 0.0_dp
     gd2 = 0.0_dp
     new%beta(1) = old%beta(1)
-    if (mat%use_damage) then
-      an = pos * mat%inv_s0n
-      at = s(2) * mat%inv_s0t
-      beq = sqrt(an * an + at * at)
-      if (beq > old%beta(1)) then
-        new%beta(1) = beq
-        if (beq >= mat%beta_break) then
-          d = 1.0_dp
-        else if (beq > 1.0_dp) then
-          d = (beq - 1.0_dp) / (mat%eta * beq)
-          rb = 1.0_dp / beq
-          ddb = mat%inv_eta * rb * rb * rb
-          gd1 = ddb * an * mat%inv_s0n
-          gd2 = ddb * at * mat%inv_s0t
-        end if
-      end if
-    end if
+    if (mat%use_damage) call damage_growth(pos * mat%inv_s0n, s(2) * mat%inv_s0t, old%beta(1), &
+      old%damage(1), mat%eta, mat%inv_eta, mat%beta_break, mat%inv_s0n, mat%inv_s0t, &
+      new%beta(1), d, gd1, gd2)
     ! Friction return (interlock_friction): elastic predictor, return to |tau_f| = mu p.
     mu_p = -mat%mu_eff * mat%kn * min(0.0_dp, s(1))
-    if (mu_p > 0.0_dp) then
-      tau_trial = mat%kt * (s(2) - old%sf(1))
-      if (abs(tau_trial) <= mu_p) then
-        sf = old%sf(1)
-        tauf = tau_trial
-        dtauf1 = 0.0_dp
-        dtauf2 = mat%kt
-        slip = 0.0_dp
-      else
-        tauf = sign(mu_p, tau_trial)
-        sf = s(2) - tauf / mat%kt
-        dtauf1 = -sign(mat%mu_eff * mat%kn, tau_trial)
-        dtauf2 = 0.0_dp
-        slip = (abs(tau_trial) - mu_p) / mat%kt
-      end if
-    else
-      ! Open plane: the damaged part follows freely.
-      sf = s(2)
-      tauf = 0.0_dp
-      dtauf1 = 0.0_dp
-      dtauf2 = 0.0_dp
-      slip = abs(sf - old%sf(1))
-    end if
+    call friction_step(mu_p, mat%mu_eff * mat%kn, mat%kt, mat%inv_kt, s(2), old%sf(1), sf, tauf, &
+                       dtauf1, dtauf2, slip, slip_sign)
     kpos = mat%kn * pos
     kts = mat%kt * s(2)
     sigma(1) = mat%kn * s(1) - d * kpos

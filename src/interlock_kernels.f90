@@ -16,6 +16,8 @@ module interlock_kernels
       wear_root_update
   use interlock_state, only: interlock_state_t
   use interlock_geometry, only: contact_area
+  use interlock_damage, only: damage_growth
+  use interlock_friction, only: friction_step
   implicit none
   private
   public :: kernel_step, share_first_plane, start_yield
@@ -154,7 +156,7 @@ contains
     type(interlock_state_t), intent(in) :: old
     type(interlock_state_t), intent(inout) :: new
     real(dp), intent(inout) :: sigma(2), tangent(2, 2)
-    real(dp) :: sl1, sl2, pos, an, at, beq, beta, d, rb, ddb, gd1, gd2, mu_p, tau_trial, sf, &
+    real(dp) :: sl1, sl2, pos, beta, d, gd1, gd2, mu_p, slip_sign, sf, &
                 tauf, dtauf1, dtauf2, slip, kpos, kts, ls1, ls2, k11, k12, k21, k22, t11, t12, &
                 t21, t22, wc, ws, wfric, wdmg
 
@@ -166,50 +168,14 @@ contains
     d = old%damage(k)
     gd1 = 0.0_dp
     gd2 = 0.0_dp
-    if (mat%use_damage) then
-      an = pos * mat%inv_s0n
-      at = sl2 * mat%inv_s0t
-      beq = sqrt(an * an + at * at)
-      if (beq > beta) then
-        beta = beq
-        if (beq >= mat%beta_break) then
-          d = 1.0_dp
-        else if (beq > 1.0_dp) then
-          d = (beq - 1.0_dp) / (mat%eta * beq)
-          rb = 1.0_dp / beq
-          ddb = mat%inv_eta * rb * rb * rb
-          gd1 = ddb * an * mat%inv_s0n
-          gd2 = ddb * at * mat%inv_s0t
-        else
-          d = 0.0_dp
-        end if
-      end if
-    end if
+    if (mat%use_damage) call damage_growth(pos * mat%inv_s0n, sl2 * mat%inv_s0t, old%beta(k), &
+      old%damage(k), mat%eta, mat%inv_eta, mat%beta_break, mat%inv_s0n, mat%inv_s0t, beta, d, &
+      gd1, gd2)
     ! Friction return (interlock_friction).
     mu_p = 0.0_dp
     if (mat%use_friction) mu_p = -mat%mu_eff * mat%kn * min(0.0_dp, sl1)
-    if (mu_p > 0.0_dp) then
-      tau_trial = mat%kt * (sl2 - old%sf(k))
-      if (abs(tau_trial) <= mu_p) then
-        sf = old%sf(k)
-        tauf = tau_trial
-        dtauf1 = 0.0_dp
-        dtauf2 = mat%kt
-        slip = 0.0_dp
-      else
-        tauf = sign(mu_p, tau_trial)
-        sf = sl2 - tauf * mat%inv_kt
-        dtauf1 = -sign(mat%mu_eff * mat%kn, tau_trial)
-        dtauf2 = 0.0_dp
-        slip = (abs(tau_trial) - mu_p) * mat%inv_kt
-      end if
-    else
-      sf = sl2
-      tauf = 0.0_dp
-      dtauf1 = 0.0_dp
-      dtauf2 = 0.0_dp
-      slip = abs(sf - old%sf(k))
-    end if
+    call friction_step(mu_p, mat%mu_eff * mat%kn, mat%kt, mat%inv_kt, sl2, old%sf(k), sf, tauf, &
+                       dtauf1, dtauf2, slip, slip_sign)
     ! Traction and tangent in the plane's frame (interlock_microplane).
     kpos = mat%kn * pos
     kts = mat%kt * sl2
@@ -341,7 +307,7 @@ contains
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: sl(2), beta_o, sf_o, zeta_o, dmg_o, a_end, g_start
     type(plane_law_t), intent(out) :: p
-    real(dp) :: an, at, beq, rb, ddb, gd(2), dtau(2), mu_p, tau_trial, sgn, pos_n, neg_n, slip, &
+    real(dp) :: gd(2), dtau(2), mu_p, sgn, pos_n, neg_n, slip, &
                 dslip(2)
 
     ! Damage (interlock_damage): beta = max(beta_o, beta_eq), D = (beta - 1)/(eta beta);
@@ -349,55 +315,18 @@ contains
     p%beta = beta_o
     p%dmg = dmg_o
     gd = 0.0_dp
-    if (mat%use_damage) then
-      an = max(0.0_dp, sl(1)) * mat%inv_s0n
-      at = sl(2) * mat%inv_s0t
-      beq = sqrt(an * an + at * at)
-      if (beq > beta_o) then
-        p%beta = beq
-        if (beq >= mat%beta_break) then
-          p%dmg = 1.0_dp
-        else if (beq > 1.0_dp) then
-          rb = 1.0_dp / beq
-          ! The expression of interlock_damage:damage_of_beta, to the bit: the stored damage
-          ! may come from either path, and D must never decrease by a rounding.
-          p%dmg = (beq - 1.0_dp) / (mat%eta * beq)
-          ddb = mat%inv_eta * rb * rb * rb
-          gd = [ddb * an * mat%inv_s0n, ddb * at * mat%inv_s0t]
-        else
-          p%dmg = 0.0_dp
-        end if
-      end if
-    end if
+    if (mat%use_damage) call damage_growth(max(0.0_dp, sl(1)) * mat%inv_s0n, &
+      sl(2) * mat%inv_s0t, beta_o, dmg_o, mat%eta, mat%inv_eta, mat%beta_break, mat%inv_s0n, &
+      mat%inv_s0t, p%beta, p%dmg, gd(1), gd(2))
 
     ! Friction (interlock_friction).
     mu_p = 0.0_dp
     if (mat%use_friction) mu_p = -mat%mu_eff * mat%kn * min(0.0_dp, sl(1))
-    if (mu_p > 0.0_dp) then
-      tau_trial = mat%kt * (sl(2) - sf_o)
-      if (abs(tau_trial) <= mu_p) then
-        p%sf = sf_o
-        p%tauf = tau_trial
-        dtau = [0.0_dp, mat%kt]
-        slip = 0.0_dp
-        dslip = 0.0_dp
-      else
-        sgn = sign(1.0_dp, tau_trial)
-        p%tauf = sgn * mu_p
-        p%sf = sl(2) - p%tauf * mat%inv_kt
-        dtau = [-sgn * mat%mu_eff * mat%kn, 0.0_dp]
-        slip = (abs(tau_trial) - mu_p) * mat%inv_kt
-        dslip = [mat%mu_eff * mat%kn * mat%inv_kt, sgn]
-      end if
-    else
-      p%sf = sl(2)
-      p%tauf = 0.0_dp
-      dtau = 0.0_dp
-      slip = abs(p%sf - sf_o)
-      ! (drives the trapezoidal wear through the start traction; the work itself is 0)
-      dslip = 0.0_dp
-      if (slip > 0.0_dp) dslip(2) = sign(1.0_dp, p%sf - sf_o)
-    end if
+    call friction_step(mu_p, mat%mu_eff * mat%kn, mat%kt, mat%inv_kt, sl(2), sf_o, p%sf, p%tauf, &
+                       dtau(1), dtau(2), slip, sgn)
+    ! (d slip / d(s_n, s_t): the bound's slope while sliding, the slip's sign; 0 sticking)
+    dslip = [0.0_dp, sgn]
+    if (mu_p > 0.0_dp .and. abs(sgn) > 0.5_dp) dslip(1) = mat%mu_eff * mat%kn * mat%inv_kt
 
     ! Traction and its derivative (interlock_microplane).
     pos_n = max(0.0_dp, sl(1))

@@ -13,6 +13,7 @@ module interlock_material_table
   public :: umat_planes, umat_nstatv, property_index, statevar_index
   public :: check_property, property_ok, properties_ok, format_range, format_real, format_integer
   public :: kind_real, kind_flag, kind_choice
+  public :: keys_in_range, all_properties_ok, property_defaults
   public :: prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
             prop_thetaf, prop_zeta0, prop_prefractured, prop_scheme, prop_substep_tol, &
             prop_max_dd, prop_max_dtheta, prop_effect_damage, prop_effect_friction, &
@@ -142,6 +143,25 @@ module interlock_material_table
     min(merge(nearest(upper, -1.0_dp), upper, upper_open), nearest(infinite_threshold, -1.0_dp)), &
     infinite_ok)
 
+  !> The closed bounds as ordered keys (keys_in_range): lowest <= x <= highest for a finite x
+  !> exactly when lowest_key <= key(x) <= highest_key, and NaN and the infinities
+  !> outside unless +Inf is admissible (highest_key is then the key of +Inf), so that a whole
+  !> PROPS is checked by integer comparisons (no comparison of a NaN, no branch per value).
+  !> A lower bound 0 admits -0 (key -1), as the comparison -0 >= 0 does.
+  integer(int64), parameter :: lowest_bits(n_properties) = transfer(lowest, 0_int64, n_properties)
+  integer(int64), parameter :: highest_bits(n_properties) = transfer(highest, 0_int64, n_properties)
+  integer(int64), parameter :: lowest_key(n_properties) = merge(-1_int64, &
+    merge(lowest_bits, ieor(lowest_bits, huge(0_int64)), lowest_bits >= 0), lowest_bits == 0)
+  integer(int64), parameter :: highest_key(n_properties) = merge(exponent_bits, &
+    merge(highest_bits, ieor(highest_bits, huge(0_int64)), highest_bits >= 0), infinite_ok)
+  !> The flags and choices (the rows of kind_flag and kind_choice, integer_valued), listed for
+  !> the UMAT's check on every call (a loop over the table with a test per row costs more).
+  integer, parameter :: whole_valued(*) = [prop_prefractured, prop_scheme, prop_effect_damage, &
+    prop_effect_friction, prop_effect_interlocking, prop_effect_finite_depth, prop_effect_wear, &
+    prop_tangent]
+  !> The defaults as a plain array (the optional properties a short PROPS leaves out).
+  real(dp), parameter :: property_defaults(n_properties) = properties%default
+
   integer, parameter :: n_statevars_per_plane = 6
   integer, parameter :: n_statevars_global = 4
   integer, parameter :: sv_damage = 1, sv_beta = 2, sv_frictional_slip = 3, sv_zeta = 4, &
@@ -205,33 +225,61 @@ contains
     ok = rows_ok(values(1:min(size(values), n_properties)), 1)
   end function properties_ok
 
-  !> Whether values(j) is admissible for property first + j - 1, for every j: plain
-  !> comparisons only, so that a caller that checks every call (the UMAT) builds a message
-  !> only on failure. A NaN, -Inf and +Inf where no infinity is admissible fail on their bits
-  !> (no comparison of a NaN); the rest on the table's bounds as closed bounds (lowest, highest)
-  !> with infinite_threshold and above only where infinity is admissible; flags and choices
-  !> are whole numbers (their ranges lie within [0, 2^52), where x + 2^52 - 2^52 rounds x to a
-  !> whole number).
+  !> Whether values(j) is admissible for property first + j - 1, for every j: integer
+  !> comparisons of the values' order keys with the table's closed bounds (lowest_key,
+  !> highest_key: NaN, -Inf, and +Inf where no infinity is admissible fail; no comparison of
+  !> a NaN), so that a caller that checks every call (the UMAT) builds a message only on
+  !> failure; flags and choices are whole numbers (their ranges lie within [0, 2^52), where
+  !> x + 2^52 - 2^52 rounds x to a whole number).
   pure logical function rows_ok(values, first) result(ok)
     real(dp), intent(in) :: values(:)
     integer, intent(in) :: first
-    real(dp), parameter :: whole = 2.0_dp**52
-    integer(int64), parameter :: plus_inf = exponent_bits
-    integer :: j, i
-    integer(int64) :: bits
-    ok = .true.
+    integer :: j, i, n
+    n = size(values)
+    ok = keys_in_range(n, values, lowest_key(first:first + n - 1), &
+                       highest_key(first:first + n - 1))
+    if (.not. ok) return
     do j = 1, size(values)
       i = first + j - 1
-      bits = transfer(values(j), 0_int64)
-      if (iand(bits, exponent_bits) == exponent_bits) then
-        ok = ok .and. bits == plus_inf .and. infinite_ok(i)
-      else
-        ok = ok .and. values(j) >= lowest(i) .and. values(j) <= highest(i)
-        if (integer_valued(i)) ok = ok .and. .not. &
-          ((values(j) + whole) - whole < values(j) .or. (values(j) + whole) - whole > values(j))
-      end if
+      if (integer_valued(i)) ok = ok .and. is_whole(values(j))
     end do
   end function rows_ok
+
+  !> Whether every one of the n_properties values (a whole PROPS, the optional ones that the
+  !> host left out at their defaults) is admissible: rows_ok for the fixed length, which the
+  !> compiler unrolls (the UMAT's check on every call).
+  pure logical function all_properties_ok(values) result(ok)
+    real(dp), intent(in) :: values(n_properties)
+    ok = keys_in_range(n_properties, values, lowest_key, highest_key)
+    if (ok) ok = all(is_whole(values(whole_valued)))
+  end function all_properties_ok
+
+  !> lo(i) <= key(x(i)) <= hi(i) for every i, with key(x) the bits of x as an integer that
+  !> orders as x does (IEEE 754 doubles: a non-negative x as its bits, a negative one with
+  !> every bit but the sign flipped): -0 just below +0, NaN beyond the infinities (+NaN above
+  !> +Inf, -NaN below -Inf). A range check of any bits by integer operations only (no
+  !> comparison of a NaN), counted, not branched.
+  pure logical function keys_in_range(n, x, lo, hi) result(ok)
+    integer, intent(in) :: n
+    real(dp), intent(in) :: x(n)
+    integer(int64), intent(in) :: lo(n), hi(n)
+    integer(int64) :: key
+    integer :: i, n_out
+    n_out = 0
+    do i = 1, n
+      key = transfer(x(i), 0_int64)
+      key = ieor(key, iand(shifta(key, 63), huge(key)))
+      n_out = n_out + merge(1, 0, key < lo(i) .or. key > hi(i))
+    end do
+    ok = n_out == 0
+  end function keys_in_range
+
+  !> x is a whole number, for x within [0, 2^52) (a flag's or a choice's range, checked).
+  elemental logical function is_whole(x)
+    real(dp), intent(in) :: x
+    real(dp), parameter :: whole = 2.0_dp**52
+    is_whole = .not. ((x + whole) - whole < x .or. (x + whole) - whole > x)
+  end function is_whole
 
   !> Check one value against its table row. On failure `ok` is false and `message` names the
   !> property, the value and the admissible range.

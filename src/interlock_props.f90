@@ -5,7 +5,7 @@ module interlock_props
   use, intrinsic :: iso_fortran_env, only: int64
   use interlock_kinds, only: same_value, is_finite_bits, exponent_bits
   use interlock_material_table, only: properties, n_properties, n_required_properties, &
-      check_property, properties_ok, umat_planes, umat_nstatv, statevars, &
+      check_property, all_properties_ok, keys_in_range, property_defaults, umat_planes, umat_nstatv, statevars, &
       n_statevars_per_plane, format_integer, format_real, &
       prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
       prop_thetaf, prop_zeta0, prop_prefractured, prop_scheme, prop_substep_tol, prop_max_dd, &
@@ -52,6 +52,24 @@ module interlock_props
     [0.0_dp, 0.0_dp, 0.0_dp], [state_bound, state_bound, state_bound], &
     [state_bound, state_bound, state_bound], 1.0_dp]
 
+  !> statev_lo and statev_hi as ordered keys (interlock_material_table:keys_in_range), the angles
+  !> within +-state_bound (their ranges depend on the material: statev_bad_index compares them
+  !> after these), the flag 1 (statev_bad_index has taken the uninitialised STATEV before); a
+  !> lower bound 0 admits -0 (key -1), as the comparison -0 >= 0 does.
+  logical, parameter :: angle_slot(umat_nstatv) = [spread(.false., 1, slot_theta), &
+    spread(.true., 1, umat_planes), spread(.false., 1, umat_nstatv - slot_theta - umat_planes)]
+  logical, parameter :: flag_slot(umat_nstatv) = [spread(.false., 1, slot_flag - 1), &
+    spread(.true., 1, umat_nstatv - slot_flag + 1)]
+  real(dp), parameter :: statev_lo_fixed(umat_nstatv) = &
+    merge(-state_bound, merge(1.0_dp, statev_lo, flag_slot), angle_slot)
+  real(dp), parameter :: statev_hi_fixed(umat_nstatv) = merge(state_bound, statev_hi, angle_slot)
+  integer(int64), parameter :: lo_bits(umat_nstatv) = transfer(statev_lo_fixed, 0_int64, umat_nstatv)
+  integer(int64), parameter :: hi_bits(umat_nstatv) = transfer(statev_hi_fixed, 0_int64, umat_nstatv)
+  integer(int64), parameter :: statev_lo_key(umat_nstatv) = merge(-1_int64, &
+    merge(lo_bits, ieor(lo_bits, huge(0_int64)), lo_bits >= 0), lo_bits == 0)
+  integer(int64), parameter :: statev_hi_key(umat_nstatv) = &
+    merge(hi_bits, ieor(hi_bits, huge(0_int64)), hi_bits >= 0)
+
   !> What the UMAT needs besides the material: the accuracy bounds behind PNEWDT.
   type :: umat_controls_t
     real(dp) :: max_damage_increment = 0.25_dp
@@ -83,14 +101,14 @@ contains
       call props_message(props, 0, message)
       return
     end if
-    ok = properties_ok(props)
-    if (ok) ok = props(prop_thetaf) <= props(prop_theta0)   ! (no comparison of a NaN)
+    v(1:n) = props
+    v(n + 1:) = property_defaults(n + 1:)
+    ok = all_properties_ok(v)
+    if (ok) ok = v(prop_thetaf) <= v(prop_theta0)   ! (no comparison of a NaN)
     if (.not. ok) then
       call props_message(props, 1, message)
       return
     end if
-    v(1:n) = props
-    v(n + 1:) = properties(n + 1:)%default
     mat%sigma0_n = v(prop_sigma0_n)
     mat%sigma0_t = v(prop_sigma0_t)
     mat%gc = v(prop_gc)
@@ -141,7 +159,6 @@ contains
   pure subroutine statev_bounds(mat, lo, hi)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(out) :: lo(umat_nstatv), hi(umat_nstatv)
-    real(dp) :: slack
     integer :: k
     lo = statev_lo
     hi = statev_hi
@@ -150,19 +167,28 @@ contains
       lo(slot_beta + 1:slot_beta + umat_planes) = mat%beta_break
     end if
     do k = 1, umat_planes
-      slack = 4.0_dp * epsilon(1.0_dp) * abs(mat%theta_init(k))
-      lo(slot_theta + k) = min(mat%theta_init(k), mat%thetaf_eff(k)) - slack
-      hi(slot_theta + k) = max(mat%theta_init(k), mat%thetaf_eff(k)) + slack
+      call angle_range(mat, k, lo(slot_theta + k), hi(slot_theta + k))
     end do
   end subroutine statev_bounds
+
+  !> The range of the angle of plane k: between theta_f and theta_0, with 4 ulps of slack.
+  pure subroutine angle_range(mat, k, lo, hi)
+    type(interlock_material_t), intent(in) :: mat
+    integer, intent(in) :: k
+    real(dp), intent(out) :: lo, hi
+    real(dp) :: slack
+    slack = 4.0_dp * epsilon(1.0_dp) * abs(mat%theta_init(k))
+    lo = min(mat%theta_init(k), mat%thetaf_eff(k)) - slack
+    hi = max(mat%theta_init(k), mat%thetaf_eff(k)) + slack
+  end subroutine angle_range
 
   !> The first STATEV slot outside its range (statev_bounds), 0 when every one is admissible.
   !> An uninitialised STATEV (flag 0, as FE codes start) is admissible whatever its other slots.
   pure integer function statev_bad_index(statev, mat) result(bad)
     real(dp), intent(in) :: statev(umat_nstatv)
     type(interlock_material_t), intent(in) :: mat
-    real(dp) :: lo(umat_nstatv), hi(umat_nstatv)
-    integer :: i, n_bad
+    real(dp) :: lo(umat_nstatv), hi(umat_nstatv), theta_lo, theta_hi
+    integer :: i, k
     logical :: ok
     bad = 0
     if (iand(transfer(statev(slot_flag), 0_int64), exponent_bits) == exponent_bits) then
@@ -173,22 +199,23 @@ contains
       if (.not. same_value(statev(slot_flag), 0.0_dp)) bad = slot_flag
       return
     end if
+    ! The common case in straight comparisons: every slot within its fixed range by integer
+    ! comparisons of the bits (no comparison of a NaN), then the bounds that depend on the
+    ! material on the values now known finite.
+    ok = keys_in_range(umat_nstatv, statev, statev_lo_key, statev_hi_key)
+    if (ok .and. mat%prefractured) ok = &
+      all(statev(slot_damage + 1:slot_damage + umat_planes) >= 1.0_dp) .and. &
+      all(statev(slot_beta + 1:slot_beta + umat_planes) >= mat%beta_break)
+    if (ok) then
+      do k = 1, umat_planes
+        call angle_range(mat, k, theta_lo, theta_hi)
+        ok = ok .and. statev(slot_theta + k) >= theta_lo .and. statev(slot_theta + k) <= theta_hi
+      end do
+      if (ok) return
+    end if
+    ! Which one: the first slot outside its range.
     call statev_bounds(mat, lo, hi)
     lo(slot_flag) = 1.0_dp
-    ! Finite first (exponent_bits: no comparison of a NaN), then the ranges; counted, not
-    ! branched, so that the loops vectorise.
-    n_bad = 0
-    do i = 1, umat_nstatv
-      n_bad = n_bad + merge(1, 0, iand(transfer(statev(i), 0_int64), exponent_bits) == &
-                                  exponent_bits)
-    end do
-    if (n_bad == 0) then
-      do i = 1, umat_nstatv
-        n_bad = n_bad + merge(1, 0, statev(i) < lo(i)) + merge(1, 0, statev(i) > hi(i))
-      end do
-    end if
-    ok = n_bad == 0
-    if (ok) return
     do i = 1, umat_nstatv
       if (.not. is_finite_bits(statev(i))) then
         bad = i

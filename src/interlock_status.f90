@@ -12,10 +12,12 @@ module interlock_status
   integer, parameter :: status_local_failure = 2 !< the local integration failed: retry with a smaller step
   integer, parameter :: message_len = 512
 
-  !> What one update reports besides its results.
+  !> What one update reports besides its results. `message` is defined only when `status` /=
+  !> status_ok (it says why): it has no default value, so that a caller's fresh report (the
+  !> UMAT declares one on every call) does not pay for clearing a long string it never reads.
   type :: interlock_info_t
     integer :: status = status_ok
-    character(len=message_len) :: message = ''
+    character(len=message_len) :: message
     integer :: newton_iterations = 0   !< largest iteration count of one plane's wear solve
     integer :: substeps = 1            !< sub-increments accepted
     integer :: attempts = 0            !< sub-increments tried (accepted and rejected)

@@ -405,7 +405,7 @@ contains
         call interlock_update(mat, solver, [steps(i)%a, steps(i)%b], old, new, sigma, tangent, info)
         c%updates = c%updates + 1
         stat = merge(0, 1, info%status == status_ok)
-        message = info%message
+        if (stat /= 0) message = info%message
       end if
       c%newton = max(c%newton, info%newton_iterations)
       c%attempts = max(c%attempts, info%attempts)

@@ -43,10 +43,11 @@
 !>    drivers are convex along a straight separation path (beta: a norm of an affine function;
 !>    zeta: zero while sticking, then growing linearly), so the retried increment
 !>    f * DSTRAN meets the bound (scaling D or theta themselves, which are concave in their
-!>    drivers, would overshoot). With wear on, the interpolation starts from the state a zero
-!>    increment gives (in the explicit scheme the angle stored at the end of the previous
+!>    drivers, would overshoot). With wear on and the explicit scheme, the interpolation starts
+!>    from the state a zero increment gives (the angle stored at the end of the previous
 !>    increment already turns the local frame, so a zero increment slips and wears a little);
-!>    this costs one more update, only when a bound is exceeded. When no cut can meet the
+!>    this costs one more update, only when a bound is exceeded (the implicit and trapezoidal
+!>    schemes are consistent at a zero increment, SPEC D10: no extra update). When no cut can meet the
 !>    bound, the smallest factor 0.1 is proposed. The results of the increment are returned
 !>    all the same (the host discards them when it cuts back).
 !>
@@ -73,7 +74,8 @@
 !> that every local lives on the stack: safe to call from many threads at once.
 module interlock_umat_body
   use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
-      interlock_info_t, interlock_update, umat_controls_t, status_ok, status_local_failure
+      interlock_info_t, interlock_update, umat_controls_t, status_ok, status_local_failure, &
+      scheme_explicit
   implicit none
   private
   public :: interlock_umat_cohesive
@@ -205,7 +207,8 @@ contains
     ! Property `tangent` = 2: a symmetric DDSDDE for hosts that symmetrize (the update is not
     ! touched; src/interlock_host_tangent.f90 says why this one).
     if (NPROPS >= prop_tangent) then
-      if (nint(PROPS(prop_tangent)) == tangent_symmetric) call interlock_symmetric_tangent(tangent)
+      ! (a whole number, checked: no rounding call)
+      if (PROPS(prop_tangent) > tangent_symmetric - 0.5_dp) call interlock_symmetric_tangent(tangent)
     end if
     STRESS(1:2) = sigma
     DDSDDE(1:2, 1:2) = tangent
@@ -220,7 +223,9 @@ contains
 
     ! --- Accuracy control: propose the fraction of the increment that meets the bounds.
     factor = step_factor(mat, controls, old, old, new)
-    if (factor < 1.0_dp .and. mat%use_wear) &
+    ! (in the implicit and trapezoidal schemes a zero increment is a no-op, SPEC D10: `old`
+    ! is the anchor already)
+    if (factor < 1.0_dp .and. mat%use_wear .and. solver%scheme == scheme_explicit) &
       factor = step_factor_from_zero(mat, solver, controls, old, new, factor)
     if (factor < 1.0_dp) call lower_pnewdt(PNEWDT, max(pnewdt_min_factor, factor))
   end subroutine interlock_umat_cohesive
