@@ -93,7 +93,8 @@ contains
   recursive subroutine interlock_umat_cohesive(STRESS, STATEV, DDSDDE, SSE, SPD, SCD, RPL, DDSDDT, DRPLDE, DRPLDT, &
                             STRAN, DSTRAN, TIME, DTIME, TEMP, DTEMP, PREDEF, DPRED, CMNAME, NDI, &
                             NSHR, NTENS, NSTATV, PROPS, NPROPS, COORDS, DROT, PNEWDT, CELENT, &
-                            DFGRD0, DFGRD1, NOEL, NPT, LAYER, KSPT, JSTEP, KINC)
+                            DFGRD0, DFGRD1, NOEL, NPT, LAYER, KSPT, JSTEP, KINC, &
+                            layer_props_offset)
     use interlock, only: props_to_material, statev_to_state, state_to_statev, umat_nstatv, &
         message_len, separation_bound, state_bound, statev_bad_index, exponent_bits, &
         prop_tangent, tangent_symmetric, interlock_symmetric_tangent
@@ -123,6 +124,9 @@ contains
     real(dp), intent(in) :: PROPS(NPROPS)      !< properties, see interlock-query --props
     real(dp), intent(in) :: COORDS(3), DROT(3, 3), CELENT, DFGRD0(3, 3), DFGRD1(3, 3) !< unused
     real(dp), intent(inout) :: PNEWDT          !< suggested time-step ratio (only lowered here)
+    !> For the thin layer (umat/interlock_umat_layer.f90): PROPS are its PROPS from this index
+    !> + 1 on, and a bad property is named by both indices.
+    integer, intent(in), optional :: layer_props_offset
 
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver
@@ -158,6 +162,7 @@ contains
     end if
     call props_to_material(PROPS, mat, solver, controls, stat, message)
     if (stat /= status_ok) then
+      if (present(layer_props_offset)) call name_layer_property(message, layer_props_offset, NPROPS)
       call report(message, pnewdt_bad_input, NOEL, NPT, KINC, CMNAME, PNEWDT)
       return
     end if
@@ -301,6 +306,26 @@ contains
   end subroutine lower_pnewdt
 
   !> Write one line naming the point, lower PNEWDT; STRESS and STATEV stay as they came.
+  !> A bad interlock property of the thin layer, named by its index in the layer's PROPS too
+  !> ("layer PROPS(8) = interlock PROPS(4): ..."): its PROPS start `offset` values later.
+  subroutine name_layer_property(message, offset, nprops)
+    use interlock, only: format_integer
+    character(len=*), intent(inout) :: message
+    integer, intent(in) :: offset, nprops
+    integer :: close_bracket, index_2d, ios
+    close_bracket = index(message, ')')
+    ios = 1
+    if (index(message, 'PROPS(') == 1 .and. close_bracket > 7) &
+      read (message(7:close_bracket - 1), *, iostat=ios) index_2d
+    if (ios == 0) then
+      message = 'layer PROPS(' // format_integer(index_2d + offset) // ') = interlock ' // &
+                trim(message)
+    else
+      message = 'layer PROPS(' // format_integer(offset + 1) // ':' // &
+                format_integer(offset + nprops) // ') (the interlock PROPS): ' // trim(message)
+    end if
+  end subroutine name_layer_property
+
   subroutine report(why, proposal, noel, npt, kinc, cmname, pnewdt)
     use, intrinsic :: iso_fortran_env, only: output_unit
     use interlock, only: format_integer

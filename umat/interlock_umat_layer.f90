@@ -42,8 +42,7 @@
 !> **Threads.** No SAVE'd, module or COMMON state is written; `recursive`: every local on the
 !> stack.
 module interlock_umat_layer
-  use interlock, only: dp, props_to_material, interlock_material_t, interlock_solver_t, &
-      umat_controls_t, status_ok, message_len, format_integer, format_real, is_nan_value, &
+  use interlock, only: dp, message_len, format_integer, format_real, is_nan_value, &
       same_value, umat_nstatv, n_required_properties, n_properties
   use interlock_umat_body, only: interlock_umat_cohesive
   implicit none
@@ -97,10 +96,7 @@ contains
 
     real(dp), parameter :: pnewdt_none = 1.0_dp
     real(dp), parameter :: untouched = -huge(1.0_dp)
-    type(interlock_material_t) :: mat
-    type(interlock_solver_t) :: solver
-    type(umat_controls_t) :: controls
-    integer :: comp(2), normal, slip, i, stat, open_bracket, close_bracket, index_2d, ios
+    integer :: comp(2), normal, slip, i
     real(dp) :: h, e_other, t(2), s0(2), ds(2), d2(2, 2), sse2, spd2, scd2, rpl2, drpldt2, &
                 ddsddt2(2), drplde2(2), p2, strain, elastic
     logical :: interface_component(NTENS)
@@ -158,25 +154,6 @@ contains
       call fail(message, .true.)
       return
     end if
-    ! The interlock PROPS, with their indices in the layer's PROPS (the 2D law would name its
-    ! own indices, 4 lower).
-    call props_to_material(PROPS(layer_nprops_head + 1:NPROPS), mat, solver, controls, stat, &
-                           message)
-    if (stat /= status_ok) then
-      open_bracket = index(message, 'PROPS(')
-      close_bracket = index(message, ')')
-      if (open_bracket == 1 .and. close_bracket > 7) then
-        read (message(7:close_bracket - 1), *, iostat=ios) index_2d
-        if (ios == 0) message = 'layer PROPS(' // format_integer(index_2d + layer_nprops_head) &
-                                // ') = interlock ' // trim(message)
-      else
-        message = 'layer PROPS(' // format_integer(layer_nprops_head + 1) // ':' // &
-                  format_integer(NPROPS) // ') (the interlock PROPS): ' // trim(message)
-      end if
-      call fail(message, .true.)
-      return
-    end if
-
     ! --- The 2D law on the interface pair (separation = h * strain).
     t = STRESS(comp)
     s0 = h * STRAN(comp)
@@ -193,7 +170,8 @@ contains
     call interlock_umat_cohesive(t, STATEV, d2, sse2, spd2, scd2, rpl2, ddsddt2, drplde2, &
       drpldt2, s0, ds, TIME, DTIME, TEMP, DTEMP, PREDEF, DPRED, CMNAME, 1, 1, 2, NSTATV, &
       PROPS(layer_nprops_head + 1:NPROPS), NPROPS - layer_nprops_head, COORDS, DROT, p2, &
-      CELENT, DFGRD0, DFGRD1, NOEL, NPT, LAYER, KSPT, JSTEP, KINC)
+      CELENT, DFGRD0, DFGRD1, NOEL, NPT, LAYER, KSPT, JSTEP, KINC, &
+      layer_props_offset=layer_nprops_head)   ! (the law checks its PROPS, named by both indices)
     if (same_value(d2(1, 1), untouched)) then
       ! The law failed (it wrote its line and left its arguments alone): so does the layer.
       call request(max(p2, 0.0_dp), p2 <= 0.0_dp)
