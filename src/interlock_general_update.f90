@@ -12,7 +12,7 @@ module interlock_general_update
   use interlock_state, only: interlock_state_t
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
   use interlock_ria, only: ria_step
-  use interlock_kernels, only: kernel_step
+  use interlock_kernels, only: kernel_step, finite_response, largest_increments
   implicit none
   private
   public :: general_update
@@ -35,10 +35,28 @@ contains
     type(interlock_state_t), intent(inout) :: new
     real(dp), intent(out) :: sigma(2), tangent(2, 2)
     type(interlock_info_t), intent(inout) :: info
-    logical :: ok, done
-    integer :: k
+    logical :: ok, done, tried
     real(dp) :: err, h_first
 
+    ! A specialised kernel without substepping first, with only the checks it needs
+    ! (mat%kernel /= kernel_general only in a prepared material; abs(x) <= huge is false for
+    ! NaN and both infinities): through the checks below the full model's update cost 3 %
+    ! more (docs/bench.md, section 1). When the kernel does not apply, the general path below
+    ! takes the increment; when its result is not finite, the check below reports it.
+    tried = mat%kernel /= kernel_general .and. solver%substep_tol <= 0.0_dp .and. &
+            solver%scheme >= scheme_explicit .and. solver%scheme <= scheme_trapezoidal .and. &
+            abs(s(1)) <= huge(1.0_dp) .and. abs(s(2)) <= huge(1.0_dp)
+    if (tried) then
+      call kernel_step(mat, solver, s, old, new, tangent, done, info%newton_iterations)
+      if (done) then
+        if (finite_response(new%sigma, tangent)) then
+          sigma = new%sigma
+          call largest_increments(mat%n_planes, old, new, info%max_damage_increment, &
+                                  info%max_angle_increment)
+          return
+        end if
+      end if
+    end if
     if (.not. mat%prepared) then
       call fail(old, new, sigma, tangent, info, status_bad_input, &
                 'the material has not been prepared (call interlock_material_prepare)')
@@ -57,13 +75,13 @@ contains
     end if
 
     ! Every path below sets the whole tangent when it succeeds (fail() zeroes it otherwise).
-    done = .false.
+    if (.not. tried) done = .false.
     if (solver%substep_tol > 0.0_dp) then
-      ! The whole increment by the specialised kernel first (a scheme that couples the angle to
-      ! the end of the step: its kernel computes the error estimate on the way); sub-increments
-      ! only when the estimate exceeds the tolerance, the first one sized from it.
+      ! The whole increment by the specialised kernel first (it computes the error estimate on
+      ! the way, as the first trial of substep would); sub-increments only when the estimate
+      ! exceeds the tolerance, the first one sized from it.
       h_first = 1.0_dp
-      if (mat%kernel /= kernel_general .and. solver%scheme /= scheme_explicit) then
+      if (mat%kernel /= kernel_general) then
         call kernel_step(mat, solver, s, old, new, tangent, done, info%newton_iterations, err)
         if (.not. done) err = 0.0_dp
         if (err > solver%substep_tol) then
@@ -76,8 +94,8 @@ contains
                                    h_first)
     else
       ! The specialised kernel of the material's effect set, when it applies.
-      if (mat%kernel /= kernel_general) call kernel_step(mat, solver, s, old, new, tangent, &
-                                                         done, info%newton_iterations)
+      if (mat%kernel /= kernel_general .and. .not. tried) call kernel_step(mat, solver, s, old, &
+          new, tangent, done, info%newton_iterations)
       if (.not. done) then
         call ria_step(mat, solver, s, old, new, tangent, info%newton_iterations, ok)
         if (.not. ok) then
@@ -91,20 +109,13 @@ contains
       return
     end if
     sigma = new%sigma
-    ! A NaN or an infinity in any entry makes the sum NaN or infinite (so does a sum beyond
-    ! huge, which no traction or stiffness of the law comes near).
-    if (.not. abs(sigma(1)) + abs(sigma(2)) + abs(tangent(1, 1)) + abs(tangent(2, 1)) + &
-              abs(tangent(1, 2)) + abs(tangent(2, 2)) <= huge(1.0_dp)) then
+    if (.not. finite_response(sigma, tangent)) then
       call fail(old, new, sigma, tangent, info, status_local_failure, &
                 'the traction or tangent is not finite: retry with a smaller increment')
       return
     end if
-    info%max_damage_increment = new%damage(1) - old%damage(1)
-    info%max_angle_increment = abs(new%theta(1) - old%theta(1))
-    do k = 2, mat%n_planes
-      info%max_damage_increment = max(info%max_damage_increment, new%damage(k) - old%damage(k))
-      info%max_angle_increment = max(info%max_angle_increment, abs(new%theta(k) - old%theta(k)))
-    end do
+    call largest_increments(mat%n_planes, old, new, info%max_damage_increment, &
+                            info%max_angle_increment)
   end subroutine general_update
 
   !> Report a failure: `new` = `old`, the traction at the start, no tangent.

@@ -20,7 +20,7 @@ module interlock_kernels
   use interlock_friction, only: friction_step
   implicit none
   private
-  public :: kernel_step, share_first_plane, start_yield
+  public :: kernel_step, share_first_plane, start_yield, finite_response, largest_increments
 
   !> The law of one microplane in its own frame over one step, with d(traction)/d(s_kn, s_kt).
   type :: plane_law_t
@@ -38,8 +38,8 @@ contains
   !> One increment with a specialised kernel. `done` is false when the kernel does not apply
   !> to this increment (a separated RIA, or an implicit wear equation the bounded iteration did
   !> not solve): the caller then takes the general path, which can also sub-increment.
-  !> wear_error (a scheme that couples the angle to the end of the step): the embedded local
-  !> error estimate of substepping, as interlock_ria:ria_step computes it.
+  !> wear_error: the embedded local error estimate of substepping, as interlock_ria:ria_step
+  !> computes it (every scheme).
   pure subroutine kernel_step(mat, solver, s, old, new, tangent, done, iterations, wear_error)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
@@ -52,7 +52,7 @@ contains
     real(dp), intent(out), optional :: wear_error
     type(plane_law_t) :: p
     real(dp) :: area, darea, sigma(2), sl(2), c, sn, gam, kg(2, 2), sg(2), theta, slope, &
-                dthds(2), dsig_dth(2), err_angle, err_traction, e, a_end, g_slip
+                dthds(2), dsig_dth(2), err_angle, err_traction, e, a_end, g_slip, wfric, slip
     integer :: k, scheme, it
 
     scheme = solver%scheme
@@ -83,15 +83,33 @@ contains
           call fixed_angle_plane(mat, a_end, g_slip, k, mat%cos0(k), mat%sin0(k), &
                                  mat%gamma_hat(k) * area, s, old, new, sigma, tangent)
         else if (scheme == scheme_explicit) then
-          ! Explicit (eq. 25): the angle frozen at its stored value within the step.
+          ! Explicit (eq. 25): the angle frozen at its stored value within the step, the wear
+          ! driven by the start state's friction traction.
           theta = old%theta(k)
-          call fixed_angle_plane(mat, 0.0_dp, old%damage(k) * abs(old%tauf(k)), k, cos(theta), &
-                                 sin(theta), mat%gamma_hat(k) * area, s, old, new, sigma, tangent)
+          g_slip = old%damage(k) * abs(old%tauf(k))
+          gam = mat%gamma_hat(k) * area
+          if (present(wear_error)) then
+            call fixed_angle_plane(mat, 0.0_dp, g_slip, k, cos(theta), sin(theta), gam, s, old, &
+                                   new, sigma, tangent, wfric, slip, dsig_dth)
+          else
+            call fixed_angle_plane(mat, 0.0_dp, g_slip, k, cos(theta), sin(theta), gam, s, old, &
+                                   new, sigma, tangent)
+          end if
           ! Explicit wear (eq. 22, 25): the angle for the next step.
           if (new%zeta(k) > old%zeta(k)) then
             call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), new%zeta(k), &
                             theta, slope)
             new%theta(k) = theta
+          end if
+          if (present(wear_error)) then
+            ! (interlock_schemes:plane_step) The traction is taken at the start angle: the error
+            ! is first order in the angle increment itself (decision D10), and in the difference
+            ! from the backward-Euler increment, which sees wear the start traction does not drive.
+            e = max(abs(new%theta(k) - old%theta(k)), min(abs(old%theta(k) - mat%thetaf_eff(k)), &
+                    abs(worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), old%theta(k)) * &
+                        (wfric - g_slip * slip))))
+            err_angle = max(err_angle, e)
+            err_traction = max(err_traction, gam * maxval(abs(dsig_dth)) * e)
           end if
         else
           theta = old%theta(k)
@@ -148,7 +166,8 @@ contains
   !> places, and calls in these paths cost much of an update (interlock-bench, with the damage
   !> growth and this plane as calls from the flat-plane laws: damage only 7.9 -> 9.2 ns,
   !> damage + friction 10.5 -> 19 ns). core_kernels holds all of them to the general path.
-  pure subroutine fixed_angle_plane(mat, a_end, g_slip, k, c, sn, w, s, old, new, sigma, tangent)
+  pure subroutine fixed_angle_plane(mat, a_end, g_slip, k, c, sn, w, s, old, new, sigma, tangent, &
+                                    wfric_out, slip_out, dsig_dtheta)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: a_end, g_slip   !< the wear driver a_end D |tau_f| |d sf| + g_slip |d sf|
     integer, intent(in) :: k
@@ -156,6 +175,9 @@ contains
     type(interlock_state_t), intent(in) :: old
     type(interlock_state_t), intent(inout) :: new
     real(dp), intent(inout) :: sigma(2), tangent(2, 2)
+    !> (substepping's error estimate) the plane's frictional work D |tau_f| |d sf|, its slip
+    !> |d sf| and d sigma_k / d theta at fixed s in the global frame, unweighted
+    real(dp), intent(out), optional :: wfric_out, slip_out, dsig_dtheta(2)
     real(dp) :: sl1, sl2, pos, beta, d, gd1, gd2, mu_p, slip_sign, sf, &
                 tauf, dtauf1, dtauf2, slip, kpos, kts, ls1, ls2, k11, k12, k21, k22, t11, t12, &
                 t21, t22, wc, ws, wfric, wdmg
@@ -219,6 +241,15 @@ contains
     new%sf(k) = sf
     new%theta(k) = old%theta(k)
     new%tauf(k) = tauf
+    if (present(wfric_out)) wfric_out = wfric
+    if (present(slip_out)) slip_out = slip
+    if (present(dsig_dtheta)) then
+      ! d(R^T)/d theta sigma_k + R^T K_k d s_k/d theta, d s_k/d theta = (s_kt, -s_kn)
+      t11 = k11 * sl2 - k12 * sl1
+      t21 = k21 * sl2 - k22 * sl1
+      dsig_dtheta = [-sn * ls1 - c * ls2 + (c * t11 - sn * t21), &
+                     c * ls1 - sn * ls2 + (sn * t11 + c * t21)]
+    end if
   end subroutine fixed_angle_plane
 
   !> A wearing plane with a scheme that couples the angle to the end of the step (interlock_wear:
@@ -391,6 +422,28 @@ contains
     if (s_o(1) * mat%inv_h_n < 1.0_dp) &
       mu_p = mat%mu_eff * mat%kn * max(0.0_dp, -(c * s_o(1) + sn * s_o(2)))
   end function start_yield
+
+  !> Traction and tangent finite: a NaN or an infinity in any entry makes the sum NaN or
+  !> infinite (so does a sum beyond huge, which no traction or stiffness of the law comes near).
+  pure logical function finite_response(sigma, tangent)
+    real(dp), intent(in) :: sigma(2), tangent(2, 2)
+    finite_response = abs(sigma(1)) + abs(sigma(2)) + abs(tangent(1, 1)) + abs(tangent(2, 1)) + &
+                      abs(tangent(1, 2)) + abs(tangent(2, 2)) <= huge(1.0_dp)
+  end function finite_response
+
+  !> The largest damage and angle increments over the n planes of an update (its info report).
+  pure subroutine largest_increments(n, old, new, d_damage, d_angle)
+    integer, intent(in) :: n
+    type(interlock_state_t), intent(in) :: old, new
+    real(dp), intent(out) :: d_damage, d_angle
+    integer :: k
+    d_damage = new%damage(1) - old%damage(1)
+    d_angle = abs(new%theta(1) - old%theta(1))
+    do k = 2, n
+      d_damage = max(d_damage, new%damage(k) - old%damage(k))
+      d_angle = max(d_angle, abs(new%theta(k) - old%theta(k)))
+    end do
+  end subroutine largest_increments
 
   !> A flat RIA of several planes: planes 2..n take plane 1's history (their angles stay).
   pure subroutine share_first_plane(n, old, new)
