@@ -12,7 +12,7 @@ module interlock_general_update
   use interlock_state, only: interlock_state_t
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
   use interlock_ria, only: ria_step
-  use interlock_kernels, only: kernel_step, finite_response, largest_increments
+  use interlock_kernels, only: kernel_step
   implicit none
   private
   public :: general_update
@@ -51,8 +51,7 @@ contains
       if (done) then
         if (finite_response(new%sigma, tangent)) then
           sigma = new%sigma
-          call largest_increments(mat%n_planes, old, new, info%max_damage_increment, &
-                                  info%max_angle_increment)
+          call largest_increments(mat%n_planes, old, new, info)
           return
         end if
       end if
@@ -114,9 +113,30 @@ contains
                 'the traction or tangent is not finite: retry with a smaller increment')
       return
     end if
-    call largest_increments(mat%n_planes, old, new, info%max_damage_increment, &
-                            info%max_angle_increment)
+    call largest_increments(mat%n_planes, old, new, info)
   end subroutine general_update
+
+  !> Traction and tangent finite: a NaN or an infinity in any entry makes the sum NaN or
+  !> infinite (so does a sum beyond huge, which no traction or stiffness of the law comes near).
+  pure logical function finite_response(sigma, tangent)
+    real(dp), intent(in) :: sigma(2), tangent(2, 2)
+    finite_response = abs(sigma(1)) + abs(sigma(2)) + abs(tangent(1, 1)) + abs(tangent(2, 1)) + &
+                      abs(tangent(1, 2)) + abs(tangent(2, 2)) <= huge(1.0_dp)
+  end function finite_response
+
+  !> The largest damage and angle increments over the n planes of an update (its info report).
+  pure subroutine largest_increments(n, old, new, info)
+    integer, intent(in) :: n
+    type(interlock_state_t), intent(in) :: old, new
+    type(interlock_info_t), intent(inout) :: info
+    integer :: k
+    info%max_damage_increment = new%damage(1) - old%damage(1)
+    info%max_angle_increment = abs(new%theta(1) - old%theta(1))
+    do k = 2, n
+      info%max_damage_increment = max(info%max_damage_increment, new%damage(k) - old%damage(k))
+      info%max_angle_increment = max(info%max_angle_increment, abs(new%theta(k) - old%theta(k)))
+    end do
+  end subroutine largest_increments
 
   !> Report a failure: `new` = `old`, the traction at the start, no tangent.
   pure subroutine fail(old, new, sigma, tangent, info, code, message)

@@ -20,7 +20,7 @@ module interlock_kernels
   use interlock_friction, only: friction_step
   implicit none
   private
-  public :: kernel_step, share_first_plane, start_yield, finite_response, largest_increments
+  public :: kernel_step, share_first_plane, start_yield
 
   !> The law of one microplane in its own frame over one step, with d(traction)/d(s_kn, s_kt).
   type :: plane_law_t
@@ -85,15 +85,14 @@ contains
         else if (scheme == scheme_explicit) then
           ! Explicit (eq. 25): the angle frozen at its stored value within the step, the wear
           ! driven by the start state's friction traction.
-          theta = old%theta(k)
+          call plane_frame(mat, k, old%theta(k), c, sn)
           g_slip = old%damage(k) * abs(old%tauf(k))
           gam = mat%gamma_hat(k) * area
           if (present(wear_error)) then
-            call fixed_angle_plane(mat, 0.0_dp, g_slip, k, cos(theta), sin(theta), gam, s, old, &
-                                   new, sigma, tangent, wfric, slip, dsig_dth)
+            call fixed_angle_plane(mat, 0.0_dp, g_slip, k, c, sn, gam, s, old, new, sigma, &
+                                   tangent, wfric, slip, dsig_dth)
           else
-            call fixed_angle_plane(mat, 0.0_dp, g_slip, k, cos(theta), sin(theta), gam, s, old, &
-                                   new, sigma, tangent)
+            call fixed_angle_plane(mat, 0.0_dp, g_slip, k, c, sn, gam, s, old, new, sigma, tangent)
           end if
           ! Explicit wear (eq. 22, 25): the angle for the next step.
           if (new%zeta(k) > old%zeta(k)) then
@@ -423,27 +422,22 @@ contains
       mu_p = mat%mu_eff * mat%kn * max(0.0_dp, -(c * s_o(1) + sn * s_o(2)))
   end function start_yield
 
-  !> Traction and tangent finite: a NaN or an infinity in any entry makes the sum NaN or
-  !> infinite (so does a sum beyond huge, which no traction or stiffness of the law comes near).
-  pure logical function finite_response(sigma, tangent)
-    real(dp), intent(in) :: sigma(2), tangent(2, 2)
-    finite_response = abs(sigma(1)) + abs(sigma(2)) + abs(tangent(1, 1)) + abs(tangent(2, 1)) + &
-                      abs(tangent(1, 2)) + abs(tangent(2, 2)) <= huge(1.0_dp)
-  end function finite_response
-
-  !> The largest damage and angle increments over the n planes of an update (its info report).
-  pure subroutine largest_increments(n, old, new, d_damage, d_angle)
-    integer, intent(in) :: n
-    type(interlock_state_t), intent(in) :: old, new
-    real(dp), intent(out) :: d_damage, d_angle
-    integer :: k
-    d_damage = new%damage(1) - old%damage(1)
-    d_angle = abs(new%theta(1) - old%theta(1))
-    do k = 2, n
-      d_damage = max(d_damage, new%damage(k) - old%damage(k))
-      d_angle = max(d_angle, abs(new%theta(k) - old%theta(k)))
-    end do
-  end subroutine largest_increments
+  !> cos and sin of plane k at angle theta: while the plane is unworn (theta = theta_0 to the
+  !> bit) the material's, computed once with the same functions (the same values), else libm's.
+  !> Most planes of an FE model, and every plane while it opens, have not worn.
+  pure subroutine plane_frame(mat, k, theta, c, sn)
+    type(interlock_material_t), intent(in) :: mat
+    integer, intent(in) :: k
+    real(dp), intent(in) :: theta
+    real(dp), intent(out) :: c, sn
+    if (theta >= mat%theta_init(k) .and. theta <= mat%theta_init(k)) then
+      c = mat%cos0(k)
+      sn = mat%sin0(k)
+    else
+      c = cos(theta)
+      sn = sin(theta)
+    end if
+  end subroutine plane_frame
 
   !> A flat RIA of several planes: planes 2..n take plane 1's history (their angles stay).
   pure subroutine share_first_plane(n, old, new)
