@@ -52,7 +52,8 @@ contains
     real(dp), intent(out), optional :: wear_error
     type(plane_law_t) :: p
     real(dp) :: area, darea, sigma(2), sl(2), c, sn, gam, kg(2, 2), sg(2), theta, slope, &
-                dthds(2), dsig_dth(2), err_angle, err_traction, e, a_end, g_slip, wfric, slip
+                dthds(2), dsig_dth(2), err_angle, err_traction, e, a_end, g_slip, wfric, slip, &
+                c_o, s_o
     integer :: k, scheme, it
 
     scheme = solver%scheme
@@ -135,9 +136,9 @@ contains
           tangent = tangent + gam * kg
           if (present(wear_error) .and. p%zeta > old%zeta(k)) then
             ! (interlock_schemes:plane_step: backward Euler minus trapezoidal, as an angle)
+            call plane_frame(mat, k, old%theta(k), c_o, s_o)
             e = abs(theta - old%theta(k)) * abs(0.5_dp * p%wfric - 0.5_dp * old%damage(k) * &
-                start_yield(mat, cos(old%theta(k)), sin(old%theta(k)), old%s) * p%slip) / &
-                (p%zeta - old%zeta(k))
+                start_yield(mat, c_o, s_o, old%s) * p%slip) / (p%zeta - old%zeta(k))
             err_angle = max(err_angle, e)
             err_traction = max(err_traction, gam * maxval(abs(dsig_dth)) * e)
           end if
@@ -270,22 +271,26 @@ contains
     type(wear_root_t) :: rt
     real(dp) :: thp, fp, a_end, g_start
     ! The driver G = a_end D |tau_f| |d sf| + g_start |d sf| (interlock_schemes:plane_step).
+    ! At zeta_o the angle is the stored one: no exponential (and no cosine and sine while
+    ! the plane is unworn).
+    call plane_frame(mat, k, theta, c, sn)
     a_end = 1.0_dp
     g_start = 0.0_dp
     if (solver%scheme == scheme_trapezoidal) then
       a_end = 0.5_dp
-      g_start = 0.5_dp * old%damage(k) * start_yield(mat, cos(theta), sin(theta), old%s)
+      g_start = 0.5_dp * old%damage(k) * start_yield(mat, c, sn, old%s)
     end if
-    ! At zeta_o the angle is the stored one: no exponential.
     thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), theta)
-    call wear_evaluate(mat, k, s, old, a_end, g_start, theta, thp, p, c, sn, sl, fp)
+    call wear_evaluate(mat, k, s, old, a_end, g_start, c, sn, thp, p, sl, fp)
     iterations = 0
     ok = .true.
     if (p%drv > 0.0_dp) then
       call wear_root_begin(rt, old%zeta(k), p%drv)
       do
         call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, thp)
-        call wear_evaluate(mat, k, s, old, a_end, g_start, theta, thp, p, c, sn, sl, fp)
+        c = cos(theta)
+        sn = sin(theta)
+        call wear_evaluate(mat, k, s, old, a_end, g_start, c, sn, thp, p, sl, fp)
         call wear_root_update(rt, rt%x - old%zeta(k) - p%drv, fp, solver%newton_tol, &
                               solver%newton_max_iterations)
         if (rt%done) exit
@@ -297,17 +302,16 @@ contains
     dthds = thp * [p%gdrv(1) * c - p%gdrv(2) * sn, p%gdrv(1) * sn + p%gdrv(2) * c] / fp
   end subroutine coupled_wear_plane
 
-  !> The plane at angle theta (slope thp = d theta / d zeta) and F' = 1 - thp dG/d theta of its
-  !> wear equation, dG/d theta = grad G . (s_kt, -s_kn).
-  pure subroutine wear_evaluate(mat, k, s, old, a_end, g_start, theta, thp, p, c, sn, sl, fp)
+  !> The plane at the angle of frame (c, sn) = (cos theta, sin theta), slope thp = d theta /
+  !> d zeta, and F' = 1 - thp dG/d theta of its wear equation, dG/d theta = grad G . (s_kt,
+  !> -s_kn).
+  pure subroutine wear_evaluate(mat, k, s, old, a_end, g_start, c, sn, thp, p, sl, fp)
     type(interlock_material_t), intent(in) :: mat
     integer, intent(in) :: k
-    real(dp), intent(in) :: s(2), a_end, g_start, theta, thp
+    real(dp), intent(in) :: s(2), a_end, g_start, c, sn, thp
     type(interlock_state_t), intent(in) :: old
     type(plane_law_t), intent(out) :: p
-    real(dp), intent(out) :: c, sn, sl(2), fp
-    c = cos(theta)
-    sn = sin(theta)
+    real(dp), intent(out) :: sl(2), fp
     sl = [c * s(1) + sn * s(2), -sn * s(1) + c * s(2)]
     call plane_law(mat, sl, old%beta(k), old%sf(k), old%zeta(k), old%damage(k), a_end, g_start, p)
     fp = 1.0_dp - thp * (p%gdrv(1) * sl(2) - p%gdrv(2) * sl(1))
