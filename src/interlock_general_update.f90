@@ -15,7 +15,7 @@ module interlock_general_update
   use interlock_kernels, only: kernel_step
   implicit none
   private
-  public :: general_update
+  public :: general_update, kernel_update
 
   real(dp), parameter :: smallest_fraction = 1.0e-12_dp
   !> Error control accepts a sub-increment of this fraction of the increment whatever its
@@ -23,6 +23,37 @@ module interlock_general_update
   real(dp), parameter :: smallest_controlled_fraction = 2.0_dp**(-12)
 
 contains
+
+  !> interlock_update (its contract) for every material and solver but the flat-plane laws of
+  !> interlock_update itself: a specialised kernel without substepping first, with only the
+  !> checks it needs (mat%kernel /= kernel_general only in a prepared material; abs(x) <= huge
+  !> is false for NaN and both infinities), else general_update. When the kernel does not apply
+  !> or its result is not finite, general_update takes the increment again (and reports). A
+  !> small procedure of its own: through general_update's checks and frame the full model's
+  !> update cost 3 % more (docs/bench.md, section 1).
+  pure subroutine kernel_update(mat, solver, s, old, new, sigma, tangent, info)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    real(dp), intent(in) :: s(2)
+    type(interlock_state_t), intent(in) :: old
+    type(interlock_state_t), intent(inout) :: new
+    real(dp), intent(out) :: sigma(2), tangent(2, 2)
+    type(interlock_info_t), intent(inout) :: info
+    logical :: done
+    if (mat%kernel /= kernel_general .and. solver%substep_tol <= 0.0_dp .and. &
+        solver%scheme >= scheme_explicit .and. solver%scheme <= scheme_trapezoidal .and. &
+        abs(s(1)) <= huge(1.0_dp) .and. abs(s(2)) <= huge(1.0_dp)) then
+      call kernel_step(mat, solver, s, old, new, tangent, done, info%newton_iterations)
+      if (done) then
+        if (finite_response(new%sigma, tangent)) then
+          sigma = new%sigma
+          call largest_increments(mat%n_planes, old, new, info)
+          return
+        end if
+      end if
+    end if
+    call general_update(mat, solver, s, old, new, sigma, tangent, info)
+  end subroutine kernel_update
 
   !> interlock_update (its contract) for any material and solver. `info` comes reset by
   !> interlock_update (status ok, no message, counts 1 or 0); the fields set here are the
@@ -35,27 +66,9 @@ contains
     type(interlock_state_t), intent(inout) :: new
     real(dp), intent(out) :: sigma(2), tangent(2, 2)
     type(interlock_info_t), intent(inout) :: info
-    logical :: ok, done, tried
+    logical :: ok, done
     real(dp) :: err, h_first
 
-    ! A specialised kernel without substepping first, with only the checks it needs
-    ! (mat%kernel /= kernel_general only in a prepared material; abs(x) <= huge is false for
-    ! NaN and both infinities): through the checks below the full model's update cost 3 %
-    ! more (docs/bench.md, section 1). When the kernel does not apply, the general path below
-    ! takes the increment; when its result is not finite, the check below reports it.
-    tried = mat%kernel /= kernel_general .and. solver%substep_tol <= 0.0_dp .and. &
-            solver%scheme >= scheme_explicit .and. solver%scheme <= scheme_trapezoidal .and. &
-            abs(s(1)) <= huge(1.0_dp) .and. abs(s(2)) <= huge(1.0_dp)
-    if (tried) then
-      call kernel_step(mat, solver, s, old, new, tangent, done, info%newton_iterations)
-      if (done) then
-        if (finite_response(new%sigma, tangent)) then
-          sigma = new%sigma
-          call largest_increments(mat%n_planes, old, new, info)
-          return
-        end if
-      end if
-    end if
     if (.not. mat%prepared) then
       call fail(old, new, sigma, tangent, info, status_bad_input, &
                 'the material has not been prepared (call interlock_material_prepare)')
@@ -74,7 +87,7 @@ contains
     end if
 
     ! Every path below sets the whole tangent when it succeeds (fail() zeroes it otherwise).
-    if (.not. tried) done = .false.
+    done = .false.
     if (solver%substep_tol > 0.0_dp) then
       ! The whole increment by the specialised kernel first (it computes the error estimate on
       ! the way, as the first trial of substep would); sub-increments only when the estimate
@@ -93,8 +106,8 @@ contains
                                    h_first)
     else
       ! The specialised kernel of the material's effect set, when it applies.
-      if (mat%kernel /= kernel_general .and. .not. tried) call kernel_step(mat, solver, s, old, &
-          new, tangent, done, info%newton_iterations)
+      if (mat%kernel /= kernel_general) call kernel_step(mat, solver, s, old, new, tangent, &
+                                                         done, info%newton_iterations)
       if (.not. done) then
         call ria_step(mat, solver, s, old, new, tangent, info%newton_iterations, ok)
         if (.not. ok) then
