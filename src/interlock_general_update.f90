@@ -2,9 +2,10 @@
 !> checks, the specialised kernel of the material's effect set or the general path, optionally
 !> with error-controlled substepping, and the exact algorithmic tangent of what was computed. A
 !> failed local solve is retried on sub-increments before it is reported. interlock_update
-!> (interlock_integrate) calls it for everything but the flat-plane laws it runs itself; it is a
-!> module of its own so that the compiler does not inline it there, where its size would make
-!> every call of the small laws pay for saving registers.
+!> (interlock_integrate) calls it, through kernel_update (a specialised kernel without
+!> substepping, with only the checks it needs), for everything but the flat-plane laws it runs
+!> itself; it is a module of its own so that the compiler does not inline it there, where its
+!> size would make every call of the small laws pay for saving registers.
 module interlock_general_update
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, &
