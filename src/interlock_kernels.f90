@@ -288,7 +288,8 @@ contains
       call wear_root_begin(rt, old%zeta(k), p%drv)
       do
         call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, thp)
-        call plane_frame(mat, k, theta, c, sn)
+        c = cos(theta)
+        sn = sin(theta)
         call wear_evaluate(mat, k, s, old, a_end, g_start, c, sn, thp, p, sl, fp)
         call wear_root_update(rt, rt%x - old%zeta(k) - p%drv, fp, solver%newton_tol, &
                               solver%newton_max_iterations)
