@@ -35,12 +35,17 @@ contains
                                      inv_s0n, inv_s0t, beta, d, gd_n, gd_t)
     real(dp), intent(in) :: an, at, beta_old, d_old, eta, inv_eta, beta_break, inv_s0n, inv_s0t
     real(dp), intent(out) :: beta, d, gd_n, gd_t
-    real(dp) :: beq, rb, ddb
-    beq = sqrt(an * an + at * at)
+    real(dp) :: beq2, beq, rb, ddb
     beta = beta_old
     d = d_old
     gd_n = 0.0_dp
     gd_t = 0.0_dp
+    ! The square root only where damage may grow: sqrt(x) <= b for every x <= fl(b^2) (b >= 0,
+    ! round to nearest), so the test on the squares skips no growth the test on beta_eq makes,
+    ! and the one on beta_eq itself decides as before.
+    beq2 = an * an + at * at
+    if (.not. beq2 > beta_old * beta_old) return
+    beq = sqrt(beq2)
     if (beq > beta_old) then
       beta = beq
       if (beq >= beta_break) then

@@ -2,9 +2,10 @@
 !> checks, the specialised kernel of the material's effect set or the general path, optionally
 !> with error-controlled substepping, and the exact algorithmic tangent of what was computed. A
 !> failed local solve is retried on sub-increments before it is reported. interlock_update
-!> (interlock_integrate) calls it for everything but the flat-plane laws it runs itself; it is a
-!> module of its own so that the compiler does not inline it there, where its size would make
-!> every call of the small laws pay for saving registers.
+!> (interlock_integrate) calls it, through kernel_update (a specialised kernel without
+!> substepping, with only the checks it needs), for everything but the flat-plane laws it runs
+!> itself; it is a module of its own so that the compiler does not inline it there, where its
+!> size would make every call of the small laws pay for saving registers.
 module interlock_general_update
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, &
@@ -15,7 +16,7 @@ module interlock_general_update
   use interlock_kernels, only: kernel_step
   implicit none
   private
-  public :: general_update
+  public :: general_update, kernel_update
 
   real(dp), parameter :: smallest_fraction = 1.0e-12_dp
   !> Error control accepts a sub-increment of this fraction of the increment whatever its
@@ -23,6 +24,37 @@ module interlock_general_update
   real(dp), parameter :: smallest_controlled_fraction = 2.0_dp**(-12)
 
 contains
+
+  !> interlock_update (its contract) for every material and solver but the flat-plane laws of
+  !> interlock_update itself: a specialised kernel without substepping first, with only the
+  !> checks it needs (mat%kernel /= kernel_general only in a prepared material; abs(x) <= huge
+  !> is false for NaN and both infinities), else general_update. When the kernel does not apply
+  !> or its result is not finite, general_update takes the increment again (and reports). A
+  !> small procedure of its own: through general_update's checks and frame the full model's
+  !> update cost 3 % more (docs/bench.md, section 1).
+  pure subroutine kernel_update(mat, solver, s, old, new, sigma, tangent, info)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    real(dp), intent(in) :: s(2)
+    type(interlock_state_t), intent(in) :: old
+    type(interlock_state_t), intent(inout) :: new
+    real(dp), intent(out) :: sigma(2), tangent(2, 2)
+    type(interlock_info_t), intent(inout) :: info
+    logical :: done
+    if (mat%kernel /= kernel_general .and. solver%substep_tol <= 0.0_dp .and. &
+        solver%scheme >= scheme_explicit .and. solver%scheme <= scheme_trapezoidal .and. &
+        abs(s(1)) <= huge(1.0_dp) .and. abs(s(2)) <= huge(1.0_dp)) then
+      call kernel_step(mat, solver, s, old, new, tangent, done, info%newton_iterations)
+      if (done) then
+        if (finite_response(new%sigma, tangent)) then
+          sigma = new%sigma
+          call largest_increments(mat%n_planes, old, new, info)
+          return
+        end if
+      end if
+    end if
+    call general_update(mat, solver, s, old, new, sigma, tangent, info)
+  end subroutine kernel_update
 
   !> interlock_update (its contract) for any material and solver. `info` comes reset by
   !> interlock_update (status ok, no message, counts 1 or 0); the fields set here are the
@@ -36,7 +68,6 @@ contains
     real(dp), intent(out) :: sigma(2), tangent(2, 2)
     type(interlock_info_t), intent(inout) :: info
     logical :: ok, done
-    integer :: k
     real(dp) :: err, h_first
 
     if (.not. mat%prepared) then
@@ -59,11 +90,11 @@ contains
     ! Every path below sets the whole tangent when it succeeds (fail() zeroes it otherwise).
     done = .false.
     if (solver%substep_tol > 0.0_dp) then
-      ! The whole increment by the specialised kernel first (a scheme that couples the angle to
-      ! the end of the step: its kernel computes the error estimate on the way); sub-increments
-      ! only when the estimate exceeds the tolerance, the first one sized from it.
+      ! The whole increment by the specialised kernel first (it computes the error estimate on
+      ! the way, as the first trial of substep would); sub-increments only when the estimate
+      ! exceeds the tolerance, the first one sized from it.
       h_first = 1.0_dp
-      if (mat%kernel /= kernel_general .and. solver%scheme /= scheme_explicit) then
+      if (mat%kernel /= kernel_general) then
         call kernel_step(mat, solver, s, old, new, tangent, done, info%newton_iterations, err)
         if (.not. done) err = 0.0_dp
         if (err > solver%substep_tol) then
@@ -91,21 +122,35 @@ contains
       return
     end if
     sigma = new%sigma
-    ! A NaN or an infinity in any entry makes the sum NaN or infinite (so does a sum beyond
-    ! huge, which no traction or stiffness of the law comes near).
-    if (.not. abs(sigma(1)) + abs(sigma(2)) + abs(tangent(1, 1)) + abs(tangent(2, 1)) + &
-              abs(tangent(1, 2)) + abs(tangent(2, 2)) <= huge(1.0_dp)) then
+    if (.not. finite_response(sigma, tangent)) then
       call fail(old, new, sigma, tangent, info, status_local_failure, &
                 'the traction or tangent is not finite: retry with a smaller increment')
       return
     end if
+    call largest_increments(mat%n_planes, old, new, info)
+  end subroutine general_update
+
+  !> Traction and tangent finite: a NaN or an infinity in any entry makes the sum NaN or
+  !> infinite (so does a sum beyond huge, which no traction or stiffness of the law comes near).
+  pure logical function finite_response(sigma, tangent)
+    real(dp), intent(in) :: sigma(2), tangent(2, 2)
+    finite_response = abs(sigma(1)) + abs(sigma(2)) + abs(tangent(1, 1)) + abs(tangent(2, 1)) + &
+                      abs(tangent(1, 2)) + abs(tangent(2, 2)) <= huge(1.0_dp)
+  end function finite_response
+
+  !> The largest damage and angle increments over the n planes of an update (its info report).
+  pure subroutine largest_increments(n, old, new, info)
+    integer, intent(in) :: n
+    type(interlock_state_t), intent(in) :: old, new
+    type(interlock_info_t), intent(inout) :: info
+    integer :: k
     info%max_damage_increment = new%damage(1) - old%damage(1)
     info%max_angle_increment = abs(new%theta(1) - old%theta(1))
-    do k = 2, mat%n_planes
+    do k = 2, n
       info%max_damage_increment = max(info%max_damage_increment, new%damage(k) - old%damage(k))
       info%max_angle_increment = max(info%max_angle_increment, abs(new%theta(k) - old%theta(k)))
     end do
-  end subroutine general_update
+  end subroutine largest_increments
 
   !> Report a failure: `new` = `old`, the traction at the start, no tangent.
   pure subroutine fail(old, new, sigma, tangent, info, code, message)

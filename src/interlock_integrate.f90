@@ -2,14 +2,14 @@
 !> point. The flat-plane laws without finite depth (a bilinear cohesive law, and the
 !> Alfano-Sacco interface with friction) run here with only the checks they need, so that the
 !> scenes most FE runs of an intact interface are made of pay close to a hand-coded cohesive
-!> law; everything else goes to interlock_general_update.
+!> law; everything else goes to interlock_general_update (kernel_update).
 module interlock_integrate
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_explicit, &
       scheme_implicit, scheme_trapezoidal, kernel_cohesive
   use interlock_state, only: interlock_state_t
   use interlock_status, only: interlock_info_t, status_ok
-  use interlock_general_update, only: general_update
+  use interlock_general_update, only: kernel_update
   use interlock_kernels, only: share_first_plane
   use interlock_damage, only: damage_growth
   use interlock_friction, only: friction_step
@@ -41,7 +41,8 @@ contains
     info%attempts = 1
     info%max_angle_increment = 0.0_dp
     ! The kernel is kernel_cohesive only in a prepared material. abs(x) <= huge is false for NaN
-    ! and both infinities: anything else is checked and reported by general_update.
+    ! and both infinities: anything else is checked and reported by kernel_update (a
+    ! specialised kernel) or general_update.
     if (mat%kernel == kernel_cohesive .and. solver%substep_tol <= 0.0_dp .and. &
         (solver%scheme == scheme_explicit .or. solver%scheme == scheme_implicit .or. &
          solver%scheme == scheme_trapezoidal) .and. &
@@ -53,7 +54,7 @@ contains
       end if
       info%max_damage_increment = new%damage(1) - old%damage(1)
     else
-      call general_update(mat, solver, s, old, new, sigma, tangent, info)
+      call kernel_update(mat, solver, s, old, new, sigma, tangent, info)
     end if
   end subroutine interlock_update
 

@@ -38,8 +38,8 @@ contains
   !> One increment with a specialised kernel. `done` is false when the kernel does not apply
   !> to this increment (a separated RIA, or an implicit wear equation the bounded iteration did
   !> not solve): the caller then takes the general path, which can also sub-increment.
-  !> wear_error (a scheme that couples the angle to the end of the step): the embedded local
-  !> error estimate of substepping, as interlock_ria:ria_step computes it.
+  !> wear_error: the embedded local error estimate of substepping, as interlock_ria:ria_step
+  !> computes it (every scheme).
   pure subroutine kernel_step(mat, solver, s, old, new, tangent, done, iterations, wear_error)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
@@ -52,7 +52,8 @@ contains
     real(dp), intent(out), optional :: wear_error
     type(plane_law_t) :: p
     real(dp) :: area, darea, sigma(2), sl(2), c, sn, gam, kg(2, 2), sg(2), theta, slope, &
-                dthds(2), dsig_dth(2), err_angle, err_traction, e, a_end, g_slip
+                dthds(2), dsig_dth(2), err_angle, err_traction, e, a_end, g_slip, wfric, slip, &
+                c_o, s_o
     integer :: k, scheme, it
 
     scheme = solver%scheme
@@ -83,15 +84,32 @@ contains
           call fixed_angle_plane(mat, a_end, g_slip, k, mat%cos0(k), mat%sin0(k), &
                                  mat%gamma_hat(k) * area, s, old, new, sigma, tangent)
         else if (scheme == scheme_explicit) then
-          ! Explicit (eq. 25): the angle frozen at its stored value within the step.
-          theta = old%theta(k)
-          call fixed_angle_plane(mat, 0.0_dp, old%damage(k) * abs(old%tauf(k)), k, cos(theta), &
-                                 sin(theta), mat%gamma_hat(k) * area, s, old, new, sigma, tangent)
+          ! Explicit (eq. 25): the angle frozen at its stored value within the step, the wear
+          ! driven by the start state's friction traction.
+          call plane_frame(mat, k, old%theta(k), c, sn)
+          g_slip = old%damage(k) * abs(old%tauf(k))
+          gam = mat%gamma_hat(k) * area
+          if (present(wear_error)) then
+            call fixed_angle_plane(mat, 0.0_dp, g_slip, k, c, sn, gam, s, old, new, sigma, &
+                                   tangent, wfric, slip, dsig_dth)
+          else
+            call fixed_angle_plane(mat, 0.0_dp, g_slip, k, c, sn, gam, s, old, new, sigma, tangent)
+          end if
           ! Explicit wear (eq. 22, 25): the angle for the next step.
           if (new%zeta(k) > old%zeta(k)) then
             call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), new%zeta(k), &
                             theta, slope)
             new%theta(k) = theta
+          end if
+          if (present(wear_error)) then
+            ! (interlock_schemes:plane_step) The traction is taken at the start angle: the error
+            ! is first order in the angle increment itself (decision D10), and in the difference
+            ! from the backward-Euler increment, which sees wear the start traction does not drive.
+            e = max(abs(new%theta(k) - old%theta(k)), min(abs(old%theta(k) - mat%thetaf_eff(k)), &
+                    abs(worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), old%theta(k)) * &
+                        (wfric - g_slip * slip))))
+            err_angle = max(err_angle, e)
+            err_traction = max(err_traction, gam * maxval(abs(dsig_dth)) * e)
           end if
         else
           theta = old%theta(k)
@@ -118,9 +136,9 @@ contains
           tangent = tangent + gam * kg
           if (present(wear_error) .and. p%zeta > old%zeta(k)) then
             ! (interlock_schemes:plane_step: backward Euler minus trapezoidal, as an angle)
+            call plane_frame(mat, k, old%theta(k), c_o, s_o)
             e = abs(theta - old%theta(k)) * abs(0.5_dp * p%wfric - 0.5_dp * old%damage(k) * &
-                start_yield(mat, cos(old%theta(k)), sin(old%theta(k)), old%s) * p%slip) / &
-                (p%zeta - old%zeta(k))
+                start_yield(mat, c_o, s_o, old%s) * p%slip) / (p%zeta - old%zeta(k))
             err_angle = max(err_angle, e)
             err_traction = max(err_traction, gam * maxval(abs(dsig_dth)) * e)
           end if
@@ -148,7 +166,8 @@ contains
   !> places, and calls in these paths cost much of an update (interlock-bench, with the damage
   !> growth and this plane as calls from the flat-plane laws: damage only 7.9 -> 9.2 ns,
   !> damage + friction 10.5 -> 19 ns). core_kernels holds all of them to the general path.
-  pure subroutine fixed_angle_plane(mat, a_end, g_slip, k, c, sn, w, s, old, new, sigma, tangent)
+  pure subroutine fixed_angle_plane(mat, a_end, g_slip, k, c, sn, w, s, old, new, sigma, tangent, &
+                                    wfric_out, slip_out, dsig_dtheta)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: a_end, g_slip   !< the wear driver a_end D |tau_f| |d sf| + g_slip |d sf|
     integer, intent(in) :: k
@@ -156,6 +175,9 @@ contains
     type(interlock_state_t), intent(in) :: old
     type(interlock_state_t), intent(inout) :: new
     real(dp), intent(inout) :: sigma(2), tangent(2, 2)
+    !> (substepping's error estimate) the plane's frictional work D |tau_f| |d sf|, its slip
+    !> |d sf| and d sigma_k / d theta at fixed s in the global frame, unweighted
+    real(dp), intent(out), optional :: wfric_out, slip_out, dsig_dtheta(2)
     real(dp) :: sl1, sl2, pos, beta, d, gd1, gd2, mu_p, slip_sign, sf, &
                 tauf, dtauf1, dtauf2, slip, kpos, kts, ls1, ls2, k11, k12, k21, k22, t11, t12, &
                 t21, t22, wc, ws, wfric, wdmg
@@ -219,6 +241,15 @@ contains
     new%sf(k) = sf
     new%theta(k) = old%theta(k)
     new%tauf(k) = tauf
+    if (present(wfric_out)) wfric_out = wfric
+    if (present(slip_out)) slip_out = slip
+    if (present(dsig_dtheta)) then
+      ! d(R^T)/d theta sigma_k + R^T K_k d s_k/d theta, d s_k/d theta = (s_kt, -s_kn)
+      t11 = k11 * sl2 - k12 * sl1
+      t21 = k21 * sl2 - k22 * sl1
+      dsig_dtheta = [-sn * ls1 - c * ls2 + (c * t11 - sn * t21), &
+                     c * ls1 - sn * ls2 + (sn * t11 + c * t21)]
+    end if
   end subroutine fixed_angle_plane
 
   !> A wearing plane with a scheme that couples the angle to the end of the step (interlock_wear:
@@ -240,22 +271,26 @@ contains
     type(wear_root_t) :: rt
     real(dp) :: thp, fp, a_end, g_start
     ! The driver G = a_end D |tau_f| |d sf| + g_start |d sf| (interlock_schemes:plane_step).
+    ! At zeta_o the angle is the stored one: no exponential (and no cosine and sine while
+    ! the plane is unworn).
+    call plane_frame(mat, k, theta, c, sn)
     a_end = 1.0_dp
     g_start = 0.0_dp
     if (solver%scheme == scheme_trapezoidal) then
       a_end = 0.5_dp
-      g_start = 0.5_dp * old%damage(k) * start_yield(mat, cos(theta), sin(theta), old%s)
+      g_start = 0.5_dp * old%damage(k) * start_yield(mat, c, sn, old%s)
     end if
-    ! At zeta_o the angle is the stored one: no exponential.
     thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), theta)
-    call wear_evaluate(mat, k, s, old, a_end, g_start, theta, thp, p, c, sn, sl, fp)
+    call wear_evaluate(mat, k, s, old, a_end, g_start, c, sn, thp, p, sl, fp)
     iterations = 0
     ok = .true.
     if (p%drv > 0.0_dp) then
       call wear_root_begin(rt, old%zeta(k), p%drv)
       do
         call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, thp)
-        call wear_evaluate(mat, k, s, old, a_end, g_start, theta, thp, p, c, sn, sl, fp)
+        c = cos(theta)
+        sn = sin(theta)
+        call wear_evaluate(mat, k, s, old, a_end, g_start, c, sn, thp, p, sl, fp)
         call wear_root_update(rt, rt%x - old%zeta(k) - p%drv, fp, solver%newton_tol, &
                               solver%newton_max_iterations)
         if (rt%done) exit
@@ -267,17 +302,16 @@ contains
     dthds = thp * [p%gdrv(1) * c - p%gdrv(2) * sn, p%gdrv(1) * sn + p%gdrv(2) * c] / fp
   end subroutine coupled_wear_plane
 
-  !> The plane at angle theta (slope thp = d theta / d zeta) and F' = 1 - thp dG/d theta of its
-  !> wear equation, dG/d theta = grad G . (s_kt, -s_kn).
-  pure subroutine wear_evaluate(mat, k, s, old, a_end, g_start, theta, thp, p, c, sn, sl, fp)
+  !> The plane at the angle of frame (c, sn) = (cos theta, sin theta), slope thp = d theta /
+  !> d zeta, and F' = 1 - thp dG/d theta of its wear equation, dG/d theta = grad G . (s_kt,
+  !> -s_kn).
+  pure subroutine wear_evaluate(mat, k, s, old, a_end, g_start, c, sn, thp, p, sl, fp)
     type(interlock_material_t), intent(in) :: mat
     integer, intent(in) :: k
-    real(dp), intent(in) :: s(2), a_end, g_start, theta, thp
+    real(dp), intent(in) :: s(2), a_end, g_start, c, sn, thp
     type(interlock_state_t), intent(in) :: old
     type(plane_law_t), intent(out) :: p
-    real(dp), intent(out) :: c, sn, sl(2), fp
-    c = cos(theta)
-    sn = sin(theta)
+    real(dp), intent(out) :: sl(2), fp
     sl = [c * s(1) + sn * s(2), -sn * s(1) + c * s(2)]
     call plane_law(mat, sl, old%beta(k), old%sf(k), old%zeta(k), old%damage(k), a_end, g_start, p)
     fp = 1.0_dp - thp * (p%gdrv(1) * sl(2) - p%gdrv(2) * sl(1))
@@ -391,6 +425,23 @@ contains
     if (s_o(1) * mat%inv_h_n < 1.0_dp) &
       mu_p = mat%mu_eff * mat%kn * max(0.0_dp, -(c * s_o(1) + sn * s_o(2)))
   end function start_yield
+
+  !> cos and sin of plane k at angle theta: while the plane is unworn (theta = theta_0 to the
+  !> bit) the material's, computed once with the same functions (the same values), else libm's.
+  !> Most planes of an FE model, and every plane while it opens, have not worn.
+  pure subroutine plane_frame(mat, k, theta, c, sn)
+    type(interlock_material_t), intent(in) :: mat
+    integer, intent(in) :: k
+    real(dp), intent(in) :: theta
+    real(dp), intent(out) :: c, sn
+    if (theta >= mat%theta_init(k) .and. theta <= mat%theta_init(k)) then
+      c = mat%cos0(k)
+      sn = mat%sin0(k)
+    else
+      c = cos(theta)
+      sn = sin(theta)
+    end if
+  end subroutine plane_frame
 
   !> A flat RIA of several planes: planes 2..n take plane 1's history (their angles stay).
   pure subroutine share_first_plane(n, old, new)
