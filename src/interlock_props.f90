@@ -5,7 +5,7 @@ module interlock_props
   use, intrinsic :: iso_fortran_env, only: int64
   use interlock_kinds, only: same_value, is_finite_bits, exponent_bits
   use interlock_material_table, only: properties, n_properties, n_required_properties, &
-      check_property, all_properties_ok, keys_in_range, property_defaults, umat_planes, umat_nstatv, statevars, &
+      check_property, all_properties_ok, key_in_range, property_defaults, umat_planes, umat_nstatv, statevars, &
       n_statevars_per_plane, format_integer, format_real, &
       prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
       prop_thetaf, prop_zeta0, prop_prefractured, prop_scheme, prop_substep_tol, prop_max_dd, &
@@ -85,7 +85,7 @@ contains
   !> `mat` is intent(inout) only so that the caller's fresh material is not initialised a
   !> second time on every call: every field the update reads is set here.
   pure subroutine props_to_material(props, mat, solver, controls, stat, message)
-    real(dp), intent(in) :: props(:)
+    real(dp), intent(in), contiguous :: props(:)
     type(interlock_material_t), intent(inout) :: mat
     type(interlock_solver_t), intent(out) :: solver
     type(umat_controls_t), intent(out) :: controls
@@ -101,8 +101,17 @@ contains
       call props_message(props, 0, message)
       return
     end if
-    v(1:n) = props
-    v(n + 1:) = property_defaults(n + 1:)
+    ! (the required ones as one block, the optional ones unrolled: cheaper than a copy of a
+    ! variable length)
+    v(1:n_required_properties) = props(1:n_required_properties)
+    !GCC$ unroll 11
+    do i = n_required_properties + 1, n_properties
+      if (i <= n) then
+        v(i) = props(i)
+      else
+        v(i) = property_defaults(i)
+      end if
+    end do
     ok = all_properties_ok(v)
     if (ok) ok = v(prop_thetaf) <= v(prop_theta0)   ! (no comparison of a NaN)
     if (.not. ok) then
@@ -202,7 +211,16 @@ contains
     ! The common case in straight comparisons: every slot within its fixed range by integer
     ! comparisons of the bits (no comparison of a NaN), then the bounds that depend on the
     ! material on the values now known finite.
-    ok = keys_in_range(umat_nstatv, statev, statev_lo_key, statev_hi_key)
+    ! (the loop unrolled: every bound a constant, one test and one branch per slot, see
+    ! key_in_range)
+    ok = .true.
+    !GCC$ unroll 22
+    do i = 1, umat_nstatv
+      if (.not. key_in_range(statev(i), statev_lo_key(i), statev_hi_key(i))) then
+        ok = .false.
+        exit
+      end if
+    end do
     if (ok .and. mat%prefractured) ok = &
       all(statev(slot_damage + 1:slot_damage + umat_planes) >= 1.0_dp) .and. &
       all(statev(slot_beta + 1:slot_beta + umat_planes) >= mat%beta_break)
