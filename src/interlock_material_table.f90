@@ -154,11 +154,8 @@ module interlock_material_table
     merge(lowest_bits, ieor(lowest_bits, huge(0_int64)), lowest_bits >= 0), lowest_bits == 0)
   integer(int64), parameter :: highest_key(n_properties) = merge(exponent_bits, &
     merge(highest_bits, ieor(highest_bits, huge(0_int64)), highest_bits >= 0), infinite_ok)
-  !> The flags and choices (the rows of kind_flag and kind_choice, integer_valued), listed for
-  !> the UMAT's check on every call (a loop over the table with a test per row costs more).
-  integer, parameter :: whole_valued(*) = [prop_prefractured, prop_scheme, prop_effect_damage, &
-    prop_effect_friction, prop_effect_interlocking, prop_effect_finite_depth, prop_effect_wear, &
-    prop_tangent]
+  !> The flags (0 or 1), checked by their bits in one test.
+  logical, parameter :: flag_row(n_properties) = properties%kind == kind_flag
   !> The defaults as a plain array (the optional properties a short PROPS leaves out).
   real(dp), parameter :: property_defaults(n_properties) = properties%default
 
@@ -245,19 +242,30 @@ contains
     end do
   end function rows_ok
 
-  !> Whether every one of the n_properties values (a whole PROPS, the optional ones that the
-  !> host left out at their defaults) is admissible (the UMAT's check on every call): the loop
-  !> over the table unrolled, so that every bound is a constant and key_in_range keeps one
-  !> test and a branch never taken on the success path; then the flags and choices whole.
+  !> Whether every value of a PROPS (n_required_properties <= size(values) <= n_properties,
+  !> checked by the caller; the optional properties the host leaves out take their defaults,
+  !> admissible by construction) is admissible (the UMAT's check on every call): the loop over
+  !> the table unrolled, so that every bound is a constant and key_in_range keeps one test and
+  !> a branch never taken on the success path (a flag by is_flag; a choice whole too).
   pure logical function all_properties_ok(values) result(ok)
-    real(dp), intent(in) :: values(n_properties)
+    real(dp), intent(in), contiguous :: values(:)
     integer :: i
     ok = .false.
     !GCC$ unroll 20
     do i = 1, n_properties
-      if (.not. key_in_range(values(i), lowest_key(i), highest_key(i))) return
+      if (i > n_required_properties) then
+        if (i > size(values)) exit
+      end if
+      if (flag_row(i)) then
+        if (.not. is_flag(values(i))) return
+      else
+        if (.not. key_in_range(values(i), lowest_key(i), highest_key(i))) return
+        if (integer_valued(i)) then
+          if (.not. is_whole(values(i))) return
+        end if
+      end if
     end do
-    ok = all(is_whole(values(whole_valued)))
+    ok = .true.
   end function all_properties_ok
 
   !> lo(i) <= key(x(i)) <= hi(i) for every i (key_in_range): a range check of any bits by
@@ -299,6 +307,15 @@ contains
       ok = bits >= lo .and. bits <= hi
     end if
   end function key_in_range
+
+  !> x is 0 or 1 (a flag), from its bits: +-0 or the bits of 1 (no comparison of a NaN).
+  elemental logical function is_flag(x)
+    real(dp), intent(in) :: x
+    integer(int64), parameter :: one_bits = transfer(1.0_dp, 0_int64)
+    integer(int64) :: bits
+    bits = transfer(x, 0_int64)
+    is_flag = iand(bits, huge(bits)) == 0_int64 .or. bits == one_bits
+  end function is_flag
 
   !> x is a whole number, for x within [0, 2^52) (a flag's or a choice's range, checked).
   elemental logical function is_whole(x)

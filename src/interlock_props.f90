@@ -91,7 +91,6 @@ contains
     type(umat_controls_t), intent(out) :: controls
     integer, intent(out) :: stat
     character(len=*), intent(out) :: message
-    real(dp) :: v(n_properties)
     integer :: i, n
     logical :: ok
 
@@ -101,40 +100,41 @@ contains
       call props_message(props, 0, message)
       return
     end if
-    ! (the required ones as one block, the optional ones unrolled: cheaper than a copy of a
-    ! variable length)
-    v(1:n_required_properties) = props(1:n_required_properties)
-    !GCC$ unroll 11
-    do i = n_required_properties + 1, n_properties
-      if (i <= n) then
-        v(i) = props(i)
-      else
-        v(i) = property_defaults(i)
-      end if
-    end do
-    ok = all_properties_ok(v)
-    if (ok) ok = v(prop_thetaf) <= v(prop_theta0)   ! (no comparison of a NaN)
+    ok = all_properties_ok(props)
+    if (ok) ok = props(prop_thetaf) <= props(prop_theta0)   ! (no comparison of a NaN)
     if (.not. ok) then
       call props_message(props, 1, message)
       return
     end if
-    mat%sigma0_n = v(prop_sigma0_n)
-    mat%sigma0_t = v(prop_sigma0_t)
-    mat%gc = v(prop_gc)
-    mat%eta = v(prop_eta)
-    mat%mu = v(prop_mu)
-    mat%h_n = v(prop_h_n)
-    mat%prefractured = v(prop_prefractured) > 0.5_dp
-    call interlock_paper_ria(mat, v(prop_theta0) * deg_to_rad, v(prop_thetaf) * deg_to_rad, &
-                             v(prop_zeta0))
+    mat%sigma0_n = props(prop_sigma0_n)
+    mat%sigma0_t = props(prop_sigma0_t)
+    mat%gc = props(prop_gc)
+    mat%eta = props(prop_eta)
+    mat%mu = props(prop_mu)
+    mat%h_n = props(prop_h_n)
+    call interlock_paper_ria(mat, props(prop_theta0) * deg_to_rad, &
+                             props(prop_thetaf) * deg_to_rad, props(prop_zeta0))
+    mat%prefractured = value(prop_prefractured) > 0.5_dp
     do i = 1, n_effects
-      mat%effect(i) = v(prop_effect_damage + i - 1) > 0.5_dp
+      mat%effect(i) = value(prop_effect_damage + i - 1) > 0.5_dp
     end do
-    solver%scheme = int(v(prop_scheme))   ! a whole number (checked): no rounding call
-    solver%substep_tol = v(prop_substep_tol)
-    controls%max_damage_increment = v(prop_max_dd)
-    controls%max_angle_increment = v(prop_max_dtheta) * deg_to_rad
+    solver%scheme = int(value(prop_scheme))   ! a whole number (checked): no rounding call
+    solver%substep_tol = value(prop_substep_tol)
+    controls%max_damage_increment = value(prop_max_dd)
+    controls%max_angle_increment = value(prop_max_dtheta) * deg_to_rad
     call interlock_material_derive(mat, stat, message)
+
+  contains
+
+    !> Optional property i: given, or its default.
+    pure real(dp) function value(i)
+      integer, intent(in) :: i
+      if (i <= n) then
+        value = props(i)
+      else
+        value = property_defaults(i)
+      end if
+    end function value
   end subroutine props_to_material
 
   !> The message of a PROPS that props_to_material refused (`what` 0: NPROPS, 1: a value).
