@@ -54,8 +54,6 @@ module interlock_material
     ! no default value, so that a material declared on every call, the UMAT's, is not filled
     ! twice: read them only from a prepared material)
     logical  :: prepared = .false.
-    !> The kernel for updates without substepping (kernel_general forces the general path).
-    integer  :: kernel = kernel_general
     real(dp) :: s0n, s0t, scn, sct
     real(dp) :: kn, kt
     real(dp) :: beta_break   !< 1/(1 - eta): equivalent displacement at D = 1
@@ -79,6 +77,8 @@ module interlock_material
     !> c/(2 eta) with c = K_n s_0n^2: decohesion energy per unit growth of beta.
     real(dp) :: inv_s0n, inv_s0t, inv_eta, inv_kt
     real(dp) :: decohesion_energy_factor
+    !> The kernel for updates without substepping (kernel_general forces the general path).
+    integer  :: kernel = kernel_general
   end type interlock_material_t
 
   !> How an update integrates.
