@@ -5,7 +5,7 @@
 !> `docs/material.md` are all generated from these two tables.
 module interlock_material_table
   use, intrinsic :: iso_fortran_env, only: int64
-  use interlock_kinds, only: dp, is_nan_value, same_value, infinite_threshold, exponent_bits
+  use interlock_kinds, only: dp, same_value, infinite_threshold, exponent_bits
   implicit none
   private
   public :: property_t, statevar_t, properties, statevars
@@ -370,7 +370,8 @@ contains
     real(dp), intent(in) :: x
     character(len=:), allocatable :: text
     character(len=32) :: buf
-    if (is_nan_value(x)) then
+    ! (NaN from the bits: a signalling NaN, which a host may pass, traps in any float test)
+    if (iand(transfer(x, 0_int64), huge(0_int64)) > exponent_bits) then
       text = 'NaN'
     else if (abs(x) > huge(1.0_dp)) then
       text = merge('+Inf', '-Inf', x > 0.0_dp)

@@ -130,9 +130,11 @@ contains
     y = x
     if (rng_uniform(rng) >= p) return
     u = rng_uniform(rng)
-    select case (rng_int(rng, 1, 12))
+    select case (rng_int(rng, 1, 13))
     case (1)
       y = ieee_value(1.0_dp, ieee_quiet_nan)
+    case (13)                                     ! signalling NaN (traps in any float test)
+      y = transfer(ior(shiftl(2047_int64, 52), 1_int64), 1.0_dp)
     case (2)
       y = ieee_value(1.0_dp, ieee_positive_inf)
     case (3)
