@@ -244,7 +244,7 @@ contains
 
   !> Whether every value of a PROPS (n_required_properties <= size(values) <= n_properties,
   !> checked by the caller; the optional properties the host leaves out take their defaults,
-  !> admissible by construction) is admissible (the UMAT's check on every call): the loop over
+  !> admissible: test_umat_table checks them) is admissible (the UMAT's check on every call): the loop over
   !> the table unrolled, so that every bound is a constant and key_in_range keeps one test and
   !> a branch never taken on the success path (a flag by is_flag; a choice whole too).
   pure logical function all_properties_ok(values) result(ok)

@@ -52,7 +52,7 @@ module interlock_props
     [0.0_dp, 0.0_dp, 0.0_dp], [state_bound, state_bound, state_bound], &
     [state_bound, state_bound, state_bound], 1.0_dp]
 
-  !> statev_lo and statev_hi as ordered keys (interlock_material_table:keys_in_range), the angles
+  !> statev_lo and statev_hi as ordered keys (interlock_material_table:key_in_range), the angles
   !> within +-state_bound (their ranges depend on the material: statev_bad_index compares them
   !> after these), the flag 1 (statev_bad_index has taken the uninitialised STATEV before); a
   !> lower bound 0 admits -0 (key -1), as the comparison -0 >= 0 does.
