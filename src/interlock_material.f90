@@ -50,30 +50,33 @@ module interlock_material
     real(dp) :: thetaf(max_planes) = 0.0_dp     !< final inclinations [rad]
     real(dp) :: zeta0(max_planes) = huge(1.0_dp) !< wear energy scales [N/mm]
     logical  :: effect(n_effects) = .true.       !< user switches, see effect_*
-    ! --- derived by interlock_material_prepare
+    ! --- derived by interlock_material_prepare (interlock_material_derive sets every one;
+    ! no default value, so that a material declared on every call, the UMAT's, is not filled
+    ! twice: read them only from a prepared material)
     logical  :: prepared = .false.
-    real(dp) :: s0n = 0.0_dp, s0t = 0.0_dp, scn = 0.0_dp, sct = 0.0_dp
-    real(dp) :: kn = 0.0_dp, kt = 0.0_dp
-    real(dp) :: beta_break = 0.0_dp   !< 1/(1 - eta): equivalent displacement at D = 1
-    real(dp) :: mu_eff = 0.0_dp       !< mu, or 0 with friction off
-    real(dp) :: inv_h_n = 0.0_dp      !< 1/H_N, or 0 with infinite depth
-    real(dp) :: d_frozen = 0.0_dp     !< the constant damage when damage does not evolve
+    real(dp) :: s0n, s0t, scn, sct
+    real(dp) :: kn, kt
+    real(dp) :: beta_break   !< 1/(1 - eta): equivalent displacement at D = 1
+    real(dp) :: mu_eff       !< mu, or 0 with friction off
+    real(dp) :: inv_h_n      !< 1/H_N, or 0 with infinite depth
+    real(dp) :: d_frozen     !< the constant damage when damage does not evolve
     !> the damage law runs (damage on): beta is the running maximum (SPEC 4.3), also on a
     !> pre-fractured interface, whose D stays 1 since beta starts at 1/(1 - eta)
-    logical  :: use_damage = .true.
-    logical  :: use_friction = .true. !< mu_eff > 0
-    logical  :: use_depth = .true.    !< finite H_N
-    logical  :: use_wear = .true.     !< some plane's angle can change
-    logical  :: flat = .false.        !< every plane flat: one plane is computed for all
-    logical  :: plane_wears(max_planes) = .false.
-    real(dp) :: theta_init(max_planes) = 0.0_dp !< effective initial angle (0 when interlocking off)
-    real(dp) :: thetaf_eff(max_planes) = 0.0_dp
-    real(dp) :: inv_zeta0(max_planes) = 0.0_dp
-    real(dp) :: cos0(max_planes) = 1.0_dp, sin0(max_planes) = 0.0_dp
+    logical  :: use_damage
+    logical  :: use_friction  !< mu_eff > 0
+    logical  :: use_depth     !< finite H_N
+    logical  :: use_wear      !< some plane's angle can change
+    logical  :: flat          !< every plane flat: one plane is computed for all
+    !> per plane (planes beyond n_planes: flat, not wearing)
+    logical  :: plane_wears(max_planes)
+    real(dp) :: theta_init(max_planes)  !< effective initial angle (0 when interlocking off)
+    real(dp) :: thetaf_eff(max_planes)
+    real(dp) :: inv_zeta0(max_planes)
+    real(dp) :: cos0(max_planes), sin0(max_planes)
     !> Inverses for the kernels (a multiplication instead of a division on the hot path), and
     !> c/(2 eta) with c = K_n s_0n^2: decohesion energy per unit growth of beta.
-    real(dp) :: inv_s0n = 0.0_dp, inv_s0t = 0.0_dp, inv_eta = 0.0_dp, inv_kt = 0.0_dp
-    real(dp) :: decohesion_energy_factor = 0.0_dp
+    real(dp) :: inv_s0n, inv_s0t, inv_eta, inv_kt
+    real(dp) :: decohesion_energy_factor
     !> The kernel for updates without substepping (kernel_general forces the general path).
     integer  :: kernel = kernel_general
   end type interlock_material_t
@@ -276,6 +279,11 @@ contains
       end if
     end do
     mat%plane_wears(mat%n_planes + 1:) = .false.
+    mat%theta_init(mat%n_planes + 1:) = 0.0_dp
+    mat%thetaf_eff(mat%n_planes + 1:) = 0.0_dp
+    mat%inv_zeta0(mat%n_planes + 1:) = 0.0_dp
+    mat%cos0(mat%n_planes + 1:) = 1.0_dp
+    mat%sin0(mat%n_planes + 1:) = 0.0_dp
     mat%use_wear = any(mat%plane_wears(1:mat%n_planes))
     mat%flat = all(equal(mat%theta_init(1:mat%n_planes), 0.0_dp)) .and. .not. mat%use_wear
     if (mat%flat .and. .not. mat%use_depth) then

@@ -5,7 +5,7 @@
 !> `docs/material.md` are all generated from these two tables.
 module interlock_material_table
   use, intrinsic :: iso_fortran_env, only: int64
-  use interlock_kinds, only: dp, is_nan_value, same_value, infinite_threshold, exponent_bits
+  use interlock_kinds, only: dp, same_value, infinite_threshold, exponent_bits
   implicit none
   private
   public :: property_t, statevar_t, properties, statevars
@@ -13,7 +13,7 @@ module interlock_material_table
   public :: umat_planes, umat_nstatv, property_index, statevar_index
   public :: check_property, property_ok, properties_ok, format_range, format_real, format_integer
   public :: kind_real, kind_flag, kind_choice
-  public :: keys_in_range, all_properties_ok, property_defaults
+  public :: keys_in_range, key_in_range, all_properties_ok, property_defaults
   public :: prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
             prop_thetaf, prop_zeta0, prop_prefractured, prop_scheme, prop_substep_tol, &
             prop_max_dd, prop_max_dtheta, prop_effect_damage, prop_effect_friction, &
@@ -154,11 +154,8 @@ module interlock_material_table
     merge(lowest_bits, ieor(lowest_bits, huge(0_int64)), lowest_bits >= 0), lowest_bits == 0)
   integer(int64), parameter :: highest_key(n_properties) = merge(exponent_bits, &
     merge(highest_bits, ieor(highest_bits, huge(0_int64)), highest_bits >= 0), infinite_ok)
-  !> The flags and choices (the rows of kind_flag and kind_choice, integer_valued), listed for
-  !> the UMAT's check on every call (a loop over the table with a test per row costs more).
-  integer, parameter :: whole_valued(*) = [prop_prefractured, prop_scheme, prop_effect_damage, &
-    prop_effect_friction, prop_effect_interlocking, prop_effect_finite_depth, prop_effect_wear, &
-    prop_tangent]
+  !> The flags (0 or 1), checked by their bits in one test.
+  logical, parameter :: flag_row(n_properties) = properties%kind == kind_flag
   !> The defaults as a plain array (the optional properties a short PROPS leaves out).
   real(dp), parameter :: property_defaults(n_properties) = properties%default
 
@@ -245,34 +242,80 @@ contains
     end do
   end function rows_ok
 
-  !> Whether every one of the n_properties values (a whole PROPS, the optional ones that the
-  !> host left out at their defaults) is admissible: rows_ok for the fixed length, which the
-  !> compiler unrolls (the UMAT's check on every call).
+  !> Whether every value of a PROPS (n_required_properties <= size(values) <= n_properties,
+  !> checked by the caller; the optional properties the host leaves out take their defaults,
+  !> admissible: test_umat_table checks them) is admissible (the UMAT's check on every call): the loop over
+  !> the table unrolled, so that every bound is a constant and key_in_range keeps one test and
+  !> a branch never taken on the success path (a flag by is_flag; a choice whole too).
   pure logical function all_properties_ok(values) result(ok)
-    real(dp), intent(in) :: values(n_properties)
-    ok = keys_in_range(n_properties, values, lowest_key, highest_key)
-    if (ok) ok = all(is_whole(values(whole_valued)))
+    real(dp), intent(in), contiguous :: values(:)
+    integer :: i
+    ok = .false.
+    !GCC$ unroll 20
+    do i = 1, n_properties
+      if (i > n_required_properties) then
+        if (i > size(values)) exit
+      end if
+      if (flag_row(i)) then
+        if (.not. is_flag(values(i))) return
+      else
+        if (.not. key_in_range(values(i), lowest_key(i), highest_key(i))) return
+        if (integer_valued(i)) then
+          if (.not. is_whole(values(i))) return
+        end if
+      end if
+    end do
+    ok = .true.
   end function all_properties_ok
 
-  !> lo(i) <= key(x(i)) <= hi(i) for every i, with key(x) the bits of x as an integer that
-  !> orders as x does (IEEE 754 doubles: a non-negative x as its bits, a negative one with
-  !> every bit but the sign flipped): -0 just below +0, NaN beyond the infinities (+NaN above
-  !> +Inf, -NaN below -Inf). A range check of any bits by integer operations only (no
-  !> comparison of a NaN), counted, not branched.
+  !> lo(i) <= key(x(i)) <= hi(i) for every i (key_in_range): a range check of any bits by
+  !> integer operations only (no comparison of a NaN), counted, not branched.
   pure logical function keys_in_range(n, x, lo, hi) result(ok)
     integer, intent(in) :: n
     real(dp), intent(in) :: x(n)
     integer(int64), intent(in) :: lo(n), hi(n)
-    integer(int64) :: key
     integer :: i, n_out
     n_out = 0
     do i = 1, n
-      key = transfer(x(i), 0_int64)
-      key = ieor(key, iand(shifta(key, 63), huge(key)))
-      n_out = n_out + merge(1, 0, key < lo(i) .or. key > hi(i))
+      n_out = n_out + merge(0, 1, key_in_range(x(i), lo(i), hi(i)))
     end do
     ok = n_out == 0
   end function keys_in_range
+
+  !> lo <= key(x) <= hi, with key(x) the bits of x as an integer that orders as x does (IEEE
+  !> 754 doubles: a non-negative x as its bits, a negative one with every bit but the sign
+  !> flipped): -0 just below +0 (key -1), NaN beyond the infinities (+NaN above +Inf, -NaN
+  !> below -Inf). Integer operations only: no comparison of a NaN. The test is the cheapest
+  !> for the range's shape; with constant bounds (an unrolled loop over a table) the compiler
+  !> keeps only that one: a symmetric range |x| <= B on the magnitude's bits; a range of
+  !> non-negative keys on the bits themselves (a negative number's bits are negative as an
+  !> integer); a range from -0 likewise, -0 admitted by its pattern; any other by the key.
+  elemental logical function key_in_range(x, lo, hi) result(ok)
+    real(dp), intent(in) :: x
+    integer(int64), intent(in) :: lo, hi
+    integer(int64), parameter :: minus_zero = -huge(0_int64) - 1_int64
+    integer(int64) :: bits
+    bits = transfer(x, 0_int64)
+    if (lo == -hi - 1_int64) then
+      ok = iand(bits, huge(bits)) <= hi
+    else if (lo >= 0_int64) then
+      ok = bits >= lo .and. bits <= hi
+    else if (lo == -1_int64) then
+      ok = ble(bits, hi) .or. bits == minus_zero   ! (unsigned: a negative number's bits beyond)
+    else
+      bits = ieor(bits, iand(shifta(bits, 63), huge(bits)))
+      ok = bits >= lo .and. bits <= hi
+    end if
+  end function key_in_range
+
+  !> x is 0 or 1 (a flag), from its bits: +-0 or the bits of 1 (no comparison of a NaN).
+  elemental logical function is_flag(x)
+    real(dp), intent(in) :: x
+    integer(int64), parameter :: one_bits = transfer(1.0_dp, 0_int64)
+    integer(int64) :: bits
+    bits = transfer(x, 0_int64)
+    is_flag = iand(bits, huge(bits)) == 0_int64 .or. bits == one_bits
+  end function is_flag
 
   !> x is a whole number, for x within [0, 2^52) (a flag's or a choice's range, checked).
   elemental logical function is_whole(x)
@@ -327,7 +370,8 @@ contains
     real(dp), intent(in) :: x
     character(len=:), allocatable :: text
     character(len=32) :: buf
-    if (is_nan_value(x)) then
+    ! (NaN from the bits: a signalling NaN, which a host may pass, traps in any float test)
+    if (iand(transfer(x, 0_int64), huge(0_int64)) > exponent_bits) then
       text = 'NaN'
     else if (abs(x) > huge(1.0_dp)) then
       text = merge('+Inf', '-Inf', x > 0.0_dp)

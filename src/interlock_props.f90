@@ -5,7 +5,7 @@ module interlock_props
   use, intrinsic :: iso_fortran_env, only: int64
   use interlock_kinds, only: same_value, is_finite_bits, exponent_bits
   use interlock_material_table, only: properties, n_properties, n_required_properties, &
-      check_property, all_properties_ok, keys_in_range, property_defaults, umat_planes, umat_nstatv, statevars, &
+      check_property, all_properties_ok, key_in_range, property_defaults, umat_planes, umat_nstatv, statevars, &
       n_statevars_per_plane, format_integer, format_real, &
       prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
       prop_thetaf, prop_zeta0, prop_prefractured, prop_scheme, prop_substep_tol, prop_max_dd, &
@@ -52,7 +52,7 @@ module interlock_props
     [0.0_dp, 0.0_dp, 0.0_dp], [state_bound, state_bound, state_bound], &
     [state_bound, state_bound, state_bound], 1.0_dp]
 
-  !> statev_lo and statev_hi as ordered keys (interlock_material_table:keys_in_range), the angles
+  !> statev_lo and statev_hi as ordered keys (interlock_material_table:key_in_range), the angles
   !> within +-state_bound (their ranges depend on the material: statev_bad_index compares them
   !> after these), the flag 1 (statev_bad_index has taken the uninitialised STATEV before); a
   !> lower bound 0 admits -0 (key -1), as the comparison -0 >= 0 does.
@@ -85,13 +85,12 @@ contains
   !> `mat` is intent(inout) only so that the caller's fresh material is not initialised a
   !> second time on every call: every field the update reads is set here.
   pure subroutine props_to_material(props, mat, solver, controls, stat, message)
-    real(dp), intent(in) :: props(:)
+    real(dp), intent(in), contiguous :: props(:)
     type(interlock_material_t), intent(inout) :: mat
     type(interlock_solver_t), intent(out) :: solver
     type(umat_controls_t), intent(out) :: controls
     integer, intent(out) :: stat
     character(len=*), intent(out) :: message
-    real(dp) :: v(n_properties)
     integer :: i, n
     logical :: ok
 
@@ -101,31 +100,41 @@ contains
       call props_message(props, 0, message)
       return
     end if
-    v(1:n) = props
-    v(n + 1:) = property_defaults(n + 1:)
-    ok = all_properties_ok(v)
-    if (ok) ok = v(prop_thetaf) <= v(prop_theta0)   ! (no comparison of a NaN)
+    ok = all_properties_ok(props)
+    if (ok) ok = props(prop_thetaf) <= props(prop_theta0)   ! (no comparison of a NaN)
     if (.not. ok) then
       call props_message(props, 1, message)
       return
     end if
-    mat%sigma0_n = v(prop_sigma0_n)
-    mat%sigma0_t = v(prop_sigma0_t)
-    mat%gc = v(prop_gc)
-    mat%eta = v(prop_eta)
-    mat%mu = v(prop_mu)
-    mat%h_n = v(prop_h_n)
-    mat%prefractured = v(prop_prefractured) > 0.5_dp
-    call interlock_paper_ria(mat, v(prop_theta0) * deg_to_rad, v(prop_thetaf) * deg_to_rad, &
-                             v(prop_zeta0))
+    mat%sigma0_n = props(prop_sigma0_n)
+    mat%sigma0_t = props(prop_sigma0_t)
+    mat%gc = props(prop_gc)
+    mat%eta = props(prop_eta)
+    mat%mu = props(prop_mu)
+    mat%h_n = props(prop_h_n)
+    call interlock_paper_ria(mat, props(prop_theta0) * deg_to_rad, &
+                             props(prop_thetaf) * deg_to_rad, props(prop_zeta0))
+    mat%prefractured = value(prop_prefractured) > 0.5_dp
     do i = 1, n_effects
-      mat%effect(i) = v(prop_effect_damage + i - 1) > 0.5_dp
+      mat%effect(i) = value(prop_effect_damage + i - 1) > 0.5_dp
     end do
-    solver%scheme = int(v(prop_scheme))   ! a whole number (checked): no rounding call
-    solver%substep_tol = v(prop_substep_tol)
-    controls%max_damage_increment = v(prop_max_dd)
-    controls%max_angle_increment = v(prop_max_dtheta) * deg_to_rad
+    solver%scheme = int(value(prop_scheme))   ! a whole number (checked): no rounding call
+    solver%substep_tol = value(prop_substep_tol)
+    controls%max_damage_increment = value(prop_max_dd)
+    controls%max_angle_increment = value(prop_max_dtheta) * deg_to_rad
     call interlock_material_derive(mat, stat, message)
+
+  contains
+
+    !> Optional property i: given, or its default.
+    pure real(dp) function value(i)
+      integer, intent(in) :: i
+      if (i <= n) then
+        value = props(i)
+      else
+        value = property_defaults(i)
+      end if
+    end function value
   end subroutine props_to_material
 
   !> The message of a PROPS that props_to_material refused (`what` 0: NPROPS, 1: a value).
@@ -202,7 +211,16 @@ contains
     ! The common case in straight comparisons: every slot within its fixed range by integer
     ! comparisons of the bits (no comparison of a NaN), then the bounds that depend on the
     ! material on the values now known finite.
-    ok = keys_in_range(umat_nstatv, statev, statev_lo_key, statev_hi_key)
+    ! (the loop unrolled: every bound a constant, one test and one branch per slot, see
+    ! key_in_range)
+    ok = .true.
+    !GCC$ unroll 22
+    do i = 1, umat_nstatv
+      if (.not. key_in_range(statev(i), statev_lo_key(i), statev_hi_key(i))) then
+        ok = .false.
+        exit
+      end if
+    end do
     if (ok .and. mat%prefractured) ok = &
       all(statev(slot_damage + 1:slot_damage + umat_planes) >= 1.0_dp) .and. &
       all(statev(slot_beta + 1:slot_beta + umat_planes) >= mat%beta_break)

@@ -8,13 +8,17 @@ module interlock_state
   private
   public :: interlock_state_t, interlock_state_init
 
+  !> The per-plane values have no default value (interlock_state_init sets every one, the
+  !> update every one of the material's planes), so that a state declared on every call, the
+  !> UMAT's, is not filled twice; the values of planes beyond the material's n_planes are
+  !> defined only by interlock_state_init.
   type :: interlock_state_t
-    real(dp), dimension(max_planes) :: damage = 0.0_dp  !< D_k [-]
-    real(dp), dimension(max_planes) :: beta = 0.0_dp    !< history max of equivalent displacement [-]
-    real(dp), dimension(max_planes) :: sf = 0.0_dp      !< frictional slip [mm]
-    real(dp), dimension(max_planes) :: zeta = 0.0_dp    !< frictional work [N/mm]
-    real(dp), dimension(max_planes) :: theta = 0.0_dp   !< inclination [rad]
-    real(dp), dimension(max_planes) :: tauf = 0.0_dp    !< friction traction K_t (s_kt - sf_k) [MPa]
+    real(dp), dimension(max_planes) :: damage  !< D_k [-]
+    real(dp), dimension(max_planes) :: beta    !< history max of equivalent displacement [-]
+    real(dp), dimension(max_planes) :: sf      !< frictional slip [mm]
+    real(dp), dimension(max_planes) :: zeta    !< frictional work [N/mm]
+    real(dp), dimension(max_planes) :: theta   !< inclination [rad]
+    real(dp), dimension(max_planes) :: tauf    !< friction traction K_t (s_kt - sf_k) [MPa]
     real(dp) :: s(2) = 0.0_dp       !< relative displacement (normal, tangential) [mm]
     real(dp) :: sigma(2) = 0.0_dp   !< traction (normal, tangential) [MPa]
     real(dp) :: work = 0.0_dp            !< work done on the interface [N/mm]
@@ -29,7 +33,12 @@ contains
   pure subroutine interlock_state_init(mat, state)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_state_t), intent(out) :: state
+    state%damage = 0.0_dp
+    state%beta = 0.0_dp
+    state%sf = 0.0_dp
+    state%zeta = 0.0_dp
     state%theta = mat%theta_init
+    state%tauf = 0.0_dp
     if (mat%prefractured) then
       state%damage(1:mat%n_planes) = 1.0_dp
       state%beta(1:mat%n_planes) = mat%beta_break

@@ -10,10 +10,10 @@
 !>   interlock-fuzz --garbage N [--seed S]
 !>
 !> With --garbage, N calls of the external UMAT with garbage mixed into valid input instead:
-!> NaN, +-Inf, denormals, huge and out-of-range values in PROPS, STATEV, STRESS, STRAN and
-!> DSTRAN. Every call must either be rejected (PNEWDT < 1, STRESS, STATEV, DDSDDE, SSE and SCD
-!> untouched, one message line) or return finite outputs; in the Debug build (FP traps on
-!> invalid, zero, overflow) any trap ends the run.
+!> NaN (quiet and signalling), +-Inf, denormals, huge and out-of-range values in PROPS, STATEV,
+!> STRESS, STRAN and DSTRAN. Every call must either be rejected (PNEWDT < 1, STRESS, STATEV,
+!> DDSDDE, SSE and SCD untouched, one message line) or return finite outputs; in the Debug
+!> build (FP traps on invalid, zero, overflow) any trap ends the run.
 !>
 !> Exit status 0 when no invariant, tangent or status failure was found; 2 on a usage error (the
 !> usage on stderr).
@@ -130,9 +130,11 @@ contains
     y = x
     if (rng_uniform(rng) >= p) return
     u = rng_uniform(rng)
-    select case (rng_int(rng, 1, 12))
+    select case (rng_int(rng, 1, 13))
     case (1)
       y = ieee_value(1.0_dp, ieee_quiet_nan)
+    case (13)                                     ! signalling NaN (traps in any float test)
+      y = transfer(ior(shiftl(2047_int64, 52), 1_int64), 1.0_dp)
     case (2)
       y = ieee_value(1.0_dp, ieee_positive_inf)
     case (3)
