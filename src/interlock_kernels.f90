@@ -20,7 +20,7 @@ module interlock_kernels
   use interlock_friction, only: friction_step
   implicit none
   private
-  public :: kernel_step, share_first_plane, start_yield, plane_frame
+  public :: kernel_step, share_first_plane, start_yield, plane_frame, plane_law_t, plane_law
 
   !> The law of one microplane in its own frame over one step, with d(traction)/d(s_kn, s_kt).
   type :: plane_law_t

@@ -12,7 +12,7 @@ module interlock_schemes
   use interlock_microplane, only: local_t, microplane_update
   use interlock_wear, only: worn_angle, worn_angle_slope, wear_root_t, wear_root_begin, &
       wear_root_update
-  use interlock_kernels, only: plane_frame
+  use interlock_kernels, only: plane_frame, plane_law_t, plane_law
   implicit none
   private
   public :: plane_t, plane_step
@@ -89,8 +89,8 @@ contains
     if (coupled .and. mat%plane_wears(k)) then
       c = c_start
       sn = sn_start
-      call solve_wear(mat, solver, k, s, beta_o, sf_o, zeta_o, theta_o, a_end, g_start, r, &
-                      p%zeta, p%theta, c, sn, sl, thp, fp, p%iterations, p%ok)
+      call solve_wear(mat, solver, k, s, beta_o, sf_o, zeta_o, dmg_o, theta_o, a_end, g_start, &
+                      r, p%zeta, p%theta, c, sn, sl, thp, fp, p%iterations, p%ok)
       if (.not. p%ok) return
     else
       p%theta = theta_o
@@ -118,7 +118,8 @@ contains
       ! zeta = zeta_o + G(w, theta(zeta)): implicit differentiation, d zeta/d w = (dG/dw)/F'
       ! (F' = 1 and thp = 0 where the angle is constant).
       gdrv = a_end * r%gwdrv + g_start * r%gslip
-      gz(1:2) = (matmul(gdrv(1:2), rotation(c, sn)) + r%slip * dgs(1:2)) / fp
+      gz(1) = (gdrv(1) * c - gdrv(2) * sn + r%slip * dgs(1)) / fp
+      gz(2) = (gdrv(1) * sn + gdrv(2) * c + r%slip * dgs(2)) / fp
       if (ncol > 2) then
         gz(3:4) = gdrv(3:4) + r%slip * dgs(3:4)
         gz(5) = 1.0_dp + r%slip * dgs(5)
@@ -227,9 +228,10 @@ contains
   end subroutine trapezoidal_start
 
   !> g . dv/dw for a row g = d(.)/dv, v = (s_kn, s_kt, beta_o, sf_o), w = (s_N, s_T, beta_o,
-  !> sf_o, zeta_o, tauf_o): dv/dw = P + dv/dtheta (x) dtheta/dw with P the rotation R in
-  !> columns 1:2 and the identity in 3:4 (columns beyond ncol: 0, as dthw's). The products
-  !> written out: this is most of the chain of a sub-increment.
+  !> sf_o, zeta_o, tauf_o): dv/dw = P + dv/dtheta (x) dtheta/dw with P the rotation
+  !> R = d(s_kn, s_kt)/d(s_N, s_T) = [[c, sn], [-sn, c]] in columns 1:2 and the identity in 3:4
+  !> (columns beyond ncol: 0, as dthw's). The products written out: most of the chain of a
+  !> sub-increment.
   pure function chain_row(g, c, sn, dsl_dth, dthw, ncol) result(row)
     real(dp), intent(in) :: g(4), c, sn, dsl_dth(2), dthw(6)
     integer, intent(in) :: ncol
@@ -243,74 +245,77 @@ contains
     end if
   end function chain_row
 
-  !> R(theta) = [[c, s], [-s, c]]: d(s_kn, s_kt)/d(s_N, s_T).
-  pure function rotation(c, sn) result(rot)
-    real(dp), intent(in) :: c, sn
-    real(dp) :: rot(2, 2)
-    rot(1, :) = [c, sn]
-    rot(2, :) = [-sn, c]
-  end function rotation
-
   !> Coupled wear of one plane: F(zeta) = zeta - zeta_o - G(theta(zeta)) = 0, with the driver
   !> G = a_end D |tau_f| |sf - sf_o| + g_start |sf - sf_o| evaluated at the end of the step
   !> (backward Euler: a_end = 1, g_start = 0; trapezoidal: 1/2 and D_o |tauf_o| / 2).
   !> F(zeta_o) = -G <= 0; the root is bracketed from zeta_o upwards and found by Newton's
-  !> method safeguarded by bisection. (c, sn): in, the frame of theta_o; out, of the root.
-  pure subroutine solve_wear(mat, solver, k, s, beta_o, sf_o, zeta_o, theta_o, a_end, g_start, &
-                             r, zeta, theta, c, sn, sl, thp, fp, iterations, ok)
+  !> method safeguarded by bisection. (c, sn): in, the frame of theta_o; out, of the root. The
+  !> iterates need F and F' only: the kernels' scalar plane law (interlock_kernels:plane_law,
+  !> the same values to round-off); the law with its gradients (microplane_update), which the
+  !> chain needs, is evaluated once, at the root.
+  pure subroutine solve_wear(mat, solver, k, s, beta_o, sf_o, zeta_o, dmg_o, theta_o, a_end, &
+                             g_start, r, zeta, theta, c, sn, sl, thp, fp, iterations, ok)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     integer, intent(in) :: k
-    real(dp), intent(in) :: s(2), beta_o, sf_o, zeta_o, theta_o, a_end, g_start
+    real(dp), intent(in) :: s(2), beta_o, sf_o, zeta_o, dmg_o, theta_o, a_end, g_start
     type(local_t), intent(out) :: r
     real(dp), intent(inout) :: c, sn
     real(dp), intent(out) :: zeta, theta, sl(2), thp, fp
     integer, intent(out) :: iterations
     logical, intent(out) :: ok
     type(wear_root_t) :: rt
-    real(dp) :: f
+    real(dp) :: f, dmg
 
     ok = .true.
     iterations = 0
+    ! The damage the general law uses where it does not evolve.
+    dmg = merge(dmg_o, mat%d_frozen, mat%use_damage)
     ! At zeta_o: theta = theta_o (stored), no exponential, its frame given.
     theta = theta_o
     thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), theta_o)
-    call wear_residual(mat, k, s, beta_o, sf_o, zeta_o, a_end, g_start, zeta_o, .false., theta, &
-                       thp, r, c, sn, sl, f, fp)
+    call wear_residual(mat, k, s, beta_o, sf_o, zeta_o, dmg, a_end, g_start, zeta_o, .false., &
+                       theta, thp, c, sn, sl, f)
     zeta = zeta_o
-    if (.not. (-f > 0.0_dp)) return      ! no frictional work: zeta stays, F = 0 exactly
-    call wear_root_begin(rt, zeta_o, -f)
-    do
-      call wear_residual(mat, k, s, beta_o, sf_o, zeta_o, a_end, g_start, rt%x, .true., theta, &
-                         thp, r, c, sn, sl, f, fp)
-      call wear_root_update(rt, f, fp, solver%newton_tol, solver%newton_max_iterations)
-      if (rt%done) exit
-    end do
-    zeta = rt%x
-    iterations = rt%iterations
-    ok = rt%ok
+    if (-f > 0.0_dp) then
+      ! (else no frictional work: zeta stays, F = 0 exactly)
+      call wear_root_begin(rt, zeta_o, -f)
+      do
+        call wear_residual(mat, k, s, beta_o, sf_o, zeta_o, dmg, a_end, g_start, rt%x, .true., &
+                           theta, thp, c, sn, sl, f, fp)
+        call wear_root_update(rt, f, fp, solver%newton_tol, solver%newton_max_iterations)
+        if (rt%done) exit
+      end do
+      zeta = rt%x
+      iterations = rt%iterations
+      ok = rt%ok
+    end if
+    call microplane_update(mat, sl, beta_o, sf_o, mat%d_frozen, r)
+    fp = 1.0_dp - thp * dot_product(a_end * r%gwdrv(1:2) + g_start * r%gslip(1:2), &
+                                    dlocal_dtheta(sl))
   end subroutine solve_wear
 
   !> F(z) = z - zeta_o - G(theta(z)) and F'(z) for plane k (theta, its slope and its frame
   !> (c, sn) kept as given when `update_angle` is false: they are the start-of-step values).
-  pure subroutine wear_residual(mat, k, s, beta_o, sf_o, zeta_o, a_end, g_start, z, update_angle, &
-                                theta, thp, r, c, sn, sl, f, fp)
+  pure subroutine wear_residual(mat, k, s, beta_o, sf_o, zeta_o, dmg_o, a_end, g_start, z, &
+                                update_angle, theta, thp, c, sn, sl, f, fp)
     type(interlock_material_t), intent(in) :: mat
     integer, intent(in) :: k
-    real(dp), intent(in) :: s(2), beta_o, sf_o, zeta_o, a_end, g_start, z
+    real(dp), intent(in) :: s(2), beta_o, sf_o, zeta_o, dmg_o, a_end, g_start, z
     logical, intent(in) :: update_angle
     real(dp), intent(inout) :: theta, thp, c, sn
-    type(local_t), intent(out) :: r
-    real(dp), intent(out) :: sl(2), f, fp
+    real(dp), intent(out) :: sl(2), f
+    real(dp), intent(out), optional :: fp
+    type(plane_law_t) :: q
     if (update_angle) then
       call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), z, theta, thp)
       c = cos(theta)
       sn = sin(theta)
     end if
     call to_local(c, sn, s, sl)
-    call microplane_update(mat, sl, beta_o, sf_o, mat%d_frozen, r)
-    f = z - zeta_o - (a_end * r%wdrv + g_start * r%slip)
-    fp = 1.0_dp - thp * dot_product(a_end * r%gwdrv(1:2) + g_start * r%gslip(1:2), dlocal_dtheta(sl))
+    call plane_law(mat, sl, beta_o, sf_o, zeta_o, dmg_o, a_end, g_start, q)
+    f = z - zeta_o - q%drv
+    if (present(fp)) fp = 1.0_dp - thp * dot_product(q%gdrv, dlocal_dtheta(sl))
   end subroutine wear_residual
 
 end module interlock_schemes
