@@ -20,7 +20,7 @@ module interlock_kernels
   use interlock_friction, only: friction_step
   implicit none
   private
-  public :: kernel_step, share_first_plane, start_yield
+  public :: kernel_step, share_first_plane, start_yield, plane_frame, plane_law_t, plane_law
 
   !> The law of one microplane in its own frame over one step, with d(traction)/d(s_kn, s_kt).
   type :: plane_law_t
@@ -428,7 +428,8 @@ contains
 
   !> cos and sin of plane k at angle theta: while the plane is unworn (theta = theta_0 to the
   !> bit) the material's, computed once with the same functions (the same values), else libm's.
-  !> Most planes of an FE model, and every plane while it opens, have not worn.
+  !> Most planes of an FE model, and every plane while it opens, have not worn. (Also the start
+  !> frame of the general path's planes, interlock_schemes:plane_step.)
   pure subroutine plane_frame(mat, k, theta, c, sn)
     type(interlock_material_t), intent(in) :: mat
     integer, intent(in) :: k

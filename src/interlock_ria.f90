@@ -17,7 +17,8 @@ contains
   !> Without `jac_in`: `tangent` = d sigma / d s at fixed start state.
   !> With `jac_in` (substepping): s = s_start + alpha (s_end - s_start) and `jac_in(:,:,k)` =
   !> d q_old,k / d s_end for q = (beta, sf, zeta, tauf); then `tangent` = d sigma / d s_end and
-  !> `jac_out` = d q_new / d s_end, so that the chain over sub-increments stays exact.
+  !> `jac_out` = d q_new / d s_end, so that the chain over sub-increments stays exact (planes
+  !> 1..n_planes only: the others are not set).
   pure subroutine ria_step(mat, solver, s, old, new, tangent, iterations, ok, jac_in, alpha, &
                            jac_out, alpha_start, wear_error)
     type(interlock_material_t), intent(in) :: mat
@@ -59,7 +60,6 @@ contains
     iterations = 0
     sigma = 0.0_dp
     tangent = 0.0_dp
-    if (chain) jac_out = 0.0_dp
     err_angle = 0.0_dp
     err_traction = 0.0_dp
     new%stored = 0.0_dp
@@ -77,6 +77,7 @@ contains
         end if
         new%tauf(k) = 0.0_dp
         if (chain) then
+          jac_out(:, :, k) = 0.0_dp
           if (old%beta(k) >= mat%beta_break .or. .not. mat%use_damage) then
             jac_out(1, :, k) = jac_in(1, :, k)
           end if
