@@ -13,7 +13,7 @@ module interlock_props
       sv_damage, sv_beta, sv_frictional_slip, sv_zeta, sv_theta, sv_friction_traction, &
       sv_work, sv_damage_dissipation, sv_friction_dissipation, sv_initialized
   use interlock_material, only: interlock_material_t, interlock_solver_t, &
-      interlock_material_derive, interlock_paper_ria, n_effects
+      interlock_paper_material_derive, n_effects
   use interlock_state, only: interlock_state_t, interlock_state_init
   use interlock_status, only: status_ok, status_bad_input
   implicit none
@@ -112,8 +112,6 @@ contains
     mat%eta = props(prop_eta)
     mat%mu = props(prop_mu)
     mat%h_n = props(prop_h_n)
-    call interlock_paper_ria(mat, props(prop_theta0) * deg_to_rad, &
-                             props(prop_thetaf) * deg_to_rad, props(prop_zeta0))
     mat%prefractured = value(prop_prefractured) > 0.5_dp
     do i = 1, n_effects
       mat%effect(i) = value(prop_effect_damage + i - 1) > 0.5_dp
@@ -122,7 +120,10 @@ contains
     solver%substep_tol = value(prop_substep_tol)
     controls%max_damage_increment = value(prop_max_dd)
     controls%max_angle_increment = value(prop_max_dtheta) * deg_to_rad
-    call interlock_material_derive(mat, stat, message)
+    ! (interlock_paper_ria and interlock_material_derive in one, for the three fixed planes)
+    call interlock_paper_material_derive(mat, props(prop_theta0) * deg_to_rad, &
+                                         props(prop_thetaf) * deg_to_rad, props(prop_zeta0), &
+                                         stat, message)
 
   contains
 

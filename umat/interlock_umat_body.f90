@@ -93,6 +93,8 @@ module interlock_umat_body
   real(dp), parameter :: pnewdt_bad_input = -1.0_dp
   real(dp), parameter :: pnewdt_local_failure = 0.5_dp
   real(dp), parameter :: pnewdt_min_factor = 0.1_dp
+  !> A damage or angle bound exceeded by less (relative) is met (step_factor).
+  real(dp), parameter :: slack = 1.0e-6_dp
   !> The bounds of STRAN, DSTRAN and STRESS on entry, as bits (within).
   integer(int64), parameter :: separation_bits = transfer(separation_bound, 0_int64), &
     increment_bits = transfer(2.0_dp * separation_bound, 0_int64), &
@@ -233,6 +235,8 @@ contains
     DRPLDT = 0.0_dp
 
     ! --- Accuracy control: propose the fraction of the increment that meets the bounds.
+    ! (every bound met, the common case: one test per plane, no call)
+    if (bounds_met(mat, controls, old, new)) return
     factor = step_factor(mat, controls, old, old, new)
     ! (in the implicit and trapezoidal schemes a zero increment is a no-op, SPEC D10: `old`
     ! is the anchor already)
@@ -248,6 +252,22 @@ contains
     integer(int64), intent(in) :: bound_bits
     within = iand(transfer(x, 0_int64), huge(0_int64)) <= bound_bits
   end function within
+
+  !> Every plane's damage and angle increments within their bounds (the slack of step_factor
+  !> included): step_factor would return 1. Any other case (NaN too) goes to step_factor.
+  pure logical function bounds_met(mat, controls, old, new)
+    use interlock, only: umat_planes
+    type(interlock_material_t), intent(in) :: mat
+    type(umat_controls_t), intent(in) :: controls
+    type(interlock_state_t), intent(in) :: old, new
+    real(dp) :: damage_bound, angle_bound
+    damage_bound = controls%max_damage_increment * (1.0_dp + slack)
+    angle_bound = controls%max_angle_increment * (1.0_dp + slack)
+    ! (the UMAT's material has umat_planes planes: a constant trip count)
+    bounds_met = all(new%damage(1:umat_planes) - old%damage(1:umat_planes) <= damage_bound)
+    if (bounds_met .and. mat%use_wear) bounds_met = &
+      all(abs(new%theta(1:umat_planes) - old%theta(1:umat_planes)) <= angle_bound)
+  end function bounds_met
 
   !> With wear, a zero increment is not a no-op in the explicit scheme (the angle stored at the
   !> end of the last increment turns the local frame): interpolate from the state that the zero
@@ -274,7 +294,6 @@ contains
     type(interlock_material_t), intent(in) :: mat
     type(umat_controls_t), intent(in) :: controls
     type(interlock_state_t), intent(in) :: old, zero, new
-    real(dp), parameter :: slack = 1.0e-6_dp  !< a bound exceeded by less (relative) is met
     integer :: k
     real(dp) :: d_target, beta_target, span, dzeta_target, dzeta_zero
     f = 1.0_dp
