@@ -18,7 +18,7 @@ module interlock_props
   use interlock_status, only: status_ok, status_bad_input
   implicit none
   private
-  public :: props_to_material, statev_to_state, state_to_statev, umat_controls_t
+  public :: props_to_material, props_n_to_material, statev_to_state, state_to_statev, umat_controls_t
   public :: statev_bounds, statev_bad_index, statev_message, state_bound
 
   !> Largest magnitude admitted for a state variable that is not otherwise bounded (slips,
@@ -91,11 +91,23 @@ contains
     type(umat_controls_t), intent(out) :: controls
     integer, intent(out) :: stat
     character(len=*), intent(out) :: message
-    integer :: i, n
+    call props_n_to_material(size(props), props, mat, solver, controls, stat, message)
+  end subroutine props_to_material
+
+  !> props_to_material for the host's PROPS(NPROPS) as it comes (the UMAT's every call: no
+  !> array descriptor to build).
+  pure subroutine props_n_to_material(n, props, mat, solver, controls, stat, message)
+    integer, intent(in) :: n
+    real(dp), intent(in) :: props(n)
+    type(interlock_material_t), intent(inout) :: mat
+    type(interlock_solver_t), intent(out) :: solver
+    type(umat_controls_t), intent(out) :: controls
+    integer, intent(out) :: stat
+    character(len=*), intent(out) :: message
+    integer :: i
     logical :: ok
 
     stat = status_bad_input
-    n = size(props)
     if (n < n_required_properties .or. n > n_properties) then
       call props_message(props, 0, message)
       return
@@ -113,6 +125,7 @@ contains
     mat%mu = props(prop_mu)
     mat%h_n = props(prop_h_n)
     mat%prefractured = value(prop_prefractured) > 0.5_dp
+    !GCC$ unroll 5
     do i = 1, n_effects
       mat%effect(i) = value(prop_effect_damage + i - 1) > 0.5_dp
     end do
@@ -136,7 +149,7 @@ contains
         value = property_defaults(i)
       end if
     end function value
-  end subroutine props_to_material
+  end subroutine props_n_to_material
 
   !> The message of a PROPS that props_to_material refused (`what` 0: NPROPS, 1: a value).
   pure subroutine props_message(props, what, message)

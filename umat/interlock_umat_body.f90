@@ -111,7 +111,7 @@ contains
                             NSHR, NTENS, NSTATV, PROPS, NPROPS, COORDS, DROT, PNEWDT, CELENT, &
                             DFGRD0, DFGRD1, NOEL, NPT, LAYER, KSPT, JSTEP, KINC, &
                             layer_props_offset)
-    use interlock, only: props_to_material, statev_to_state, state_to_statev, umat_nstatv, &
+    use interlock, only: props_n_to_material, statev_to_state, state_to_statev, umat_nstatv, &
         message_len, statev_bad_index, prop_tangent, tangent_symmetric, &
         interlock_symmetric_tangent
     implicit none
@@ -175,7 +175,7 @@ contains
       call reject_argument(bad_nstatv, NSTATV, [0.0_dp, 0.0_dp], NOEL, NPT, KINC, CMNAME, PNEWDT)
       return
     end if
-    call props_to_material(PROPS, mat, solver, controls, stat, message)
+    call props_n_to_material(NPROPS, PROPS, mat, solver, controls, stat, message)
     if (stat /= status_ok) then
       if (present(layer_props_offset)) call name_layer_property(message, layer_props_offset, NPROPS)
       call report(message, pnewdt_bad_input, NOEL, NPT, KINC, CMNAME, PNEWDT)
@@ -261,12 +261,21 @@ contains
     type(umat_controls_t), intent(in) :: controls
     type(interlock_state_t), intent(in) :: old, new
     real(dp) :: damage_bound, angle_bound
+    integer :: k
     damage_bound = controls%max_damage_increment * (1.0_dp + slack)
     angle_bound = controls%max_angle_increment * (1.0_dp + slack)
-    ! (the UMAT's material has umat_planes planes: a constant trip count)
-    bounds_met = all(new%damage(1:umat_planes) - old%damage(1:umat_planes) <= damage_bound)
-    if (bounds_met .and. mat%use_wear) bounds_met = &
-      all(abs(new%theta(1:umat_planes) - old%theta(1:umat_planes)) <= angle_bound)
+    bounds_met = .true.
+    ! (the UMAT's material has umat_planes planes: the loops unrolled, no branch per plane)
+    !GCC$ unroll 3
+    do k = 1, umat_planes
+      bounds_met = bounds_met .and. new%damage(k) - old%damage(k) <= damage_bound
+    end do
+    if (bounds_met .and. mat%use_wear) then
+      !GCC$ unroll 3
+      do k = 1, umat_planes
+        bounds_met = bounds_met .and. abs(new%theta(k) - old%theta(k)) <= angle_bound
+      end do
+    end if
   end function bounds_met
 
   !> With wear, a zero increment is not a no-op in the explicit scheme (the angle stored at the
