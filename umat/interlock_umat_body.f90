@@ -70,14 +70,21 @@
 !> heap allocation. Every check of a value that may be garbage is one integer test on its bits
 !> (no comparison of a NaN): PROPS and STATEV against the material table's bounds in loops
 !> unrolled over the constant table (interlock_material_table:key_in_range), STRAN, DSTRAN and
-!> STRESS by their magnitude (`within`). The local material and states are not filled with
-!> default values first (their derived and per-plane parts have none; props_to_material and
-!> statev_to_state set what the update reads). Messages are built only on failure, in the
-!> procedures after the body. interlock-bench measures the UMAT call against its update
-!> (docs/bench.md, section 1b): 86-112 ns = 12-15 calls of the bench's bilinear law over the
-!> update for every effect set and scheme, 1,330-1,420 instructions, most of them the
-!> derivation of the library material from PROPS (props_to_material, 610-640), the STATEV
-!> checks (216) and the STATEV copies and PNEWDT proposal (140-155).
+!> STRESS by their magnitude (`within`). PROPS are read as the host passes them
+!> (props_n_to_material, explicit shape), and the paper's three-plane RIA is derived in one
+!> (interlock_material:interlock_paper_material_derive: no loops over the planes, one sine and
+!> cosine, derive's formulas shared). The local material and states are not filled with
+!> default values first (their derived and per-plane parts have none; props_n_to_material and
+!> statev_to_state set what the update reads). step_factor runs only when a PNEWDT bound is
+!> exceeded (bounds_met, one test per plane, first). This file is compiled for link-time
+!> optimisation with the UMAT's path (umat/CMakeLists.txt), so that the STATEV checks and
+!> copies inline here. Messages are built only on failure, in the procedures after the body.
+!> interlock-bench measures the UMAT call against its update (docs/bench.md, section 1b):
+!> 73-94 ns = 10-13 calls of the bench's bilinear law over the update for every effect set and
+!> scheme, 1,030-1,160 instructions: props_n_to_material 470-500 (the PROPS checks and the
+!> derivation of the library material), this body 520-530 (the STATEV checks and copies, the
+!> defaults of the material's given part and of the states, the outputs) and the external
+!> UMAT's second pass of the 38 arguments (37).
 !>
 !> **Threads.** No SAVE'd, module or COMMON state is written; the procedure is `recursive` so
 !> that every local lives on the stack: safe to call from many threads at once.
