@@ -15,7 +15,8 @@ module interlock
       kernel_inclined, kernel_cohesive
   use interlock_state, only: interlock_state_t, interlock_state_init
   use interlock_integrate, only: interlock_update
-  use interlock_props, only: props_to_material, statev_to_state, state_to_statev, umat_controls_t, &
+  use interlock_props, only: props_to_material, props_n_to_material, statev_to_state, &
+      state_to_statev, umat_controls_t, &
       statev_bounds, statev_bad_index, statev_message, state_bound
   use interlock_host_tangent, only: interlock_symmetric_tangent
   use interlock_version, only: interlock_version_string

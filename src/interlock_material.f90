@@ -10,7 +10,7 @@ module interlock_material
   private
   public :: interlock_material_t, interlock_solver_t, max_planes
   public :: interlock_material_prepare, interlock_paper_ria, interlock_material_derive, &
-            derived_range_message
+            interlock_paper_material_derive, derived_range_message
   public :: scheme_explicit, scheme_implicit, scheme_trapezoidal, scheme_name
   public :: effect_damage, effect_friction, effect_interlocking, effect_finite_depth, effect_wear
   public :: effect_names, n_effects
@@ -215,13 +215,97 @@ contains
 
     mat%prepared = .false.
     mat%kernel = kernel_general
+    call derive_constants(mat, minval(mat%zeta0(1:mat%n_planes)), ok)
+    if (.not. ok) return
+    do k = 1, mat%n_planes
+      call derive_plane(mat%effect(effect_interlocking), mat%effect(effect_wear), mat%theta0(k), &
+                        mat%thetaf(k), mat%zeta0(k), mat%theta_init(k), mat%thetaf_eff(k), &
+                        mat%plane_wears(k), mat%inv_zeta0(k))
+      ! cos and sin are even and odd to the bit: one evaluation per distinct |theta|.
+      mat%cos0(k) = 1.0_dp
+      mat%sin0(k) = 0.0_dp
+      if (.not. equal(mat%theta_init(k), 0.0_dp)) then
+        do j = 1, k
+          if (j == k) then
+            mat%cos0(k) = cos(mat%theta_init(k))
+            mat%sin0(k) = sin(mat%theta_init(k))
+          else if (equal(abs(mat%theta_init(j)), abs(mat%theta_init(k)))) then
+            mat%cos0(k) = mat%cos0(j)
+            mat%sin0(k) = sign(mat%sin0(j), mat%theta_init(k))
+            exit
+          end if
+        end do
+      end if
+    end do
+    call derive_flat_beyond(mat)
+    mat%use_wear = any(mat%plane_wears(1:mat%n_planes))
+    call derive_kernel(mat, all(equal(mat%theta_init(1:mat%n_planes), 0.0_dp)))
+  end subroutine derive
+
+  !> interlock_paper_ria and interlock_material_derive in one (the same values to the bit), for
+  !> the UMAT, which builds its material on every call: the three planes written out, one sine
+  !> and cosine, no loop over the planes. `mat` must be fresh (declared without a value: the
+  !> given per-plane values beyond the third keep their defaults, as interlock_paper_ria sets
+  !> them); its scalar given parameters and switches are set. Angles in radians.
+  pure subroutine interlock_paper_material_derive(mat, theta0, thetaf, zeta0, stat, message)
+    type(interlock_material_t), intent(inout) :: mat
+    real(dp), intent(in) :: theta0, thetaf, zeta0
+    integer, intent(out) :: stat
+    character(len=*), intent(inout) :: message
+    logical :: ok, interlocking, wear
+
+    mat%n_planes = 3
+    mat%gamma_hat(1:3) = 1.0_dp / 3.0_dp
+    mat%theta0(1:3) = [-theta0, 0.0_dp, theta0]
+    mat%thetaf(1:3) = [-thetaf, 0.0_dp, thetaf]
+    mat%zeta0(1:3) = [zeta0, huge(1.0_dp), zeta0]
+    mat%prepared = .false.
+    mat%kernel = kernel_general
+    stat = status_bad_input
+    call derive_constants(mat, zeta0, ok)
+    if (.not. ok) then
+      message = derived_range_message(mat)
+      return
+    end if
+    stat = status_ok
+    interlocking = mat%effect(effect_interlocking)
+    wear = mat%effect(effect_wear)
+    ! (the three planes written out: the middle one's values fold to constants)
+    call derive_plane(interlocking, wear, -theta0, -thetaf, zeta0, mat%theta_init(1), &
+                      mat%thetaf_eff(1), mat%plane_wears(1), mat%inv_zeta0(1))
+    call derive_plane(interlocking, wear, 0.0_dp, 0.0_dp, huge(1.0_dp), mat%theta_init(2), &
+                      mat%thetaf_eff(2), mat%plane_wears(2), mat%inv_zeta0(2))
+    call derive_plane(interlocking, wear, theta0, thetaf, zeta0, mat%theta_init(3), &
+                      mat%thetaf_eff(3), mat%plane_wears(3), mat%inv_zeta0(3))
+    ! the planes -theta, 0, +theta: derive's evaluation for the first, its copy for the third
+    mat%cos0(1:3) = 1.0_dp
+    mat%sin0(1:3) = 0.0_dp
+    if (.not. equal(mat%theta_init(1), 0.0_dp)) then
+      mat%cos0(1) = cos(mat%theta_init(1))
+      mat%sin0(1) = sin(mat%theta_init(1))
+      mat%cos0(3) = mat%cos0(1)
+      mat%sin0(3) = sign(mat%sin0(1), mat%theta_init(3))
+    end if
+    call derive_flat_beyond(mat)
+    mat%use_wear = mat%plane_wears(1) .or. mat%plane_wears(3)
+    call derive_kernel(mat, equal(mat%theta_init(1), 0.0_dp))
+  end subroutine interlock_paper_material_derive
+
+  !> The lengths, stiffnesses and inverses (SPEC section 2) and the effect set's scalars (SPEC
+  !> section 7); `ok` false when they fall outside double precision's safe range (`zeta0_min`:
+  !> the smallest wear energy scale of the planes).
+  pure subroutine derive_constants(mat, zeta0_min, ok)
+    type(interlock_material_t), intent(inout) :: mat
+    real(dp), intent(in) :: zeta0_min
+    logical, intent(out) :: ok
     ! First the ranges of what the divisions below give, by products (no division can then
     ! overflow or underflow; FE codes may run with floating-point traps on, and the properties
     ! are below 1e30, so the products cannot overflow): the lengths s_c = 2 gc / sigma0,
     ! s_0 = (1 - eta) s_c and the stiffnesses K = sigma0 / s_0 must lie within 2^(+-300)
     ! (about 1e(+-90)).
     ok = lengths_in_range(mat%sigma0_n, mat%gc, mat%eta) .and. &
-         lengths_in_range(mat%sigma0_t, mat%gc, mat%eta) .and. inverses_in_range(mat)
+         lengths_in_range(mat%sigma0_t, mat%gc, mat%eta) .and. &
+         inverses_in_range(mat%eta, mat%h_n, zeta0_min)
     if (.not. ok) return
     mat%scn = 2.0_dp * mat%gc / mat%sigma0_n
     mat%sct = 2.0_dp * mat%gc / mat%sigma0_t
@@ -250,42 +334,45 @@ contains
     mat%use_depth = mat%effect(effect_finite_depth) .and. .not. mat%h_n >= infinite_threshold
     mat%inv_h_n = 0.0_dp
     if (mat%use_depth) mat%inv_h_n = 1.0_dp / mat%h_n
-    do k = 1, mat%n_planes
-      if (mat%effect(effect_interlocking)) then
-        mat%theta_init(k) = mat%theta0(k)
-        mat%thetaf_eff(k) = mat%thetaf(k)
-      else
-        mat%theta_init(k) = 0.0_dp
-        mat%thetaf_eff(k) = 0.0_dp
-      end if
-      mat%plane_wears(k) = mat%effect(effect_wear) .and. .not. mat%zeta0(k) >= infinite_threshold &
-                           .and. .not. equal(mat%theta_init(k), mat%thetaf_eff(k))
-      mat%inv_zeta0(k) = 0.0_dp
-      if (mat%plane_wears(k)) mat%inv_zeta0(k) = 1.0_dp / mat%zeta0(k)
-      ! cos and sin are even and odd to the bit: one evaluation per distinct |theta|.
-      mat%cos0(k) = 1.0_dp
-      mat%sin0(k) = 0.0_dp
-      if (.not. equal(mat%theta_init(k), 0.0_dp)) then
-        do j = 1, k
-          if (j == k) then
-            mat%cos0(k) = cos(mat%theta_init(k))
-            mat%sin0(k) = sin(mat%theta_init(k))
-          else if (equal(abs(mat%theta_init(j)), abs(mat%theta_init(k)))) then
-            mat%cos0(k) = mat%cos0(j)
-            mat%sin0(k) = sign(mat%sin0(j), mat%theta_init(k))
-            exit
-          end if
-        end do
-      end if
-    end do
+  end subroutine derive_constants
+
+  !> One plane's effective angles (0 with interlocking off), whether it wears (wear on, a finite
+  !> zeta_0 and an angle that can change) and 1/zeta_0 when it does (0 otherwise).
+  elemental subroutine derive_plane(interlocking, wear, theta0, thetaf, zeta0, theta_init, &
+                                    thetaf_eff, wears, inv_zeta0)
+    logical, intent(in) :: interlocking, wear
+    real(dp), intent(in) :: theta0, thetaf, zeta0
+    real(dp), intent(out) :: theta_init, thetaf_eff, inv_zeta0
+    logical, intent(out) :: wears
+    if (interlocking) then
+      theta_init = theta0
+      thetaf_eff = thetaf
+    else
+      theta_init = 0.0_dp
+      thetaf_eff = 0.0_dp
+    end if
+    wears = wear .and. .not. zeta0 >= infinite_threshold .and. .not. equal(theta_init, thetaf_eff)
+    inv_zeta0 = 0.0_dp
+    if (wears) inv_zeta0 = 1.0_dp / zeta0
+  end subroutine derive_plane
+
+  !> The planes beyond n_planes: flat, not wearing.
+  pure subroutine derive_flat_beyond(mat)
+    type(interlock_material_t), intent(inout) :: mat
     mat%plane_wears(mat%n_planes + 1:) = .false.
     mat%theta_init(mat%n_planes + 1:) = 0.0_dp
     mat%thetaf_eff(mat%n_planes + 1:) = 0.0_dp
     mat%inv_zeta0(mat%n_planes + 1:) = 0.0_dp
     mat%cos0(mat%n_planes + 1:) = 1.0_dp
     mat%sin0(mat%n_planes + 1:) = 0.0_dp
-    mat%use_wear = any(mat%plane_wears(1:mat%n_planes))
-    mat%flat = all(equal(mat%theta_init(1:mat%n_planes), 0.0_dp)) .and. .not. mat%use_wear
+  end subroutine derive_flat_beyond
+
+  !> The kernel for the effect set (use_wear and use_depth set; `flat_angles`: every plane's
+  !> effective angle 0); the material is then prepared.
+  pure subroutine derive_kernel(mat, flat_angles)
+    type(interlock_material_t), intent(inout) :: mat
+    logical, intent(in) :: flat_angles
+    mat%flat = flat_angles .and. .not. mat%use_wear
     if (mat%flat .and. .not. mat%use_depth) then
       mat%kernel = kernel_cohesive
     else if (mat%flat) then
@@ -294,13 +381,13 @@ contains
       mat%kernel = kernel_inclined
     end if
     mat%prepared = .true.
-  end subroutine derive
+  end subroutine derive_kernel
 
   !> Why interlock_material_derive refused the parameters.
   pure function derived_range_message(mat) result(message)
     type(interlock_material_t), intent(in) :: mat
     character(len=:), allocatable :: message
-    if (.not. inverses_in_range(mat)) then
+    if (.not. inverses_in_range(mat%eta, mat%h_n, minval(mat%zeta0(1:mat%n_planes)))) then
       message = 'eta = ' // format_real(mat%eta) // ', h_n = ' // format_real(mat%h_n) // &
                 ', zeta0 = ' // format_real(minval(mat%zeta0(1:mat%n_planes))) // &
                 ' is inadmissible: eta, h_n and zeta0 must be >= 1e-100 (the law takes ' // &
@@ -323,12 +410,13 @@ contains
 
   !> eta, H_N and zeta_0 >= smallest_inverted: the law takes their inverses (1/eta, 1/H_N,
   !> 1/zeta_0), which then stay below 1e100, so that no product with a separation, a stiffness
-  !> or a work overflows (a denormal zeta_0 would make 1/zeta_0 infinite).
-  pure logical function inverses_in_range(mat) result(ok)
-    type(interlock_material_t), intent(in) :: mat
+  !> or a work overflows (a denormal zeta_0 would make 1/zeta_0 infinite). `zeta0_min`: the
+  !> smallest zeta_0 of the planes.
+  pure logical function inverses_in_range(eta, h_n, zeta0_min) result(ok)
+    real(dp), intent(in) :: eta, h_n, zeta0_min
     real(dp), parameter :: smallest_inverted = 1.0e-100_dp
-    ok = mat%eta >= smallest_inverted .and. mat%h_n >= smallest_inverted .and. &
-         all(mat%zeta0(1:mat%n_planes) >= smallest_inverted)
+    ok = eta >= smallest_inverted .and. h_n >= smallest_inverted .and. &
+         zeta0_min >= smallest_inverted
   end function inverses_in_range
 
   !> 2^-300 <= s_0 <= s_c <= 2^300 and 2^-300 <= K <= 2^300 for peak traction sigma0 (s_c =

@@ -13,12 +13,12 @@ module interlock_props
       sv_damage, sv_beta, sv_frictional_slip, sv_zeta, sv_theta, sv_friction_traction, &
       sv_work, sv_damage_dissipation, sv_friction_dissipation, sv_initialized
   use interlock_material, only: interlock_material_t, interlock_solver_t, &
-      interlock_material_derive, interlock_paper_ria, n_effects
+      interlock_paper_material_derive, n_effects
   use interlock_state, only: interlock_state_t, interlock_state_init
   use interlock_status, only: status_ok, status_bad_input
   implicit none
   private
-  public :: props_to_material, statev_to_state, state_to_statev, umat_controls_t
+  public :: props_to_material, props_n_to_material, statev_to_state, state_to_statev, umat_controls_t
   public :: statev_bounds, statev_bad_index, statev_message, state_bound
 
   !> Largest magnitude admitted for a state variable that is not otherwise bounded (slips,
@@ -91,11 +91,23 @@ contains
     type(umat_controls_t), intent(out) :: controls
     integer, intent(out) :: stat
     character(len=*), intent(out) :: message
-    integer :: i, n
+    call props_n_to_material(size(props), props, mat, solver, controls, stat, message)
+  end subroutine props_to_material
+
+  !> props_to_material for the host's PROPS(NPROPS) as it comes (the UMAT's every call: no
+  !> array descriptor to build).
+  pure subroutine props_n_to_material(n, props, mat, solver, controls, stat, message)
+    integer, intent(in) :: n
+    real(dp), intent(in) :: props(n)
+    type(interlock_material_t), intent(inout) :: mat
+    type(interlock_solver_t), intent(out) :: solver
+    type(umat_controls_t), intent(out) :: controls
+    integer, intent(out) :: stat
+    character(len=*), intent(out) :: message
+    integer :: i
     logical :: ok
 
     stat = status_bad_input
-    n = size(props)
     if (n < n_required_properties .or. n > n_properties) then
       call props_message(props, 0, message)
       return
@@ -112,9 +124,8 @@ contains
     mat%eta = props(prop_eta)
     mat%mu = props(prop_mu)
     mat%h_n = props(prop_h_n)
-    call interlock_paper_ria(mat, props(prop_theta0) * deg_to_rad, &
-                             props(prop_thetaf) * deg_to_rad, props(prop_zeta0))
     mat%prefractured = value(prop_prefractured) > 0.5_dp
+    !GCC$ unroll 5
     do i = 1, n_effects
       mat%effect(i) = value(prop_effect_damage + i - 1) > 0.5_dp
     end do
@@ -122,7 +133,10 @@ contains
     solver%substep_tol = value(prop_substep_tol)
     controls%max_damage_increment = value(prop_max_dd)
     controls%max_angle_increment = value(prop_max_dtheta) * deg_to_rad
-    call interlock_material_derive(mat, stat, message)
+    ! (interlock_paper_ria and interlock_material_derive in one, for the three fixed planes)
+    call interlock_paper_material_derive(mat, props(prop_theta0) * deg_to_rad, &
+                                         props(prop_thetaf) * deg_to_rad, props(prop_zeta0), &
+                                         stat, message)
 
   contains
 
@@ -135,7 +149,7 @@ contains
         value = property_defaults(i)
       end if
     end function value
-  end subroutine props_to_material
+  end subroutine props_n_to_material
 
   !> The message of a PROPS that props_to_material refused (`what` 0: NPROPS, 1: a value).
   pure subroutine props_message(props, what, message)

@@ -70,14 +70,21 @@
 !> heap allocation. Every check of a value that may be garbage is one integer test on its bits
 !> (no comparison of a NaN): PROPS and STATEV against the material table's bounds in loops
 !> unrolled over the constant table (interlock_material_table:key_in_range), STRAN, DSTRAN and
-!> STRESS by their magnitude (`within`). The local material and states are not filled with
-!> default values first (their derived and per-plane parts have none; props_to_material and
-!> statev_to_state set what the update reads). Messages are built only on failure, in the
-!> procedures after the body. interlock-bench measures the UMAT call against its update
-!> (docs/bench.md, section 1b): 86-112 ns = 12-15 calls of the bench's bilinear law over the
-!> update for every effect set and scheme, 1,330-1,420 instructions, most of them the
-!> derivation of the library material from PROPS (props_to_material, 610-640), the STATEV
-!> checks (216) and the STATEV copies and PNEWDT proposal (140-155).
+!> STRESS by their magnitude (`within`). PROPS are read as the host passes them
+!> (props_n_to_material, explicit shape), and the paper's three-plane RIA is derived in one
+!> (interlock_material:interlock_paper_material_derive: no loops over the planes, one sine and
+!> cosine, derive's formulas shared). The local material and states are not filled with
+!> default values first (their derived and per-plane parts have none; props_n_to_material and
+!> statev_to_state set what the update reads). step_factor runs only when a PNEWDT bound is
+!> exceeded (bounds_met, one test per plane, first). This file is compiled for link-time
+!> optimisation with the UMAT's path (umat/CMakeLists.txt), so that the STATEV checks and
+!> copies inline here. Messages are built only on failure, in the procedures after the body.
+!> interlock-bench measures the UMAT call against its update (docs/bench.md, section 1b):
+!> 73-94 ns = 10-13 calls of the bench's bilinear law over the update for every effect set and
+!> scheme, 1,030-1,160 instructions: props_n_to_material 470-500 (the PROPS checks and the
+!> derivation of the library material), this body 520-530 (the STATEV checks and copies, the
+!> defaults of the material's given part and of the states, the outputs) and the external
+!> UMAT's second pass of the 38 arguments (37).
 !>
 !> **Threads.** No SAVE'd, module or COMMON state is written; the procedure is `recursive` so
 !> that every local lives on the stack: safe to call from many threads at once.
@@ -93,6 +100,8 @@ module interlock_umat_body
   real(dp), parameter :: pnewdt_bad_input = -1.0_dp
   real(dp), parameter :: pnewdt_local_failure = 0.5_dp
   real(dp), parameter :: pnewdt_min_factor = 0.1_dp
+  !> A damage or angle bound exceeded by less (relative) is met (step_factor).
+  real(dp), parameter :: slack = 1.0e-6_dp
   !> The bounds of STRAN, DSTRAN and STRESS on entry, as bits (within).
   integer(int64), parameter :: separation_bits = transfer(separation_bound, 0_int64), &
     increment_bits = transfer(2.0_dp * separation_bound, 0_int64), &
@@ -109,7 +118,7 @@ contains
                             NSHR, NTENS, NSTATV, PROPS, NPROPS, COORDS, DROT, PNEWDT, CELENT, &
                             DFGRD0, DFGRD1, NOEL, NPT, LAYER, KSPT, JSTEP, KINC, &
                             layer_props_offset)
-    use interlock, only: props_to_material, statev_to_state, state_to_statev, umat_nstatv, &
+    use interlock, only: props_n_to_material, statev_to_state, state_to_statev, umat_nstatv, &
         message_len, statev_bad_index, prop_tangent, tangent_symmetric, &
         interlock_symmetric_tangent
     implicit none
@@ -173,7 +182,7 @@ contains
       call reject_argument(bad_nstatv, NSTATV, [0.0_dp, 0.0_dp], NOEL, NPT, KINC, CMNAME, PNEWDT)
       return
     end if
-    call props_to_material(PROPS, mat, solver, controls, stat, message)
+    call props_n_to_material(NPROPS, PROPS, mat, solver, controls, stat, message)
     if (stat /= status_ok) then
       if (present(layer_props_offset)) call name_layer_property(message, layer_props_offset, NPROPS)
       call report(message, pnewdt_bad_input, NOEL, NPT, KINC, CMNAME, PNEWDT)
@@ -233,6 +242,8 @@ contains
     DRPLDT = 0.0_dp
 
     ! --- Accuracy control: propose the fraction of the increment that meets the bounds.
+    ! (every bound met, the common case: one test per plane, no call)
+    if (bounds_met(mat, controls, old, new)) return
     factor = step_factor(mat, controls, old, old, new)
     ! (in the implicit and trapezoidal schemes a zero increment is a no-op, SPEC D10: `old`
     ! is the anchor already)
@@ -248,6 +259,31 @@ contains
     integer(int64), intent(in) :: bound_bits
     within = iand(transfer(x, 0_int64), huge(0_int64)) <= bound_bits
   end function within
+
+  !> Every plane's damage and angle increments within their bounds (the slack of step_factor
+  !> included): step_factor would return 1. Any other case (NaN too) goes to step_factor.
+  pure logical function bounds_met(mat, controls, old, new)
+    use interlock, only: umat_planes
+    type(interlock_material_t), intent(in) :: mat
+    type(umat_controls_t), intent(in) :: controls
+    type(interlock_state_t), intent(in) :: old, new
+    real(dp) :: damage_bound, angle_bound
+    integer :: k
+    damage_bound = controls%max_damage_increment * (1.0_dp + slack)
+    angle_bound = controls%max_angle_increment * (1.0_dp + slack)
+    bounds_met = .true.
+    ! (the UMAT's material has umat_planes planes: the loops unrolled, no branch per plane)
+    !GCC$ unroll 3
+    do k = 1, umat_planes
+      bounds_met = bounds_met .and. new%damage(k) - old%damage(k) <= damage_bound
+    end do
+    if (bounds_met .and. mat%use_wear) then
+      !GCC$ unroll 3
+      do k = 1, umat_planes
+        bounds_met = bounds_met .and. abs(new%theta(k) - old%theta(k)) <= angle_bound
+      end do
+    end if
+  end function bounds_met
 
   !> With wear, a zero increment is not a no-op in the explicit scheme (the angle stored at the
   !> end of the last increment turns the local frame): interpolate from the state that the zero
@@ -274,7 +310,6 @@ contains
     type(interlock_material_t), intent(in) :: mat
     type(umat_controls_t), intent(in) :: controls
     type(interlock_state_t), intent(in) :: old, zero, new
-    real(dp), parameter :: slack = 1.0e-6_dp  !< a bound exceeded by less (relative) is met
     integer :: k
     real(dp) :: d_target, beta_target, span, dzeta_target, dzeta_zero
     f = 1.0_dp
