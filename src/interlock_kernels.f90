@@ -11,7 +11,7 @@
 module interlock_kernels
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_explicit, &
-      scheme_implicit, scheme_trapezoidal, kernel_flat
+      scheme_implicit, scheme_trapezoidal, kernel_flat, max_planes
   use interlock_wear, only: worn_angle, worn_angle_slope, wear_root_t, wear_root_begin, &
       wear_root_update
   use interlock_state, only: interlock_state_t
@@ -53,7 +53,7 @@ contains
     type(plane_law_t) :: p
     real(dp) :: area, darea, sigma(2), sl(2), c, sn, gam, kg(2, 2), sg(2), theta, slope, &
                 dthds(2), dsig_dth(2), err_angle, err_traction, e, a_end, g_slip, wfric, slip, &
-                c_o, s_o
+                c_o, s_o, c_k(max_planes), sn_k(max_planes)
     integer :: k, scheme, it
 
     scheme = solver%scheme
@@ -78,6 +78,14 @@ contains
                              sigma, tangent)
       if (mat%n_planes > 1) call share_first_plane(mat%n_planes, old, new)
     else
+      if (scheme == scheme_explicit) then
+        ! The frozen frames first: libm's sincos sets and restores the rounding mode, which
+        ! waits for the floating-point work before it, so that the planes' laws after it
+        ! overlap (the same values).
+        do k = 1, mat%n_planes
+          if (mat%plane_wears(k)) call plane_frame(mat, k, old%theta(k), c_k(k), sn_k(k))
+        end do
+      end if
       do k = 1, mat%n_planes
         if (.not. mat%plane_wears(k)) then
           call wear_weights(mat, scheme, k, mat%cos0(k), mat%sin0(k), old, a_end, g_slip)
@@ -91,7 +99,8 @@ contains
         else if (scheme == scheme_explicit) then
           ! Explicit (eq. 25): the angle frozen at its stored value within the step, the wear
           ! driven by the start state's friction traction.
-          call plane_frame(mat, k, old%theta(k), c, sn)
+          c = c_k(k)
+          sn = sn_k(k)
           g_slip = old%damage(k) * abs(old%tauf(k))
           gam = mat%gamma_hat(k) * area
           if (present(wear_error)) then
