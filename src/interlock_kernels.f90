@@ -11,7 +11,7 @@
 module interlock_kernels
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_explicit, &
-      scheme_implicit, scheme_trapezoidal, kernel_flat
+      scheme_implicit, scheme_trapezoidal, kernel_flat, max_planes
   use interlock_wear, only: worn_angle, worn_angle_slope, wear_root_t, wear_root_begin, &
       wear_root_update
   use interlock_state, only: interlock_state_t
@@ -53,7 +53,7 @@ contains
     type(plane_law_t) :: p
     real(dp) :: area, darea, sigma(2), sl(2), c, sn, gam, kg(2, 2), sg(2), theta, slope, &
                 dthds(2), dsig_dth(2), err_angle, err_traction, e, a_end, g_slip, wfric, slip, &
-                c_o, s_o
+                c_o, s_o, c_k(max_planes), sn_k(max_planes)
     integer :: k, scheme, it
 
     scheme = solver%scheme
@@ -74,26 +74,41 @@ contains
     if (mat%kernel == kernel_flat) then
       ! Every plane flat: one computed, in the global frame, the others share its history.
       call wear_weights(mat, scheme, 1, 1.0_dp, 0.0_dp, old, a_end, g_slip)
-      call fixed_angle_plane(mat, a_end, g_slip, 1, 1.0_dp, 0.0_dp, area, s, old, new, sigma, &
-                             tangent)
+      call fixed_angle_plane(mat, a_end, g_slip, 1, .true., 1.0_dp, 0.0_dp, area, s, old, new, &
+                             sigma, tangent)
       if (mat%n_planes > 1) call share_first_plane(mat%n_planes, old, new)
     else
+      if (scheme == scheme_explicit) then
+        ! The frozen frames first: libm's sincos sets and restores the rounding mode, which
+        ! waits for the floating-point work before it, so that the planes' laws after it
+        ! overlap (the same values).
+        do k = 1, mat%n_planes
+          if (mat%plane_wears(k)) call plane_frame(mat, k, old%theta(k), c_k(k), sn_k(k))
+        end do
+      end if
       do k = 1, mat%n_planes
         if (.not. mat%plane_wears(k)) then
           call wear_weights(mat, scheme, k, mat%cos0(k), mat%sin0(k), old, a_end, g_slip)
-          call fixed_angle_plane(mat, a_end, g_slip, k, mat%cos0(k), mat%sin0(k), &
-                                 mat%gamma_hat(k) * area, s, old, new, sigma, tangent)
+          if (flat_plane(mat, k)) then
+            call fixed_angle_plane(mat, a_end, g_slip, k, .true., 1.0_dp, 0.0_dp, &
+                                   mat%gamma_hat(k) * area, s, old, new, sigma, tangent)
+          else
+            call fixed_angle_plane(mat, a_end, g_slip, k, .false., mat%cos0(k), mat%sin0(k), &
+                                   mat%gamma_hat(k) * area, s, old, new, sigma, tangent)
+          end if
         else if (scheme == scheme_explicit) then
           ! Explicit (eq. 25): the angle frozen at its stored value within the step, the wear
           ! driven by the start state's friction traction.
-          call plane_frame(mat, k, old%theta(k), c, sn)
+          c = c_k(k)
+          sn = sn_k(k)
           g_slip = old%damage(k) * abs(old%tauf(k))
           gam = mat%gamma_hat(k) * area
           if (present(wear_error)) then
-            call fixed_angle_plane(mat, 0.0_dp, g_slip, k, c, sn, gam, s, old, new, sigma, &
-                                   tangent, wfric, slip, dsig_dth)
+            call fixed_angle_plane(mat, 0.0_dp, g_slip, k, .false., c, sn, gam, s, old, new, &
+                                   sigma, tangent, wfric, slip, dsig_dth)
           else
-            call fixed_angle_plane(mat, 0.0_dp, g_slip, k, c, sn, gam, s, old, new, sigma, tangent)
+            call fixed_angle_plane(mat, 0.0_dp, g_slip, k, .false., c, sn, gam, s, old, new, &
+                                   sigma, tangent)
           end if
           ! Explicit wear (eq. 22, 25): the angle for the next step.
           if (new%zeta(k) > old%zeta(k)) then
@@ -166,11 +181,14 @@ contains
   !> places, and calls in these paths cost much of an update (interlock-bench, with the damage
   !> growth and this plane as calls from the flat-plane laws: damage only 7.9 -> 9.2 ns,
   !> damage + friction 10.5 -> 19 ns). core_kernels holds all of them to the general path.
-  pure subroutine fixed_angle_plane(mat, a_end, g_slip, k, c, sn, w, s, old, new, sigma, tangent, &
-                                    wfric_out, slip_out, dsig_dtheta)
+  pure subroutine fixed_angle_plane(mat, a_end, g_slip, k, flat, c, sn, w, s, old, new, sigma, &
+                                    tangent, wfric_out, slip_out, dsig_dtheta)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: a_end, g_slip   !< the wear driver a_end D |tau_f| |d sf| + g_slip |d sf|
     integer, intent(in) :: k
+    !> c = 1 and sn = 0 exactly (a flat plane: the paper's middle plane, every plane of a flat
+    !> RIA): its frame is the global one, no rotation (the same values)
+    logical, intent(in) :: flat
     real(dp), intent(in) :: c, sn, w, s(2)
     type(interlock_state_t), intent(in) :: old
     type(interlock_state_t), intent(inout) :: new
@@ -182,8 +200,13 @@ contains
                 tauf, dtauf1, dtauf2, slip, kpos, kts, ls1, ls2, k11, k12, k21, k22, t11, t12, &
                 t21, t22, wc, ws, wfric, wdmg
 
-    sl1 = c * s(1) + sn * s(2)
-    sl2 = -sn * s(1) + c * s(2)
+    if (flat) then
+      sl1 = s(1)
+      sl2 = s(2)
+    else
+      sl1 = c * s(1) + sn * s(2)
+      sl2 = -sn * s(1) + c * s(2)
+    end if
     ! Damage (interlock_damage), divisions only while it grows.
     pos = max(0.0_dp, sl1)
     beta = old%beta(k)
@@ -212,18 +235,27 @@ contains
     k21 = d * dtauf1 + (tauf - kts) * gd1
     k22 = (1.0_dp - d) * mat%kt + d * dtauf2 + (tauf - kts) * gd2
     ! To the global frame, weighted: w R^T sigma_k and w R^T (K_k R).
-    wc = w * c
-    ws = w * sn
-    sigma(1) = sigma(1) + (wc * ls1 - ws * ls2)
-    sigma(2) = sigma(2) + (ws * ls1 + wc * ls2)
-    t11 = k11 * c - k12 * sn
-    t12 = k11 * sn + k12 * c
-    t21 = k21 * c - k22 * sn
-    t22 = k21 * sn + k22 * c
-    tangent(1, 1) = tangent(1, 1) + (wc * t11 - ws * t21)
-    tangent(1, 2) = tangent(1, 2) + (wc * t12 - ws * t22)
-    tangent(2, 1) = tangent(2, 1) + (ws * t11 + wc * t21)
-    tangent(2, 2) = tangent(2, 2) + (ws * t12 + wc * t22)
+    if (flat) then
+      sigma(1) = sigma(1) + w * ls1
+      sigma(2) = sigma(2) + w * ls2
+      tangent(1, 1) = tangent(1, 1) + w * k11
+      tangent(1, 2) = tangent(1, 2) + w * k12
+      tangent(2, 1) = tangent(2, 1) + w * k21
+      tangent(2, 2) = tangent(2, 2) + w * k22
+    else
+      wc = w * c
+      ws = w * sn
+      sigma(1) = sigma(1) + (wc * ls1 - ws * ls2)
+      sigma(2) = sigma(2) + (ws * ls1 + wc * ls2)
+      t11 = k11 * c - k12 * sn
+      t12 = k11 * sn + k12 * c
+      t21 = k21 * c - k22 * sn
+      t22 = k21 * sn + k22 * c
+      tangent(1, 1) = tangent(1, 1) + (wc * t11 - ws * t21)
+      tangent(1, 2) = tangent(1, 2) + (wc * t12 - ws * t22)
+      tangent(2, 1) = tangent(2, 1) + (ws * t11 + wc * t21)
+      tangent(2, 2) = tangent(2, 2) + (ws * t12 + wc * t22)
+    end if
     ! Frictional work (decision D4), the wear driver of each scheme, the energies (the
     ! decohesion part of Y dD exactly, interlock_damage:damage_dissipation_increment).
     wfric = d * abs(tauf) * slip
@@ -443,6 +475,13 @@ contains
       sn = sin(theta)
     end if
   end subroutine plane_frame
+
+  !> Plane k's constant frame is the global one: sin theta_0 = 0 and cos theta_0 = 1 exactly.
+  pure logical function flat_plane(mat, k)
+    type(interlock_material_t), intent(in) :: mat
+    integer, intent(in) :: k
+    flat_plane = abs(mat%sin0(k)) <= 0.0_dp .and. mat%cos0(k) >= 1.0_dp
+  end function flat_plane
 
   !> A flat RIA of several planes: planes 2..n take plane 1's history (their angles stay).
   pure subroutine share_first_plane(n, old, new)
