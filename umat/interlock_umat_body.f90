@@ -68,10 +68,10 @@
 !> costs what the law costs plus what any UMAT must do (read and check PROPS and STATEV, derive
 !> the constants, write STATEV back): no message, no formatted write, no long string copy, no
 !> heap allocation. Every check of a value that may be garbage is one integer test on its bits
-!> (no comparison of a NaN): PROPS and STATEV against the material table's bounds in loops
-!> unrolled over the constant table (interlock_material_table:key_in_range), STRAN, DSTRAN and
-!> STRESS by their magnitude (`within`). PROPS are read as the host passes them
-!> (props_n_to_material, explicit shape), and the paper's three-plane RIA is derived in one
+!> (interlock_material_table:key_in_range: no comparison of a NaN): PROPS and STATEV against
+!> the material table's bounds in loops unrolled over the constant table, STRAN, DSTRAN and
+!> STRESS by their magnitude. PROPS are read as the host passes them (props_n_to_material,
+!> explicit shape), and the paper's three-plane RIA is derived in one
 !> (interlock_material:interlock_paper_material_derive: no loops over the planes, one sine and
 !> cosine, derive's formulas shared). The local material and states are not filled with
 !> default values first (their derived and per-plane parts have none; props_n_to_material and
@@ -79,17 +79,14 @@
 !> exceeded (bounds_met, one test per plane, first). This file is compiled for link-time
 !> optimisation with the UMAT's path (umat/CMakeLists.txt), so that the STATEV checks and
 !> copies inline here. Messages are built only on failure, in the procedures after the body.
-!> interlock-bench measures the UMAT call against its update (docs/bench.md, section 1b):
-!> 73-94 ns = 10-13 calls of the bench's bilinear law over the update for every effect set and
-!> scheme, 1,030-1,160 instructions: props_n_to_material 470-500 (the PROPS checks and the
-!> derivation of the library material), this body 520-530 (the STATEV checks and copies, the
-!> defaults of the material's given part and of the states, the outputs) and the external
-!> UMAT's second pass of the 38 arguments (37).
+!> interlock-bench measures the UMAT call against its update, and docs/bench.md (section 1b)
+!> gives the figures and where the instructions go.
 !>
 !> **Threads.** No SAVE'd, module or COMMON state is written; the procedure is `recursive` so
 !> that every local lives on the stack: safe to call from many threads at once.
 module interlock_umat_body
   use, intrinsic :: iso_fortran_env, only: int64
+  use interlock_material_table, only: key_in_range
   use interlock, only: dp, separation_bound, state_bound, interlock_material_t, &
       interlock_solver_t, interlock_state_t, interlock_info_t, interlock_update, umat_controls_t, &
       status_ok, status_local_failure, scheme_explicit
@@ -102,7 +99,8 @@ module interlock_umat_body
   real(dp), parameter :: pnewdt_min_factor = 0.1_dp
   !> A damage or angle bound exceeded by less (relative) is met (step_factor).
   real(dp), parameter :: slack = 1.0e-6_dp
-  !> The bounds of STRAN, DSTRAN and STRESS on entry, as bits (within).
+  !> The bounds of STRAN, DSTRAN and STRESS on entry as ordered keys (key_in_range: the
+  !> symmetric range [-1 - B, B] of keys is |x| <= B, one test on the magnitude's bits).
   integer(int64), parameter :: separation_bits = transfer(separation_bound, 0_int64), &
     increment_bits = transfer(2.0_dp * separation_bound, 0_int64), &
     state_bits = transfer(state_bound, 0_int64)
@@ -190,8 +188,10 @@ contains
     end if
     ! |x| <= bound on the magnitude's bits (key_in_range): false for NaN and the infinities,
     ! no comparison of a NaN (a trap), then the sum of values now known finite.
-    ok = within(STRAN(1), separation_bits) .and. within(STRAN(2), separation_bits) .and. &
-         within(DSTRAN(1), increment_bits) .and. within(DSTRAN(2), increment_bits)
+    ok = key_in_range(STRAN(1), -1 - separation_bits, separation_bits) .and. &
+         key_in_range(STRAN(2), -1 - separation_bits, separation_bits) .and. &
+         key_in_range(DSTRAN(1), -1 - increment_bits, increment_bits) .and. &
+         key_in_range(DSTRAN(2), -1 - increment_bits, increment_bits)
     if (ok) then
       s = STRAN(1:2) + DSTRAN(1:2)
       ok = abs(s(1)) <= separation_bound .and. abs(s(2)) <= separation_bound
@@ -200,7 +200,8 @@ contains
       call reject_separation(STRAN(1:2), DSTRAN(1:2), NOEL, NPT, KINC, CMNAME, PNEWDT)
       return
     end if
-    ok = within(STRESS(1), state_bits) .and. within(STRESS(2), state_bits)
+    ok = key_in_range(STRESS(1), -1 - state_bits, state_bits) .and. &
+         key_in_range(STRESS(2), -1 - state_bits, state_bits)
     if (.not. ok) then
       call reject_argument(bad_stress, 0, STRESS(1:2), NOEL, NPT, KINC, CMNAME, PNEWDT)
       return
@@ -251,14 +252,6 @@ contains
       factor = step_factor_from_zero(mat, solver, controls, old, new, factor)
     if (factor < 1.0_dp) call lower_pnewdt(PNEWDT, max(pnewdt_min_factor, factor))
   end subroutine interlock_umat_cohesive
-
-  !> |x| <= the bound whose bits are `bound_bits`, from the bits of x (NaN and the infinities
-  !> lie beyond any finite bound): no comparison of a NaN.
-  elemental logical function within(x, bound_bits)
-    real(dp), intent(in) :: x
-    integer(int64), intent(in) :: bound_bits
-    within = iand(transfer(x, 0_int64), huge(0_int64)) <= bound_bits
-  end function within
 
   !> Every plane's damage and angle increments within their bounds (the slack of step_factor
   !> included): step_factor would return 1. Any other case (NaN too) goes to step_factor.
