@@ -3,7 +3,8 @@
 order, followed by the UMAT itself, as ONE free-form Fortran file that compiles on its own
 (`gfortran -c interlock_umat_bundle.f90`).
 
-Modules are found by reading `module` and `use` statements of src/*.f90 and src/*.f90.in;
+Modules are found by reading `module` and `use` statements of the library's folders
+(LIBRARY_FOLDERS below: src/base, material, laws, update, api; .f90 and .f90.in files);
 the version module comes from its .in template with @PROJECT_VERSION@ substituted.
 Standard library only.
 
@@ -24,6 +25,8 @@ MODULE_RE = re.compile(r"^\s*module\s+(?!procedure\b|subroutine\b|function\b)(\w
 USE_RE = re.compile(r"^\s*use\s*(?:,\s*non_intrinsic\s*)?(?:::)?\s*(\w+)", re.IGNORECASE)
 INTRINSIC_USE_RE = re.compile(r"^\s*use\s*,\s*intrinsic", re.IGNORECASE)
 PLACEHOLDER_RE = re.compile(r"@[A-Za-z_][A-Za-z0-9_]*@")
+# The library's layers (docs/architecture.md); the programs' I/O above them is not bundled.
+LIBRARY_FOLDERS = ("base", "material", "laws", "update", "api")
 
 
 def project_version(source_dir):
@@ -74,7 +77,9 @@ def main():
     # The library's modules (src/) and the UMAT's own (umat/*.f90 but the UMAT itself).
     umat_modules = [p for p in sorted((args.source_dir / "umat").glob("*.f90"))
                     if p.name != "interlock_umat.f90" and p != umat]
-    for path in sorted(list(src.glob("*.f90")) + list(src.glob("*.f90.in"))) + umat_modules:
+    library = [p for folder in LIBRARY_FOLDERS for p in sorted((src / folder).iterdir())
+               if p.suffix == ".f90" or p.name.endswith(".f90.in")]
+    for path in library + umat_modules:
         text = path.read_text()
         if path.suffix == ".in":
             text = text.replace("@PROJECT_VERSION@", version)

@@ -96,7 +96,7 @@ set_tests_properties(history_help PROPERTIES LABELS history
   PASS_REGULAR_EXPRESSION "--output-dir DIR.*--version.*Exit status:.*0  every case.*1  a deck was rejected.*2  every file was written.*iterations <= newton_max_iterations.*extrapolate = .true.*2 u\\(2n\\) - u\\(n\\)")
 
 interlock_add_suite(test_history_mixed_control test_history_mixed_control.f90)
-target_link_libraries(test_history_mixed_control PRIVATE interlock_history_core)
+target_link_libraries(test_history_mixed_control PRIVATE interlock_driver)
 set_tests_properties(test_history_mixed_control PROPERTIES LABELS history)
 
 # &output every and store (docs/deck-format.md): thinned rows and chosen datasets are the full
