@@ -1,4 +1,4 @@
-!> Unit tests of the mixed-control solver of interlock-history (src/history/
+!> Unit tests of the mixed-control solver of interlock-history (src/driver/
 !> interlock_mixed_control.f90) against closed forms of SPEC section 8 on a flat interface.
 module test_history_mixed_control_cases
   use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &

@@ -1,4 +1,4 @@
-!> Replay decks (src/interlock_replay.f90): a failing update is written as a deck, the deck is
+!> Replay decks (src/api/interlock_replay.f90): a failing update is written as a deck, the deck is
 !> read back with the group definitions of docs/deck-format.md, and the update rebuilt from
 !> the deck's values fails the same way (and succeeds with the default solver).
 module test_stability_replay_suite

@@ -16,7 +16,7 @@
 !> DDSDDE is the library's exact algorithmic tangent, which is not symmetric once friction or
 !> wear acts: declare `*USER MATERIAL, UNSYMM`. For a host that keeps only the symmetric part
 !> (CalculiX), PROPS(20) `tangent` = 2 returns a symmetric tangent with the exact one's
-!> eigenvalues (src/interlock_host_tangent.f90); the stress update is the same.
+!> eigenvalues (src/api/interlock_host_tangent.f90); the stress update is the same.
 !>
 !> **Energies.** SSE = stored (free) energy, SCD = total dissipation (damage + friction; the split
 !> is in STATEV 20 and 21), SPD = 0. All per unit area [N/mm].
@@ -226,7 +226,7 @@ contains
     end if
 
     ! Property `tangent` = 2: a symmetric DDSDDE for hosts that symmetrize (the update is not
-    ! touched; src/interlock_host_tangent.f90 says why this one).
+    ! touched; src/api/interlock_host_tangent.f90 says why this one).
     if (NPROPS >= prop_tangent) then
       ! (a whole number, checked: no rounding call)
       if (PROPS(prop_tangent) > tangent_symmetric - 0.5_dp) call interlock_symmetric_tangent(tangent)

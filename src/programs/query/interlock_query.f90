@@ -1,5 +1,5 @@
 !> interlock-query: what the material table says, for people and scripts (in the spirit of
-!> mfront-query). Every table is generated from src/interlock_material_table.f90;
+!> mfront-query). Every table is generated from src/material/interlock_material_table.f90;
 !> docs/material.md is the output of `interlock-query --markdown`.
 program interlock_query
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
