@@ -86,7 +86,7 @@
 !> that every local lives on the stack: safe to call from many threads at once.
 module interlock_umat_body
   use, intrinsic :: iso_fortran_env, only: int64
-  use interlock_material_table, only: key_in_range
+  use interlock_numbers, only: key_in_range
   use interlock, only: dp, separation_bound, state_bound, interlock_material_t, &
       interlock_solver_t, interlock_state_t, interlock_info_t, interlock_update, umat_controls_t, &
       status_ok, status_local_failure, scheme_explicit

@@ -7,6 +7,7 @@ module interlock
       separation_bound, is_infinite_value, is_nan_value, same_value, is_finite_bits, exponent_bits
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure, &
       message_len
+  use interlock_numbers, only: key_in_range, keys_in_range, format_real, format_integer
   use interlock_material_table
   use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, &
       interlock_material_prepare, interlock_paper_ria, scheme_explicit, scheme_implicit, &

@@ -4,9 +4,10 @@ module interlock_props
   use interlock_kinds, only: dp, deg_to_rad
   use, intrinsic :: iso_fortran_env, only: int64
   use interlock_kinds, only: same_value, is_finite_bits, exponent_bits
+  use interlock_numbers, only: key_in_range, format_integer, format_real
   use interlock_material_table, only: properties, n_properties, n_required_properties, &
-      check_property, all_properties_ok, key_in_range, property_defaults, umat_planes, umat_nstatv, statevars, &
-      n_statevars_per_plane, format_integer, format_real, &
+      check_property, all_properties_ok, property_defaults, umat_planes, umat_nstatv, statevars, &
+      n_statevars_per_plane, &
       prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
       prop_thetaf, prop_zeta0, prop_prefractured, prop_scheme, prop_substep_tol, prop_max_dd, &
       prop_max_dtheta, prop_effect_damage, &

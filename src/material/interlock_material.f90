@@ -3,7 +3,8 @@
 !> constant sines and cosines), so that an update pays only for the effects a scene uses.
 module interlock_material
   use interlock_kinds, only: dp, deg_to_rad, pi, is_nan_value, infinite_threshold
-  use interlock_material_table, only: check_property, format_real, format_integer, &
+  use interlock_numbers, only: format_real, format_integer
+  use interlock_material_table, only: check_property, &
       prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_zeta0
   use interlock_status, only: status_ok, status_bad_input
   implicit none

@@ -5,15 +5,16 @@
 !> `docs/material.md` are all generated from these two tables.
 module interlock_material_table
   use, intrinsic :: iso_fortran_env, only: int64
-  use interlock_kinds, only: dp, same_value, infinite_threshold, exponent_bits
+  use interlock_kinds, only: dp, infinite_threshold, exponent_bits
+  use interlock_numbers, only: keys_in_range, key_in_range, is_flag, is_whole, format_real
   implicit none
   private
   public :: property_t, statevar_t, properties, statevars
   public :: n_properties, n_required_properties, n_statevars_per_plane, n_statevars_global
   public :: umat_planes, umat_nstatv, property_index, statevar_index
-  public :: check_property, property_ok, properties_ok, format_range, format_real, format_integer
+  public :: check_property, property_ok, properties_ok, format_range
   public :: kind_real, kind_flag, kind_choice
-  public :: keys_in_range, key_in_range, all_properties_ok, property_defaults
+  public :: all_properties_ok, property_defaults
   public :: prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
             prop_thetaf, prop_zeta0, prop_prefractured, prop_scheme, prop_substep_tol, &
             prop_max_dd, prop_max_dtheta, prop_effect_damage, prop_effect_friction, &
@@ -268,62 +269,6 @@ contains
     ok = .true.
   end function all_properties_ok
 
-  !> lo(i) <= key(x(i)) <= hi(i) for every i (key_in_range): a range check of any bits by
-  !> integer operations only (no comparison of a NaN), counted, not branched.
-  pure logical function keys_in_range(n, x, lo, hi) result(ok)
-    integer, intent(in) :: n
-    real(dp), intent(in) :: x(n)
-    integer(int64), intent(in) :: lo(n), hi(n)
-    integer :: i, n_out
-    n_out = 0
-    do i = 1, n
-      n_out = n_out + merge(0, 1, key_in_range(x(i), lo(i), hi(i)))
-    end do
-    ok = n_out == 0
-  end function keys_in_range
-
-  !> lo <= key(x) <= hi, with key(x) the bits of x as an integer that orders as x does (IEEE
-  !> 754 doubles: a non-negative x as its bits, a negative one with every bit but the sign
-  !> flipped): -0 just below +0 (key -1), NaN beyond the infinities (+NaN above +Inf, -NaN
-  !> below -Inf). Integer operations only: no comparison of a NaN. The test is the cheapest
-  !> for the range's shape; with constant bounds (an unrolled loop over a table) the compiler
-  !> keeps only that one: a symmetric range |x| <= B on the magnitude's bits; a range of
-  !> non-negative keys on the bits themselves (a negative number's bits are negative as an
-  !> integer); a range from -0 likewise, -0 admitted by its pattern; any other by the key.
-  elemental logical function key_in_range(x, lo, hi) result(ok)
-    real(dp), intent(in) :: x
-    integer(int64), intent(in) :: lo, hi
-    integer(int64), parameter :: minus_zero = -huge(0_int64) - 1_int64
-    integer(int64) :: bits
-    bits = transfer(x, 0_int64)
-    if (lo == -hi - 1_int64) then
-      ok = iand(bits, huge(bits)) <= hi
-    else if (lo >= 0_int64) then
-      ok = bits >= lo .and. bits <= hi
-    else if (lo == -1_int64) then
-      ok = ble(bits, hi) .or. bits == minus_zero   ! (unsigned: a negative number's bits beyond)
-    else
-      bits = ieor(bits, iand(shifta(bits, 63), huge(bits)))
-      ok = bits >= lo .and. bits <= hi
-    end if
-  end function key_in_range
-
-  !> x is 0 or 1 (a flag), from its bits: +-0 or the bits of 1 (no comparison of a NaN).
-  elemental logical function is_flag(x)
-    real(dp), intent(in) :: x
-    integer(int64), parameter :: one_bits = transfer(1.0_dp, 0_int64)
-    integer(int64) :: bits
-    bits = transfer(x, 0_int64)
-    is_flag = iand(bits, huge(bits)) == 0_int64 .or. bits == one_bits
-  end function is_flag
-
-  !> x is a whole number, for x within [0, 2^52) (a flag's or a choice's range, checked).
-  elemental logical function is_whole(x)
-    real(dp), intent(in) :: x
-    real(dp), parameter :: whole = 2.0_dp**52
-    is_whole = .not. ((x + whole) - whole < x .or. (x + whole) - whole > x)
-  end function is_whole
-
   !> Check one value against its table row. On failure `ok` is false and `message` names the
   !> property, the value and the admissible range.
   pure subroutine check_property(i, value, ok, message)
@@ -364,72 +309,5 @@ contains
       text = text // ' [' // trim(p%unit) // ']'
     end select
   end function format_range
-
-  !> A compact, exact-enough rendering of a real for messages and tables.
-  pure function format_real(x) result(text)
-    real(dp), intent(in) :: x
-    character(len=:), allocatable :: text
-    character(len=32) :: buf
-    ! (NaN from the bits: a signalling NaN, which a host may pass, traps in any float test)
-    if (iand(transfer(x, 0_int64), huge(0_int64)) > exponent_bits) then
-      text = 'NaN'
-    else if (abs(x) > huge(1.0_dp)) then
-      text = merge('+Inf', '-Inf', x > 0.0_dp)
-    else if (same_value(x, anint(x)) .and. abs(x) < 1.0e9_dp) then
-      write (buf, '(i0)') nint(x, kind=8)
-      text = trim(buf)
-    else
-      ! Six significant digits, trailing zeros dropped: 0.3, -0.0015, 2.5e-07, 1e+200.
-      if (abs(x) >= 1.0e-3_dp .and. abs(x) < 1.0e6_dp) then
-        write (buf, '(f0.6)') x
-        buf = adjustl(buf)
-        if (index(buf, '.') > 0) buf = strip_zeros(buf)
-        if (buf(1:1) == '.') buf = '0' // buf(1:len(buf) - 1)
-        if (buf(1:2) == '-.') buf = '-0' // buf(2:len(buf) - 1)
-        if (len_trim(strip_zeros(buf)) == 0) buf = '0'
-        text = trim(buf)
-      else
-        write (buf, '(es14.5e3)') x
-        buf = adjustl(buf)
-        text = trim(strip_zeros(buf(1:index(buf, 'E') - 1))) // 'e' // &
-               trim(exponent_text(buf(index(buf, 'E') + 1:)))
-      end if
-    end if
-  end function format_real
-
-  !> An integer as text, without blanks: 42 -> "42".
-  pure function format_integer(i) result(text)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: text
-    character(len=16) :: buf
-    write (buf, '(i0)') i
-    text = trim(buf)
-  end function format_integer
-
-  !> "1.500000" -> "1.5", "2.000" -> "2".
-  pure function strip_zeros(s) result(r)
-    character(len=*), intent(in) :: s
-    character(len=len(s)) :: r
-    integer :: n
-    r = s
-    n = len_trim(r)
-    do while (n > 1 .and. r(n:n) == '0')
-      r(n:n) = ' '
-      n = n - 1
-    end do
-    if (r(n:n) == '.') r(n:n) = ' '
-  end function strip_zeros
-
-  !> "+005" -> "+05" (at least two digits), "-010" -> "-10".
-  pure function exponent_text(s) result(r)
-    character(len=*), intent(in) :: s
-    character(len=:), allocatable :: r
-    integer :: i
-    r = trim(adjustl(s))
-    i = 2
-    do while (len(r) > 3 .and. r(i:i) == '0')
-      r = r(1:i - 1) // r(i + 1:)
-    end do
-  end function exponent_text
 
 end module interlock_material_table
