@@ -1,0 +1,261 @@
+!> The material groups of a deck: &interface, &microplanes, &effects and &initial_state.
+submodule (interlock_deck) interlock_deck_material
+  implicit none
+
+contains
+
+  module procedure read_interface
+    real(dp) :: sigma0_n, sigma0_t, gc, eta, mu, h_n
+    logical :: prefractured
+    integer :: ios
+    character(len=512) :: iomsg, iomsg2
+    character(len=:), allocatable :: probe
+    integer :: kp
+    namelist /interface/ sigma0_n, sigma0_t, gc, eta, mu, h_n, prefractured
+    sigma0_n = unset
+    sigma0_t = unset
+    gc = unset
+    eta = unset
+    mu = unset
+    h_n = huge(1.0_dp)
+    prefractured = .false.
+    message = ''
+    read (u, nml=interface, iostat=ios, iomsg=iomsg)
+    if (ios /= 0) then
+      do kp = 1, scan%n
+        probe = probe_text(text, 'interface', scan%a(kp))
+        read (probe, nml=interface, iostat=ios, iomsg=iomsg2)
+        if (ios /= 0) exit
+      end do
+      call nml_error(1, text, scan, kp, iomsg, iomsg2, message)
+      return
+    end if
+    call check_required(prop_sigma0_n, sigma0_n, message); if (len_trim(message) > 0) return
+    call check_required(prop_sigma0_t, sigma0_t, message); if (len_trim(message) > 0) return
+    call check_required(prop_gc, gc, message); if (len_trim(message) > 0) return
+    call check_required(prop_eta, eta, message); if (len_trim(message) > 0) return
+    call check_required(prop_mu, mu, message); if (len_trim(message) > 0) return
+    call check_required(prop_h_n, h_n, message); if (len_trim(message) > 0) return
+    deck%sigma0_n = sigma0_n
+    deck%sigma0_t = sigma0_t
+    deck%gc = gc
+    deck%eta = eta
+    deck%mu = mu
+    deck%h_n = h_n
+    deck%prefractured = prefractured
+  end procedure read_interface
+
+  module procedure read_microplanes
+    real(dp), dimension(max_planes) :: theta0_deg, thetaf_deg, zeta0, gamma_hat
+    integer :: n_planes, ios, n, k
+    logical :: ok
+    character(len=512) :: iomsg, iomsg2
+    character(len=:), allocatable :: probe
+    integer :: kp
+    namelist /microplanes/ theta0_deg, thetaf_deg, zeta0, n_planes, gamma_hat
+    theta0_deg = unset
+    thetaf_deg = unset
+    zeta0 = unset
+    gamma_hat = unset
+    n_planes = unset_int
+    message = ''
+    read (u, nml=microplanes, iostat=ios, iomsg=iomsg)
+    if (ios /= 0) then
+      do kp = 1, scan%n
+        probe = probe_text(text, 'microplanes', scan%a(kp))
+        read (probe, nml=microplanes, iostat=ios, iomsg=iomsg2)
+        if (ios /= 0) exit
+      end do
+      call nml_error(2, text, scan, kp, iomsg, iomsg2, message)
+      return
+    end if
+    if (has_gaps(theta0_deg) .or. has_gaps(thetaf_deg) .or. has_gaps(zeta0) .or. &
+        has_gaps(gamma_hat)) then
+      message = 'per-plane values must be given from the first plane on, without gaps'
+      return
+    end if
+    if (n_planes == unset_int) then
+      ! The paper's symmetric RIA: one value each.
+      deck%paper_ria = .true.
+      deck%n_planes = 3
+      if (count_given(theta0_deg) /= 1 .or. count_given(thetaf_deg) > 1 .or. &
+          count_given(zeta0) > 1 .or. count_given(gamma_hat) > 0) then
+        message = 'without n_planes (the paper''s RIA) give one theta0_deg, and at most one ' // &
+                  'thetaf_deg and zeta0 (no gamma_hat); for a general RIA give n_planes'
+        if (count_given(theta0_deg) == 0) message = 'theta0_deg is required (admissible ' // &
+          format_range(prop_theta0) // ')'
+        return
+      end if
+      deck%thetaf_given = count_given(thetaf_deg) > 0
+      if (count_given(thetaf_deg) == 0) thetaf_deg(1) = theta0_deg(1)
+      if (count_given(zeta0) == 0) zeta0(1) = huge(1.0_dp)
+      call check_required(prop_theta0, theta0_deg(1), message); if (len_trim(message) > 0) return
+      call check_required(prop_thetaf, thetaf_deg(1), message); if (len_trim(message) > 0) return
+      call check_required(prop_zeta0, zeta0(1), message); if (len_trim(message) > 0) return
+      if (thetaf_deg(1) > theta0_deg(1)) then
+        message = "property 'thetaf_deg' = " // value_str(thetaf_deg(1)) // &
+                  ' is inadmissible: admissible 0 <= thetaf_deg <= theta0_deg = ' // &
+                  value_str(theta0_deg(1)) // ' [deg]'
+        return
+      end if
+      deck%theta0_deg = 0.0_dp
+      deck%thetaf_deg = 0.0_dp
+      deck%zeta0 = huge(1.0_dp)
+      deck%theta0_deg(1) = theta0_deg(1)
+      deck%thetaf_deg(1) = thetaf_deg(1)
+      deck%zeta0(1) = zeta0(1)
+    else
+      deck%paper_ria = .false.
+      if (n_planes < 1 .or. n_planes > max_planes) then
+        message = 'n_planes = ' // format_integer(n_planes) // ' is inadmissible: admissible 1 <= ' // &
+                  'n_planes <= ' // format_integer(max_planes)
+        return
+      end if
+      n = n_planes
+      if (count_given(theta0_deg) /= n .or. count_given(gamma_hat) /= n) then
+        message = 'with n_planes = ' // format_integer(n) // ' give ' // format_integer(n) // &
+                  ' values of gamma_hat and of theta0_deg (given: ' // &
+                  format_integer(count_given(gamma_hat)) // ' and ' // format_integer(count_given(theta0_deg)) // ')'
+        return
+      end if
+      deck%thetaf_given = count_given(thetaf_deg) > 0
+      if (count_given(thetaf_deg) == 0) thetaf_deg(1:n) = theta0_deg(1:n)
+      if (count_given(zeta0) == 0) zeta0(1:n) = huge(1.0_dp)
+      if (count_given(thetaf_deg) /= n .or. count_given(zeta0) /= n) then
+        message = 'with n_planes = ' // format_integer(n) // ' give ' // format_integer(n) // &
+                  ' values of thetaf_deg and of zeta0, or none'
+        return
+      end if
+      do k = 1, n
+        call check_required(prop_theta0, abs(theta0_deg(k)), message)
+        if (len_trim(message) > 0) then
+          message = 'plane ' // format_integer(k) // ': ' // trim(message) // ' (in absolute value)'
+          return
+        end if
+        call check_required(prop_zeta0, zeta0(k), message)
+        if (len_trim(message) > 0) then
+          message = 'plane ' // format_integer(k) // ': ' // trim(message)
+          return
+        end if
+        if (.not. (in_range(gamma_hat(k), 0.0_dp, 1.0_dp) .and. gamma_hat(k) > 0.0_dp)) then
+          message = 'plane ' // format_integer(k) // ': gamma_hat(' // format_integer(k) // ') = ' // &
+                    value_str(gamma_hat(k)) // ' is inadmissible: admissible 0 < gamma_hat <= 1 [-]'
+          return
+        end if
+        ok = in_range(abs(thetaf_deg(k)), 0.0_dp, abs(theta0_deg(k)))
+        if (ok) ok = .not. (thetaf_deg(k) * theta0_deg(k) < 0.0_dp)
+        if (.not. ok) then
+          message = 'plane ' // format_integer(k) // ': thetaf_deg(' // format_integer(k) // ') = ' // &
+                    value_str(thetaf_deg(k)) // ' is inadmissible: admissible 0 <= |thetaf_deg| ' // &
+                    '<= |theta0_deg| = ' // value_str(abs(theta0_deg(k))) // &
+                    ' [deg], of the same sign as theta0_deg = ' // value_str(theta0_deg(k))
+          return
+        end if
+      end do
+      if (abs(sum(gamma_hat(1:n)) - 1.0_dp) > 1.0e-9_dp) then
+        message = 'gamma_hat sums to ' // value_str(sum(gamma_hat(1:n))) // ': admissible a sum ' // &
+                  'of 1 (within 1e-9): the area fractions of the microplanes'
+        return
+      end if
+      deck%n_planes = n
+      deck%gamma_hat = 0.0_dp
+      deck%theta0_deg = 0.0_dp
+      deck%thetaf_deg = 0.0_dp
+      deck%zeta0 = huge(1.0_dp)
+      deck%gamma_hat(1:n) = gamma_hat(1:n)
+      deck%theta0_deg(1:n) = theta0_deg(1:n)
+      deck%thetaf_deg(1:n) = thetaf_deg(1:n)
+      deck%zeta0(1:n) = zeta0(1:n)
+    end if
+  end procedure read_microplanes
+
+  module procedure read_effects
+    logical :: damage, friction, interlocking, finite_depth, wear
+    integer :: ios
+    character(len=512) :: iomsg, iomsg2
+    character(len=:), allocatable :: probe
+    integer :: kp
+    namelist /effects/ damage, friction, interlocking, finite_depth, wear
+    damage = .true.
+    friction = .true.
+    interlocking = .true.
+    finite_depth = .true.
+    wear = .true.
+    message = ''
+    read (u, nml=effects, iostat=ios, iomsg=iomsg)
+    if (ios /= 0) then
+      do kp = 1, scan%n
+        probe = probe_text(text, 'effects', scan%a(kp))
+        read (probe, nml=effects, iostat=ios, iomsg=iomsg2)
+        if (ios /= 0) exit
+      end do
+      call nml_error(3, text, scan, kp, iomsg, iomsg2, message)
+      return
+    end if
+    deck%effect = [damage, friction, interlocking, finite_depth, wear]
+  end procedure read_effects
+
+  module procedure read_initial_state
+    real(dp), dimension(max_planes) :: damage, beta, frictional_slip, zeta, theta, friction_traction
+    real(dp) :: separation(2), traction(2)
+    integer :: ios
+    character(len=512) :: iomsg, iomsg2
+    character(len=:), allocatable :: probe
+    integer :: kp
+    namelist /initial_state/ damage, beta, frictional_slip, zeta, theta, friction_traction, &
+      separation, traction
+    damage = unset
+    beta = unset
+    frictional_slip = unset
+    zeta = unset
+    theta = unset
+    friction_traction = unset
+    separation = unset
+    traction = unset
+    message = ''
+    read (u, nml=initial_state, iostat=ios, iomsg=iomsg)
+    if (ios /= 0) then
+      do kp = 1, scan%n
+        probe = probe_text(text, 'initial_state', scan%a(kp))
+        read (probe, nml=initial_state, iostat=ios, iomsg=iomsg2)
+        if (ios /= 0) exit
+      end do
+      call nml_error(7, text, scan, kp, iomsg, iomsg2, message)
+      return
+    end if
+    if (has_gaps(damage) .or. has_gaps(beta) .or. has_gaps(frictional_slip) .or. has_gaps(zeta) &
+        .or. has_gaps(theta) .or. has_gaps(friction_traction)) then
+      message = 'per-plane values must be given from the first plane on, without gaps'
+      return
+    end if
+    if (count_given(separation) == 1 .or. count_given(traction) == 1) then
+      message = 'separation and traction take two values each (normal, tangential)'
+      return
+    end if
+    message = range_message('damage', damage, 0.0_dp, 1.0_dp, '0 <= damage <= 1')
+    if (len_trim(message) == 0) message = range_message('beta', beta, 0.0_dp, 1.0e12_dp, &
+                                                        '0 <= beta <= 1e12')
+    if (len_trim(message) == 0) message = range_message('zeta', zeta, 0.0_dp, 1.0e30_dp, &
+                                                        '0 <= zeta < 1e30 [N/mm]')
+    if (len_trim(message) == 0) message = range_message('theta', theta, -0.5_dp * pi, &
+                                                        0.5_dp * pi, '-pi/2 < theta < pi/2 [rad]', &
+                                                        open_ends=.true.)
+    if (len_trim(message) > 0) return
+    message = not_finite_message('frictional_slip', 'mm', frictional_slip)
+    if (len_trim(message) == 0) message = not_finite_message('friction_traction', 'MPa', &
+                                                              friction_traction)
+    if (len_trim(message) == 0) message = not_finite_message('separation', 'mm', separation)
+    if (len_trim(message) == 0) message = not_finite_message('traction', 'MPa', traction)
+    if (len_trim(message) > 0) return
+    deck%has_initial_state = .true.
+    deck%init_damage = damage
+    deck%init_beta = beta
+    deck%init_sf = frictional_slip
+    deck%init_zeta = zeta
+    deck%init_theta = theta
+    deck%init_tauf = friction_traction
+    deck%init_s = separation
+    deck%init_sigma = traction
+  end procedure read_initial_state
+
+end submodule interlock_deck_material
