@@ -5,11 +5,10 @@
 !> unclosed groups, unknown or repeated variables; and it lets it name the variable whose value
 !> cannot be read, by re-reading each assignment alone (`probe_text`).
 module interlock_deck_text
-  use, intrinsic :: iso_c_binding, only: c_ptr, c_char, c_int, c_null_char, c_associated
   use interlock, only: format_integer
   implicit none
   private
-  public :: group_scan_t, assignment_t, scan_deck, probe_text, value_text, is_folder, &
+  public :: group_scan_t, assignment_t, scan_deck, probe_text, value_text, &
             is_name_char, lower
 
   integer, parameter :: name_len = 64
@@ -29,17 +28,6 @@ module interlock_deck_text
     integer :: n = 0
     type(assignment_t), allocatable :: a(:)
   end type group_scan_t
-
-  interface
-    type(c_ptr) function c_opendir(path) bind(C, name='opendir')
-      import :: c_ptr, c_char
-      character(kind=c_char), intent(in) :: path(*)
-    end function c_opendir
-    integer(c_int) function c_closedir(dir) bind(C, name='closedir')
-      import :: c_ptr, c_int
-      type(c_ptr), value :: dir
-    end function c_closedir
-  end interface
 
 contains
 
@@ -335,16 +323,6 @@ contains
       out = out // sep // trim(names(g))
     end do
   end function join
-
-  !> An existing folder (opendir succeeds).
-  logical function is_folder(path)
-    character(len=*), intent(in) :: path
-    type(c_ptr) :: dir
-    integer(c_int) :: ignore
-    dir = c_opendir(path // c_null_char)
-    is_folder = c_associated(dir)
-    if (is_folder) ignore = c_closedir(dir)
-  end function is_folder
 
   pure logical function is_blank(ch)
     character, intent(in) :: ch

@@ -1,18 +1,27 @@
 !> Files as the operating system sees them (interlock_posix.c and the C library): what a path
-!> names, whether two paths are the same file, removing and renaming, and the guard that removes an unfinished output file when the
-!> program is interrupted (SIGINT, SIGTERM, SIGHUP).
+!> names, whether it is a folder that can be opened, whether two paths are the same file,
+!> removing and renaming, and the guard that removes an unfinished output file when the program
+!> is interrupted.
 module interlock_files
-  use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
+  use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_associated
   implicit none
   private
   public :: path_absent, path_regular, path_folder, path_other, path_kind, same_file, &
-            guard_file, unguard_file, remove_file, rename_file, process_id
+            guard_file, unguard_file, remove_file, rename_file, process_id, is_folder
 
   !> What a path names (path_kind): nothing, a regular file, a folder, anything else (a FIFO,
   !> a device, a socket).
   integer, parameter :: path_absent = 0, path_regular = 1, path_folder = 2, path_other = 3
 
   interface
+    type(c_ptr) function c_opendir(path) bind(C, name='opendir')
+      import :: c_ptr, c_char
+      character(kind=c_char), intent(in) :: path(*)
+    end function c_opendir
+    integer(c_int) function c_closedir(dir) bind(C, name='closedir')
+      import :: c_ptr, c_int
+      type(c_ptr), value :: dir
+    end function c_closedir
     integer(c_int) function c_path_kind(path) bind(C, name='interlock_path_kind')
       import :: c_int, c_char
       character(kind=c_char), intent(in) :: path(*)
@@ -41,6 +50,16 @@ module interlock_files
   end interface
 
 contains
+
+  !> An existing folder (opendir succeeds).
+  logical function is_folder(path)
+    character(len=*), intent(in) :: path
+    type(c_ptr) :: dir
+    integer(c_int) :: ignore
+    dir = c_opendir(path // c_null_char)
+    is_folder = c_associated(dir)
+    if (is_folder) ignore = c_closedir(dir)
+  end function is_folder
 
   !> path_absent, path_regular, path_folder or path_other (symbolic links followed).
   integer function path_kind(path)

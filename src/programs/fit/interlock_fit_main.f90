@@ -8,7 +8,7 @@ program interlock_fit
   use interlock_cli, only: exit_program, command_argument, command_text
   use interlock, only: dp, interlock_version_string, format_integer
   use interlock_h5, only: h5_open_library, h5_close_library
-  use interlock_deck_text, only: is_folder
+  use interlock_files, only: is_folder
   use interlock_mixed_control, only: history_t
   use interlock_history_output, only: output_check_target
   use interlock_fit_deck, only: fit_t, read_fit_deck, join_selected

@@ -14,7 +14,7 @@ program interlock_history
   use interlock_history_output, only: output_t, case_writer_t, output_check_target, output_open, &
       output_begin_case, output_end_case, output_close, output_abort
   use interlock_h5, only: h5_open_library, h5_close_library
-  use interlock_deck_text, only: is_folder
+  use interlock_files, only: is_folder
   implicit none
 
 
