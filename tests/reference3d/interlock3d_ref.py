@@ -414,16 +414,21 @@ def tangent_fd(mat, s_old, s_new, old_states, scheme, h=1e-7):
 # Energies (SPEC 8, D9): per plane psi_k = (1-D) [K_n s_kn^2 + K_t |s_kt|^2] / 2
 #   + D [K_n min(0, s_kn)^2 + K_t |s_kt - sf|^2] / 2, so that sigma_k = d psi_k / d s_k;
 #   damage driving force Y_k = -d psi_k / d D; friction dissipation rate D tau_f . d sf.
-# Increments over a step: work and damage dissipation by the trapezoidal rule, friction
-# dissipation (D_o |tauf_o| + D |tau_f|) |d sf| / 2 (never negative). The balance
-# work = stored + damage + friction then holds to the rule's O(h^2) (not a tautology).
+# Increments over a step, all by the trapezoidal rule: work (sigma_o + sigma) . ds / 2, damage
+# dissipation (Y_o + Y) dD / 2, friction dissipation (D_o tauf_o + D tau_f) . d sf / 2. With
+# depth and wear off, psi is a cubic of (s, D, sf) and these are its exact increment up to the
+# rule's error: the balance work = stored + damage + friction holds to O(h^2) on any path,
+# which checks that the traction, Y and tau_f are the derivatives of one psi (not a tautology).
+# The scheme's own friction dissipation of a step, D tau_f . d sf = D mu p |d sf|, is never
+# negative.
 # ----------------------------------------------------------------------------------------------
-def plane_energy(mat, r):
+def plane_energy(mat, s_kn, s_kt1, s_kt2, D, sf1, sf2):
+    """(psi_k, Y_k) of a plane at its local separation and state."""
     K_n, K_t = mat.K_n, mat.K_t
-    bond = 0.5 * (K_n * r.s_kn ** 2 + K_t * (r.s_kt1 ** 2 + r.s_kt2 ** 2))
-    cn = min(0.0, r.s_kn)
-    fric = 0.5 * (K_n * cn ** 2 + K_t * ((r.s_kt1 - r.sf1) ** 2 + (r.s_kt2 - r.sf2) ** 2))
-    return (1.0 - r.D) * bond + r.D * fric, bond - fric
+    bond = 0.5 * (K_n * s_kn ** 2 + K_t * (s_kt1 ** 2 + s_kt2 ** 2))
+    cn = min(0.0, s_kn)
+    fric = 0.5 * (K_n * cn ** 2 + K_t * ((s_kt1 - sf1) ** 2 + (s_kt2 - sf2) ** 2))
+    return (1.0 - D) * bond + D * fric, bond - fric
 
 
 @dataclass
@@ -434,25 +439,22 @@ class Energies:
     friction: float = 0.0
 
 
-def energy_update(mat, en, sig_old, sig_new, s_old, s_new, old_states, new_states,
-                  res_old, res_new, A_old, A_new):
-    """Energies after a step; res_old are the PlaneResults of the previous step (None at the
-    start: then Y_old is taken from the current step's local separation at the old state)."""
-    w = en.work + 0.5 * float(np.dot(np.asarray(sig_old) + np.asarray(sig_new),
-                                     np.asarray(s_new) - np.asarray(s_old)))
+def energy_update(mat, en, sig_old, sig_new, s_old, s_new, old_states, new_states):
+    """Energies after a step (wear off: theta is each plane's constant angle)."""
+    so, sn = np.asarray(s_old, dtype=float), np.asarray(s_new, dtype=float)
+    A_o, A_n = geometry_decay(mat, so[0]), geometry_decay(mat, sn[0])
+    w = en.work + 0.5 * float(np.dot(np.asarray(sig_old) + np.asarray(sig_new), sn - so))
     stored, dmg, fr = 0.0, en.damage, en.friction
-    for k, plane in enumerate(mat.planes):
-        rn, o, nw = res_new[k], old_states[k], new_states[k]
-        psi_n, Y_n = plane_energy(mat, rn)
-        if res_old is None or res_old[k] is None:
-            Y_o = Y_n
-        else:
-            Y_o = plane_energy(mat, res_old[k])[1]
-        stored += plane.gamma_hat * A_new * psi_n
-        dmg += plane.gamma_hat * 0.5 * (A_old * Y_o + A_new * Y_n) * (nw.D - o.D)
-        dsf = math.hypot(nw.sf1 - o.sf1, nw.sf2 - o.sf2)
-        fr += plane.gamma_hat * 0.5 * (A_old * o.D * math.hypot(o.tauf1, o.tauf2)
-                                       + A_new * nw.D * math.hypot(nw.tauf1, nw.tauf2)) * dsf
+    for plane, o, nw in zip(mat.planes, old_states, new_states):
+        m, e, q = frame(nw.theta, plane.phi)
+        psi_n, Y_n = plane_energy(mat, dot(m, sn), dot(e, sn), dot(q, sn), nw.D, nw.sf1, nw.sf2)
+        m, e, q = frame(o.theta, plane.phi)
+        _, Y_o = plane_energy(mat, dot(m, so), dot(e, so), dot(q, so), o.D, o.sf1, o.sf2)
+        stored += plane.gamma_hat * A_n * psi_n
+        dmg += plane.gamma_hat * 0.5 * (A_o * Y_o + A_n * Y_n) * (nw.D - o.D)
+        d1, d2 = nw.sf1 - o.sf1, nw.sf2 - o.sf2
+        fr += plane.gamma_hat * 0.5 * (A_o * o.D * (o.tauf1 * d1 + o.tauf2 * d2)
+                                       + A_n * nw.D * (nw.tauf1 * d1 + nw.tauf2 * d2))
     return Energies(w, stored, dmg, fr)
 
 
@@ -532,8 +534,6 @@ def run_history(mat, path, scheme, sigma_N=None, state0=None, store_every=1,
     states = state0 if state0 is not None else virgin_state(mat)
     s_prev = np.zeros(3)
     sig_prev = np.zeros(3)
-    res_prev = None
-    A_prev = 1.0
     en = Energies()
     rows = []
     time = 0.0
@@ -545,16 +545,14 @@ def run_history(mat, path, scheme, sigma_N=None, state0=None, store_every=1,
             s_new = np.array([sN, sT[0], sT[1]])
         else:
             s_new = np.asarray(pt, dtype=float)
-        sig, new_states, res = step(mat, s_prev, s_new, states, scheme)
-        A_new = geometry_decay(mat, s_new[0])
+        sig, new_states, _ = step(mat, s_prev, s_new, states, scheme)
         if with_energies:
-            en = energy_update(mat, en, sig_prev, sig, s_prev, s_new, states, new_states,
-                               res_prev, res, A_prev, A_new)
+            en = energy_update(mat, en, sig_prev, sig, s_prev, s_new, states, new_states)
         if i > 0:
             time += math.hypot(s_new[1] - s_prev[1], s_new[2] - s_prev[2])
         if i == 0 or i % store_every == 0 or i == n - 1:
             rows.append(HistoryRow(time, s_new, sig, new_states, en))
-        s_prev, sig_prev, states, res_prev, A_prev = s_new, sig, new_states, res, A_new
+        s_prev, sig_prev, states = s_new, sig, new_states
     return rows
 
 
