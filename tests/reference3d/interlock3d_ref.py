@@ -308,7 +308,19 @@ def smallest_root(F, a, width_hint, max_scan=100000):
         raise RuntimeError("no root bracketed")
     if fhi == 0.0:
         return hi, nev
-    side = 0
+    lo, flo, hi, fhi, exact, n_ref = refine_bracket(F, lo, flo, hi, fhi, 1e-15)
+    if exact is not None:
+        return exact, nev + n_ref
+    nev += n_ref
+    # the end of the bracket where F >= 0 (the root to full precision; hi - lo ~ 1 ulp)
+    return hi, nev
+
+
+def refine_bracket(f, lo, flo, hi, fhi, rel_tol):
+    """Shrinks a bracket lo < hi (f of opposite signs at the ends) by Illinois regula falsi with
+    a bisection every third iteration, until hi - lo <= rel_tol max(|lo|, |hi|) or no double
+    lies between them. Returns (lo, flo, hi, fhi, exact root or None, evaluations)."""
+    side, nev = 0, 0
     for it in range(400):
         if it % 3 == 2:
             z = 0.5 * (lo + hi)
@@ -318,24 +330,23 @@ def smallest_root(F, a, width_hint, max_scan=100000):
                 z = 0.5 * (lo + hi)
         if z <= lo or z >= hi:
             break
-        fz = F(z)
+        fz = f(z)
         nev += 1
         if fz == 0.0:
-            return z, nev
-        if fz < 0.0:
-            lo, flo = z, fz
-            if side == -1:
-                fhi *= 0.5
-            side = -1
-        else:
+            return lo, flo, hi, fhi, z, nev
+        if (fz > 0.0) == (fhi > 0.0):
             hi, fhi = z, fz
             if side == 1:
                 flo *= 0.5
             side = 1
-        if hi - lo <= 1e-15 * max(abs(hi), 1e-300):
+        else:
+            lo, flo = z, fz
+            if side == -1:
+                fhi *= 0.5
+            side = -1
+        if hi - lo <= rel_tol * max(abs(hi), abs(lo), 1e-300):
             break
-    # the end of the bracket where F >= 0 (the root to full precision; hi - lo ~ 1 ulp)
-    return hi, nev
+    return lo, flo, hi, fhi, None, nev
 
 
 # ----------------------------------------------------------------------------------------------
@@ -486,31 +497,9 @@ def solve_normal(mat, s_old, sT, old_states, scheme, target, sN_guess):
     else:
         raise RuntimeError("solve_normal: no bracket for sigma_N = %g" % target)
     lo, flo, hi, fhi = (a, fa, b, fb) if a < b else (b, fb, a, fa)
-    side = 0
-    for it in range(400):
-        if it % 3 == 2:
-            z = 0.5 * (lo + hi)
-        else:
-            z = hi - fhi * (hi - lo) / (fhi - flo)
-            if not (lo < z < hi):
-                z = 0.5 * (lo + hi)
-        if z <= lo or z >= hi:
-            break
-        fz = f(z)
-        if fz == 0.0:
-            return z
-        if (fz > 0.0) == (fhi > 0.0):
-            hi, fhi = z, fz
-            if side == 1:
-                flo *= 0.5
-            side = 1
-        else:
-            lo, flo = z, fz
-            if side == -1:
-                fhi *= 0.5
-            side = -1
-        if hi - lo <= 4e-16 * max(abs(hi), abs(lo)):
-            break
+    lo, flo, hi, fhi, exact, _ = refine_bracket(f, lo, flo, hi, fhi, 4e-16)
+    if exact is not None:
+        return exact
     return lo if abs(flo) <= abs(fhi) else hi
 
 
