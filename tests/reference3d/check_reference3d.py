@@ -8,10 +8,11 @@
 2. Section 9's properties: flat-RIA rotation invariance, pi/N_a symmetry of `azimuthal`, the
    azimuth mapping, energy balance and monotone friction dissipation on a 3D path, the closed
    form of a debonded flat interface, the strike stiffness of a sliding plane.
-3. The figures quoted from the issue author's implementation (granite, sigma_N = -1.5 MPa).
+3. The directional figures quoted for the 3D law (granite, sigma_N = -1.5 MPa), which another
+   implementation of section 9 gave.
 4. The stored data (tests/data/reference3d): a subset re-generated and compared.
 --full runs the long versions (whole 2D curves, the peak spread for N_a = 2, 3, 6, 12, the
-circular-path lag at a fine step); without it the run takes well under a minute.
+circular-path lag at a fine step) and re-generates every stored file.
 """
 
 import json
@@ -284,7 +285,7 @@ def check_properties():
 
 
 # ----------------------------------------------------------------------------------------------
-# 3. The issue author's figures
+# 3. The directional figures quoted for the 3D law
 # ----------------------------------------------------------------------------------------------
 def straight_granite(mat, angle_deg, length, n, scheme="trapezoidal"):
     a = math.radians(angle_deg)
@@ -315,7 +316,7 @@ def peak_spread(n_a, n_dir, n_steps):
 
 
 def check_figures(full):
-    print("== 3. Figures of the issues (granite, sigma_N = -1.5 MPa applied first at zero slip;"
+    print("== 3. Directional figures (granite, sigma_N = -1.5 MPa applied first at zero slip;"
           " trapezoidal scheme)")
     paper = R.granite("paper")
     along, _, _ = straight_granite(paper, 0.0, 1.0, 800)
