@@ -34,3 +34,8 @@ foreach(expected IN LISTS fit_bad_decks)
             $<TARGET_FILE:interlock-fit> ${expected})
   set_tests_properties(fit_bad_deck_${name} PROPERTIES LABELS fit TIMEOUT 120)
 endforeach()
+# The unit suites of the solver and of the CSV reader (pFUnit).
+interlock_add_pfunit_suite(fit_lm TEST_SOURCES test_lm.pf LINK_LIBRARIES interlock_fit_core
+  LABELS fit)
+interlock_add_pfunit_suite(fit_csv TEST_SOURCES test_csv.pf LINK_LIBRARIES interlock_fit_core
+  LABELS fit)

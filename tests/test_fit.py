@@ -30,7 +30,7 @@ MAKE_DATA = os.path.join(HERE, "..", "scripts", "fit_make_data.py")
 # name: (history part of the deck, cycle period/start, [(parameter, true, start, lower, upper)])
 SETS = {
     "granite": ("""&interface
-  sigma0_n = 0.025, sigma0_t = 0.025, gc = 0.0005, eta = 0.99, mu = 0.690, h_n = 4.0
+  sigma0_n = 0.025, sigma0_t = 0.025, gc = 0.0005, eta = 0.99, mu = 0.6898538, h_n = 4.0
 /
 &microplanes
   theta0_deg = 30.0, thetaf_deg = 9.0, zeta0 = 6.666
