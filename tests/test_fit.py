@@ -173,6 +173,14 @@ def staged(fit, history, deck_src):
                                  os.path.join(work, stem + "_fitted.nml"), history, work)
         with open(deck) as f:
             text = f.read()
+        # the plot script: one PNG per curve in the deck's order, and the combined one
+        plot, _ = run([sys.executable, os.path.join(HERE, "..", "scripts", "plot_fit.py"),
+                       os.path.join(work, stem + "_fit.h5"), "--combined",
+                       os.path.join(work, "all.png")], work)
+        written = [os.path.basename(x) for x in plot.split()]
+        assert written == [f"{stem}_fit_{c}.png" for c in
+                           ("shear2", "dilation2", "shear1", "dilation1")] + ["all.png"], written
+        assert all(os.path.getsize(os.path.join(work, x)) > 0 for x in written)
     bad = []
     for name, true in truth.items():
         value = got[name][0]

@@ -72,6 +72,7 @@ contains
     if (stat == 0) call h5_attribute(out%file, 'deck_file', fit%deck%path, stat)
     if (stat == 0) call h5_attribute(out%file, 'fitted_deck', fitted_deck_name, stat)
     if (stat == 0) call h5_attribute(out%file, 'parameters', fit%names, stat)
+    if (stat == 0) call h5_attribute(out%file, 'curve_names', fit%curve_names, stat)
     if (stat == 0) call h5_attribute(out%file, 'at_bound', at_bound, stat)
     if (stat == 0) call h5_attribute(out%file, 'statistics', statistics, stat)
     if (stat == 0) call h5_attribute(out%file, 'discretization_change', disc%change, stat)
