@@ -381,22 +381,14 @@ def discretization(fit, history, deck_src):
 
 def main():
     fit, history, mode = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2]), sys.argv[3]
+    modes = {"identifiability": identifiability, "files": files, "coupled": coupled,
+             "inputs": inputs, "deckfail": deckfail}
     if mode == "recovery":
         recovery(fit, history, sys.argv[4], float(sys.argv[5]))
-    elif mode == "identifiability":
-        identifiability(fit, history)
-    elif mode == "files":
-        files(fit, history)
-    elif mode == "staged":
-        staged(fit, history, sys.argv[4])
-    elif mode == "coupled":
-        coupled(fit, history)
-    elif mode == "inputs":
-        inputs(fit, history)
-    elif mode == "deckfail":
-        deckfail(fit, history)
-    elif mode == "discretization":
-        discretization(fit, history, sys.argv[4])
+    elif mode in ("staged", "discretization"):
+        {"staged": staged, "discretization": discretization}[mode](fit, history, sys.argv[4])
+    elif mode in modes:
+        modes[mode](fit, history)
     else:
         sys.exit(__doc__)
     print("ok")

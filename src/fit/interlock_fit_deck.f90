@@ -15,7 +15,7 @@ module interlock_fit_deck
   implicit none
   private
   public :: fit_t, curve_t, stage_t, read_fit_deck, output_names, n_outputs, fit_groups, &
-            split_branches, deck_value, join_selected
+            split_branches, deck_value, join_selected, law_angles
 
   integer, parameter :: max_curves = 32, max_free = 16, max_stages = 16
   integer, parameter :: name_len = 64, file_len = 1024, list_len = 1024
@@ -431,27 +431,17 @@ contains
     !> deck's values of a parameter not freed) must leave a point that meets it, and the start
     !> values must meet it.
     subroutine check_angles()
-      integer :: i0, if0, npl
+      integer :: i0, if0
       real(dp) :: hi0, lof, s0, sf
-      i0 = findloc(fd%property, prop_theta0, dim=1)
-      if0 = findloc(fd%property, prop_thetaf, dim=1)
-      if (if0 == 0 .and. .not. fd%deck%thetaf_given) return   ! theta_f follows theta_0
-      if (if0 == 0 .and. i0 == 0) return                       ! read_deck checked the deck
-      npl = merge(1, fd%deck%n_planes, fd%deck%paper_ria)
-      if (i0 > 0) then
-        hi0 = fd%upper(i0)
-        s0 = fd%start(i0)
-      else
-        hi0 = minval(abs(fd%deck%theta0_deg(1:npl)))
-        s0 = hi0
-      end if
-      if (if0 > 0) then
-        lof = fd%lower(if0)
-        sf = fd%start(if0)
-      else
-        lof = maxval(abs(fd%deck%thetaf_deg(1:npl)))
-        sf = lof
-      end if
+      real(dp), allocatable :: corner(:)
+      logical :: relevant
+      call law_angles(fd, fd%start, i0, if0, s0, sf, relevant)
+      if (.not. relevant .or. (i0 == 0 .and. if0 == 0)) return   ! read_deck checked the deck
+      ! the box's corner most favourable to theta_f <= theta_0
+      corner = fd%start
+      if (i0 > 0) corner(i0) = fd%upper(i0)
+      if (if0 > 0) corner(if0) = fd%lower(if0)
+      call law_angles(fd, corner, i0, if0, hi0, lof, relevant)
       if (lof > hi0) then
         message = prefix // 'theta_f >= ' // format_real(lof) // ' deg and theta_0 <= ' // &
                   format_real(hi0) // ' deg (bounds or the deck''s values) leave no admissible ' // &
@@ -626,6 +616,35 @@ contains
     end subroutine parse_list
 
   end subroutine read_fit_deck
+
+  !> The magnitudes of theta_0 and theta_f at `values` (a free parameter's value, else the
+  !> deck's: the smallest |theta_0| of its planes), their indices among the parameters (0: not
+  !> free), and whether theta_f applies (freed or given by the deck; otherwise it follows
+  !> theta_0: no wear).
+  pure subroutine law_angles(fit, values, it0, itf, theta0, thetaf, relevant)
+    type(fit_t), intent(in) :: fit
+    real(dp), intent(in) :: values(:)
+    integer, intent(out) :: it0, itf
+    real(dp), intent(out) :: theta0, thetaf
+    logical, intent(out) :: relevant
+    integer :: np
+    it0 = findloc(fit%property, prop_theta0, dim=1)
+    itf = findloc(fit%property, prop_thetaf, dim=1)
+    np = 1
+    if (.not. fit%deck%paper_ria) np = fit%deck%n_planes
+    if (it0 > 0) then
+      theta0 = values(it0)
+    else
+      theta0 = minval(abs(fit%deck%theta0_deg(1:np)))
+    end if
+    relevant = itf > 0 .or. fit%deck%thetaf_given
+    thetaf = 0.0_dp
+    if (itf > 0) then
+      thetaf = values(itf)
+    else if (relevant) then
+      thetaf = maxval(abs(fit%deck%thetaf_deg(1:np)))
+    end if
+  end subroutine law_angles
 
   !> The deck's value of property ip (plane 1 for per-plane properties).
   pure real(dp) function deck_value(deck, ip) result(v)

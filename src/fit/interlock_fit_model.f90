@@ -12,12 +12,11 @@ module interlock_fit_model
       prop_theta0, prop_thetaf, status_ok, format_integer, format_real
   use interlock_deck, only: deck_t, deck_case, deck_set_property
   use interlock_mixed_control, only: history_t, run_history, run_history_extrapolated
-  use interlock_fit_deck, only: fit_t, curve_t, split_branches
+  use interlock_fit_deck, only: fit_t, curve_t, split_branches, law_angles
   use interlock_lm, only: lm_problem_t
   implicit none
   private
-  public :: fit_problem_t, fit_history, curve_model, history_output, bound_state, law_project, &
-            law_angles
+  public :: fit_problem_t, fit_history, curve_model, history_output, bound_state, law_project
 
   !> One stage's least-squares problem: all parameters' current values, the free ones of the
   !> stage (x of the problem) and its curves.
@@ -124,35 +123,6 @@ contains
       values(it0) = min(thetaf, fit%upper(it0))
     end if
   end subroutine law_project
-
-  !> The magnitudes of theta_0 and theta_f at `values` (a free parameter's value, else the
-  !> deck's: the smallest |theta_0| of its planes), their indices among the parameters (0: not
-  !> free), and whether theta_f applies (freed or given by the deck; otherwise it follows
-  !> theta_0: no wear).
-  pure subroutine law_angles(fit, values, it0, itf, theta0, thetaf, relevant)
-    type(fit_t), intent(in) :: fit
-    real(dp), intent(in) :: values(:)
-    integer, intent(out) :: it0, itf
-    real(dp), intent(out) :: theta0, thetaf
-    logical, intent(out) :: relevant
-    integer :: np
-    it0 = findloc(fit%property, prop_theta0, dim=1)
-    itf = findloc(fit%property, prop_thetaf, dim=1)
-    np = 1
-    if (.not. fit%deck%paper_ria) np = fit%deck%n_planes
-    if (it0 > 0) then
-      theta0 = values(it0)
-    else
-      theta0 = minval(abs(fit%deck%theta0_deg(1:np)))
-    end if
-    relevant = itf > 0 .or. fit%deck%thetaf_given
-    thetaf = 0.0_dp
-    if (itf > 0) then
-      thetaf = values(itf)
-    else if (relevant) then
-      thetaf = maxval(abs(fit%deck%thetaf_deg(1:np)))
-    end if
-  end subroutine law_angles
 
   !> Where each parameter ended: '' (inside), 'lower bound', 'upper bound', or the law's limit
   !> 'theta_f = theta_0' (theta_f and theta_0 both on it, to 1e-8 relative, about the
