@@ -283,7 +283,31 @@ def coupled(fit, history):
             assert abs(values[name] - true) <= 1e-6 * true, (name, values[name])
         assert values["thetaf_deg"] <= values["theta0_deg"], values
         run([history, "--output-dir", work, os.path.join(work, "coupled_fitted.nml")], work)
-    print("the optimum on theta_f = theta_0: converged, written, reported at the limit")
+        # the same curves with slip and dilation in metres: warned before the fit, and the
+        # results (far off, at bounds) written with the warning stored
+        with open(os.path.join(work, "nowear.csv")) as f:
+            lines = f.read().splitlines()
+        head = lines[0].split(",")
+        cols = [head.index("slip"), head.index("dilation")]
+        with open(os.path.join(work, "metres.csv"), "w") as f:
+            f.write(lines[0] + "\n")
+            for line in lines[1:]:
+                v = line.split(",")
+                for c in cols:
+                    v[c] = repr(float(v[c]) / 1000.0)
+                f.write(",".join(v) + "\n")
+        with open(os.path.join(work, "coupled.nml")) as f:
+            text = f.read().replace("nowear.csv", "metres.csv")
+        with open(os.path.join(work, "metres.nml"), "w") as f:
+            f.write(text)
+        rc, out, err = fit_run(fit, "metres.nml", work, "-q")
+        assert rc in (0, 2), (rc, err)
+        assert "(1000 times more): is the curve in other units than the deck (mm, MPa; a slip " \
+               "in metres)?" in out, out
+        with h5py.File(os.path.join(work, "metres_fit.h5"), "r") as f:
+            assert any("slip in metres" in str(x) for x in f.attrs["warnings"])
+    print("the optimum on theta_f = theta_0: converged, written, reported at the limit; "
+          "a slip in metres warned about")
 
 
 def inputs(fit, history):
