@@ -13,7 +13,7 @@
 !> usage on stderr and exits with status 2; --help prints it on stdout (status 0).
 program interlock_bench
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
-  use interlock_cli, only: exit_program
+  use interlock_cli, only: exit_program, folder_writable
   use interlock, only: dp, max_planes, interlock_material_t, interlock_solver_t, interlock_state_t, &
       interlock_info_t, interlock_update, interlock_state_init, scheme_explicit, scheme_implicit, &
       scheme_trapezoidal, scheme_name, status_ok, interlock_version_string, n_properties, &
@@ -161,6 +161,10 @@ contains
     end do
     if (len_trim(dump_scene) == 0 .and. profile_set < 0 .and. len_trim(out_dir) == 0) &
       call usage('--out DIR is required: the existing folder for the CSV files')
+    ! checked before any work: the CSV files are written only at the end of each study
+    if (len_trim(out_dir) > 0 .and. .not. folder_writable(trim(out_dir))) &
+      call usage('--out ' // trim(out_dir) // ': no such folder, or not writable (it must ' // &
+                 'exist and be writable)')
   end subroutine parse_arguments
 
   !> Print the usage and end: on stdout with status 0 when `message` is empty (--help), else

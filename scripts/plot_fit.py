@@ -5,7 +5,9 @@ usage: plot_fit.py FIT.h5 [-o FOLDER] [--combined PNG]
 
 One PNG per curve, FOLDER/STEM_NAME.png (default FOLDER: the file's folder): the data in the
 window (dots), the fitted history along the same abscissa (line), with the fitted values and
-standard errors in the title. --combined also writes all curves side by side in one PNG.
+standard errors in the title; each loading cycle in its own colour (a cycle: from the first
+point until the abscissa, after turning twice, passes its first value again in its first
+direction). --combined also writes all curves side by side in one PNG, in the deck's order.
 Needs h5py and matplotlib (/usr/bin/python3).
 """
 import argparse
@@ -28,11 +30,51 @@ def text(value):
     return value.decode() if isinstance(value, (bytes, np.bytes_)) else str(value)
 
 
+def cycles(x):
+    """The cycle of each point of a path x (0, 1, ...): a new cycle starts where x, after
+    turning twice, passes its first value again in its first direction."""
+    x = np.asarray(x, dtype=float)
+    cycle = np.zeros(x.size, dtype=int)
+    if x.size < 3:
+        return cycle
+    tol = 1e-6 * (x.max() - x.min() or 1.0)
+    x0, k, turns, direction, first, extreme = x[0], 0, 0, 0, 0, x[0]
+    for i in range(1, x.size):
+        step = x[i] - extreme
+        if direction == 0:
+            if abs(step) > tol:
+                direction = first = 1 if step > 0 else -1
+                extreme = x[i]
+        elif step * direction >= 0:
+            extreme = x[i]
+        elif abs(step) > tol:
+            turns += 1
+            direction = -direction
+            extreme = x[i]
+        if turns >= 2 and direction == first and (x[i] - x0) * first > tol >= (x[i - 1] - x0) * first:
+            k += 1
+            turns = 0
+        cycle[i] = k
+    return cycle
+
+
 def draw(ax, name, g):
     x, y = g["x"][()], g["y"][()]
+    hx, hy = g["history_x"][()], g["history_y"][()]
+    cx, ch = cycles(x), cycles(hx)
     step = max(1, x.size // 400)
-    ax.plot(x[::step], y[::step], ".", ms=3, color="0.45", label=f"data ({x.size} points)")
-    ax.plot(g["history_x"][()], g["history_y"][()], "-", lw=1.2, color="C0", label="fit")
+    for k in range(max(cx.max(), ch.max()) + 1):
+        colour = f"C{k % 10}"
+        tag = f" cycle {k + 1}" if max(cx.max(), ch.max()) > 0 else ""
+        on = np.flatnonzero(cx == k)[::step]
+        if on.size:
+            ax.plot(x[on], y[on], ".", ms=3, color=colour, alpha=0.45,
+                    label=f"data{tag} ({np.count_nonzero(cx == k)} points)")
+        rows = np.flatnonzero(ch == k)
+        if rows.size:
+            if k > 0 and rows[0] > 0:       # join the line to the previous cycle's end
+                rows = np.concatenate([[rows[0] - 1], rows])
+            ax.plot(hx[rows], hy[rows], "-", lw=1.2, color=colour, label=f"fit{tag}")
     ax.set_xlabel(LABELS.get(text(g.attrs["along"]), text(g.attrs["along"])))
     ax.set_ylabel(LABELS.get(text(g.attrs["against"]), text(g.attrs["against"])))
     ax.set_title(f"{name}: rms {float(g.attrs['rms']):.3g}", fontsize=9)
@@ -49,11 +91,12 @@ def main():
     folder = a.output_dir or os.path.dirname(os.path.abspath(a.file))
     stem = os.path.splitext(os.path.basename(a.file))[0]
     with h5py.File(a.file, "r") as f:
-        names = [s.strip() for s in text(f.attrs["parameters"]).split(",")]
+        names = [text(s) for s in f.attrs["parameters"]]
         values, se = f.attrs["values"], f.attrs["std_error"]
         fitted = ", ".join(f"{n} = {v:.5g}" + (f" ± {s:.2g}" if s < 1e300 else "")
                            for n, v, s in zip(names, values, se))
-        curves = sorted(f["curves"])
+        # the deck's order (HDF5 lists groups alphabetically)
+        curves = [text(c) for c in f.attrs["curve_names"]]
         written = []
         for name in curves:
             fig, ax = plt.subplots(figsize=(6, 4.2))

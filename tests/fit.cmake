@@ -2,7 +2,10 @@
 # interlock-history (granite and the Table 5 concrete-bar set; without noise to 1e-6, with 2 %
 # noise within two standard errors), the staged granite deck of inputs/fit (section 4.1.5's
 # order; data generated at test time), and the bad fit decks of tests/data/bad_fit_decks
-# (NAME.nml + NAME.expected, checked by the history's bad-deck runner).
+# (NAME.nml + NAME.expected, checked by the history's bad-deck runner); an optimum on the law's
+# limit theta_f = theta_0, inputs read as written, no file when the fitted deck cannot be
+# written, the discretization check of the staged deck, and the unit suites of the solver and
+# the CSV reader.
 if(NOT TARGET interlock-fit)
   return()
 endif()
@@ -20,7 +23,12 @@ add_test(NAME fit_staged_granite
           $<TARGET_FILE:interlock-fit> $<TARGET_FILE:interlock-history> staged
           ${PROJECT_SOURCE_DIR}/inputs/fit/granite_staged.nml)
 set_tests_properties(fit_staged_granite PROPERTIES LABELS fit TIMEOUT 300)
-foreach(mode files identifiability)
+add_test(NAME fit_discretization_granite
+  COMMAND ${INTERLOCK_FIT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_fit.py
+          $<TARGET_FILE:interlock-fit> $<TARGET_FILE:interlock-history> discretization
+          ${PROJECT_SOURCE_DIR}/inputs/fit/granite_staged.nml)
+set_tests_properties(fit_discretization_granite PROPERTIES LABELS fit TIMEOUT 600)
+foreach(mode files identifiability coupled inputs deckfail)
   add_test(NAME fit_${mode}
     COMMAND ${INTERLOCK_FIT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_fit.py
             $<TARGET_FILE:interlock-fit> $<TARGET_FILE:interlock-history> ${mode})
@@ -34,3 +42,8 @@ foreach(expected IN LISTS fit_bad_decks)
             $<TARGET_FILE:interlock-fit> ${expected})
   set_tests_properties(fit_bad_deck_${name} PROPERTIES LABELS fit TIMEOUT 120)
 endforeach()
+# The unit suites of the solver and of the CSV reader (pFUnit).
+interlock_add_pfunit_suite(fit_lm TEST_SOURCES test_lm.pf LINK_LIBRARIES interlock_fit_core
+  LABELS fit)
+interlock_add_pfunit_suite(fit_csv TEST_SOURCES test_csv.pf LINK_LIBRARIES interlock_fit_core
+  LABELS fit)

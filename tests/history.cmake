@@ -71,8 +71,9 @@ set_tests_properties(history_stress PROPERTIES LABELS history TIMEOUT 300)
 # the extrapolated history converges at order > 1.7 and the plain one at ~1, and it is exactly
 # composed of the two runs; (b) without wear (Fig. 5) it equals the plain history to round-off;
 # a case that stops names the run that failed; (c) a deck with extrapolated cases (Fig. 12
-# scene, zeta_0 sweep) follows the layout contract.
-foreach(mode wear nowear stopped preload)
+# scene, zeta_0 sweep) follows the layout contract; (d) a one-step segment in which planes
+# slide or wear is warned about.
+foreach(mode wear nowear stopped preload jumps)
   add_test(NAME history_extrapolate_${mode}
     COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_extrapolate.py
             $<TARGET_FILE:interlock-history> ${INTERLOCK_TEST_DATA}
@@ -112,10 +113,11 @@ endforeach()
 
 # Reliability (README "Reliability", issue 10): the output never replaces the deck or a file that
 # is not an earlier result; a full disk (file-size limit; a 64 kB tmpfs where mounting is
-# allowed, else skipped) ends with exit 1 and a message, no crash, no file; SIGINT, SIGTERM and
-# SIGHUP remove the temporary file (SIGKILL leaves it); a 2e6-step history keeps its peak
+# allowed, else skipped) ends with exit 1 and a message, no crash, no file; every catchable
+# signal that ends the program (SIGPIPE of `| head -1` too) removes the temporary file (SIGKILL
+# leaves it); an output name of 255 characters is written; a 2e6-step history keeps its peak
 # memory below 64 MB (rows streamed to the file).
-foreach(mode overwrite fulldisk tmpfs signals memory)
+foreach(mode overwrite fulldisk tmpfs signals pipe longname memory)
   add_test(NAME history_reliability_${mode}
     COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_reliability.py
             $<TARGET_FILE:interlock-history> ${PROJECT_SOURCE_DIR}/inputs/fig6.nml

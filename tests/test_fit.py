@@ -5,6 +5,10 @@ usage: test_fit.py FIT HISTORY recovery SET NOISE   SET: granite | table5; NOISE
        test_fit.py FIT HISTORY staged DECK.nml      the staged deck of inputs/fit/ (section 4.1.5)
        test_fit.py FIT HISTORY files                results replace results, never other files
        test_fit.py FIT HISTORY identifiability      a parameter the curves ignore is reported
+       test_fit.py FIT HISTORY coupled              an optimum on the law's limit theta_f = theta_0
+       test_fit.py FIT HISTORY inputs               inputs read as they are written
+       test_fit.py FIT HISTORY deckfail             the fitted deck cannot be written: no file
+       test_fit.py FIT HISTORY discretization DECK  the discretization check of the staged deck
 
 The data are the curves of a history with known parameters (scripts/fit_make_data.py; noise:
 independent normal noise of 2 % of each curve's largest value, numpy default_rng(12), the same on
@@ -26,11 +30,13 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 MAKE_DATA = os.path.join(HERE, "..", "scripts", "fit_make_data.py")
+DATA = os.path.join(HERE, "data", "fit")
+NOISY = ("Backtrace", "Program received signal", "Fortran runtime error", "ERROR STOP")
 
 # name: (history part of the deck, cycle period/start, [(parameter, true, start, lower, upper)])
 SETS = {
     "granite": ("""&interface
-  sigma0_n = 0.025, sigma0_t = 0.025, gc = 0.0005, eta = 0.99, mu = 0.690, h_n = 4.0
+  sigma0_n = 0.025, sigma0_t = 0.025, gc = 0.0005, eta = 0.99, mu = 0.6898538, h_n = 4.0
 /
 &microplanes
   theta0_deg = 30.0, thetaf_deg = 9.0, zeta0 = 6.666
@@ -99,7 +105,7 @@ def run(command, cwd):
 def check_outputs(fit_h5, fitted_deck, history, work):
     with h5py.File(fit_h5, "r") as f:
         assert f.attrs["program"] == "interlock-fit"
-        names = [s.strip() for s in f.attrs["parameters"].split(",")]
+        names = [str(s) for s in f.attrs["parameters"]]
         values = np.asarray(f.attrs["values"])
         se = np.asarray(f.attrs["std_error"])
         corr = f["correlation"][()]
@@ -167,6 +173,14 @@ def staged(fit, history, deck_src):
                                  os.path.join(work, stem + "_fitted.nml"), history, work)
         with open(deck) as f:
             text = f.read()
+        # the plot script: one PNG per curve in the deck's order, and the combined one
+        plot, _ = run([sys.executable, os.path.join(HERE, "..", "scripts", "plot_fit.py"),
+                       os.path.join(work, stem + "_fit.h5"), "--combined",
+                       os.path.join(work, "all.png")], work)
+        written = [os.path.basename(x) for x in plot.split()]
+        assert written == [f"{stem}_fit_{c}.png" for c in
+                           ("shear2", "dilation2", "shear1", "dilation1")] + ["all.png"], written
+        assert all(os.path.getsize(os.path.join(work, x)) > 0 for x in written)
     bad = []
     for name, true in truth.items():
         value = got[name][0]
@@ -234,16 +248,171 @@ def identifiability(fit, history):
     print("zeta0 reported not identifiable without wear")
 
 
+def fit_run(fit, deck, work, *args):
+    """Run the fit; (status, stdout, stderr). No runtime error or backtrace either way."""
+    r = subprocess.run([fit, *args, deck], cwd=work, capture_output=True, text=True, timeout=600)
+    noisy = [w for w in NOISY if w in r.stdout + r.stderr]
+    assert not noisy, (noisy, r.stderr[-2000:])
+    return r.returncode, r.stdout, r.stderr
+
+
+def coupled(fit, history):
+    """Data of an unworn joint (theta_f = theta_0 = 20 deg), four parameters free from the deck's
+    worn values: the optimum lies on the law's limit theta_f = theta_0. Every difference step
+    stays inside the admissible set, the fit converges there (status 0), writes its results, and
+    reports theta_f and theta_0 at that limit (terminal and HDF5 `at_bound`); zeta_0 is then not
+    identifiable (without wear the curves do not depend on it)."""
+    with tempfile.TemporaryDirectory() as work:
+        for name in ("gen.nml", "coupled.nml"):
+            shutil.copy(os.path.join(DATA, name), work)
+        run([sys.executable, MAKE_DATA, history, "gen.nml", "nowear.csv"], work)
+        rc, out, err = fit_run(fit, "coupled.nml", work)
+        print(out, err)
+        assert rc == 0, (rc, err)
+        assert "AT THE LAW'S LIMIT theta_f = theta_0" in out, out
+        assert "not identifiable from these curves: zeta0" in out, out
+        with h5py.File(os.path.join(work, "coupled_fit.h5"), "r") as f:
+            names = [str(x) for x in f.attrs["parameters"]]
+            values = dict(zip(names, f.attrs["values"]))
+            at = dict(zip(names, [str(x) for x in f.attrs["at_bound"]]))
+            assert f["stages"]["1"].attrs["converged"] == 1
+            assert "discretization_change" in f.attrs
+        assert names == ["h_n", "theta0_deg", "thetaf_deg", "zeta0"], names
+        assert at["thetaf_deg"] == at["theta0_deg"] == "theta_f = theta_0", at
+        for name, true in (("h_n", 2.5), ("theta0_deg", 20.0), ("thetaf_deg", 20.0)):
+            assert abs(values[name] - true) <= 1e-6 * true, (name, values[name])
+        assert values["thetaf_deg"] <= values["theta0_deg"], values
+        run([history, "--output-dir", work, os.path.join(work, "coupled_fitted.nml")], work)
+        # the same curves with slip and dilation in metres: warned before the fit, and the
+        # results (far off, at bounds) written with the warning stored
+        with open(os.path.join(work, "nowear.csv")) as f:
+            lines = f.read().splitlines()
+        head = lines[0].split(",")
+        cols = [head.index("slip"), head.index("dilation")]
+        with open(os.path.join(work, "metres.csv"), "w") as f:
+            f.write(lines[0] + "\n")
+            for line in lines[1:]:
+                v = line.split(",")
+                for c in cols:
+                    v[c] = repr(float(v[c]) / 1000.0)
+                f.write(",".join(v) + "\n")
+        with open(os.path.join(work, "coupled.nml")) as f:
+            text = f.read().replace("nowear.csv", "metres.csv")
+        with open(os.path.join(work, "metres.nml"), "w") as f:
+            f.write(text)
+        rc, out, err = fit_run(fit, "metres.nml", work, "-q")
+        assert rc in (0, 2), (rc, err)
+        assert "(1000 times more): is the curve in other units than the deck (mm, MPa; a slip " \
+               "in metres)?" in out, out
+        with h5py.File(os.path.join(work, "metres_fit.h5"), "r") as f:
+            assert any("slip in metres" in str(x) for x in f.attrs["warnings"])
+    print("the optimum on theta_f = theta_0: converged, written, reported at the limit; "
+          "a slip in metres warned about")
+
+
+def inputs(fit, history):
+    """Inputs read as written: a CSV with a byte-order mark and no header keeps its first row;
+    a number of 72 characters is read whole (0.1, not cut to 0.0); one curve_weight for two
+    curves applies to both (and says so)."""
+    with tempfile.TemporaryDirectory() as work:
+        for name in os.listdir(DATA):
+            shutil.copy(os.path.join(DATA, name), work)
+        rc, out, err = fit_run(fit, "bom_noheader.nml", work, "-q")
+        assert rc == 0, err
+        with h5py.File(os.path.join(work, "bom_noheader_fit.h5"), "r") as f:
+            x = f["curves"]["shear"]["x"][()]
+        assert x.size == 201 and x[0] == 0.0, (x.size, x[:2])
+        print("BOM without header: all 201 rows, the first slip 0.0")
+        rc, out, err = fit_run(fit, "field_70chars.nml", work, "-q")
+        assert rc == 0, err
+        with h5py.File(os.path.join(work, "field_70chars_fit.h5"), "r") as f:
+            y = f["curves"]["shear"]["y"][()]
+        assert y[99] == 0.1, y[99]
+        print("a 72-character field read whole: 0.1")
+        run([sys.executable, MAKE_DATA, history, "gen_worn.nml", "worn.csv"], work)
+        rc, out, err = fit_run(fit, "b16_short_weight.nml", work, "-q")
+        assert rc == 0, err
+        assert "curve_weight gives one value for 2 curves: it applies to every curve" in out, out
+        with h5py.File(os.path.join(work, "b16_short_weight_fit.h5"), "r") as f:
+            w = [f["curves"][c]["weight"][()] for c in ("shear", "dilation")]
+            assert any("curve_weight" in str(x) for x in f.attrs["warnings"])
+        assert all(np.all(v == 1.0) for v in w), [v[:3] for v in w]
+        print("one curve_weight for two curves: 1.0 on both, said")
+
+
+def deckfail(fit, history):
+    """When the fitted deck cannot be written (its temporary name is taken by a folder), the
+    fit exits 1 and writes nothing: an earlier DECK_fit.h5 stays as it was, no new file appears,
+    the folder that took the name is left alone."""
+    with tempfile.TemporaryDirectory() as work:
+        for name in ("bom_noheader.nml", "curve_bom_noheader.csv"):
+            shutil.copy(os.path.join(DATA, name), work)
+        rc, _, err = fit_run(fit, "bom_noheader.nml", work, "-q")
+        assert rc == 0, err
+        os.remove(os.path.join(work, "bom_noheader_fitted.nml"))
+        earlier = open(os.path.join(work, "bom_noheader_fit.h5"), "rb").read()
+        r = subprocess.run(["bash", "-c", 'mkdir bom_noheader_fitted.nml.tmp-$$ && exec "$0" -q '
+                            'bom_noheader.nml', fit], cwd=work, capture_output=True, text=True,
+                           timeout=600)
+        print(r.stdout, r.stderr)
+        assert r.returncode == 1, r.returncode
+        assert "cannot write the fitted deck" in r.stderr, r.stderr
+        assert open(os.path.join(work, "bom_noheader_fit.h5"), "rb").read() == earlier
+        left = sorted(os.listdir(work))
+        assert not os.path.exists(os.path.join(work, "bom_noheader_fitted.nml")), left
+        assert [n for n in left if ".tmp-" in n and not os.path.isdir(os.path.join(work, n))] == []
+        assert any(os.path.isdir(os.path.join(work, n)) for n in left), left
+    print("exit 1: the fit file not replaced, no fitted deck, the folder left alone")
+
+
+def discretization(fit, history, deck_src):
+    """The discretization check on the shipped staged granite deck with 2 % noise (the docs'
+    example): printed and stored, every change below 0.1 standard error. The same data fitted
+    with the implicit scheme at 100 steps per mm (first order) moves theta_0 by more than 0.1
+    standard error, and the check says so: it can fail."""
+    with tempfile.TemporaryDirectory() as work:
+        deck = os.path.join(work, "granite.nml")
+        shutil.copy(deck_src, deck)
+        run([sys.executable, MAKE_DATA, history, deck, os.path.join(work, "granite_cycles.csv"),
+             "--cycle-start", "1", "--cycle-period", "20", "--noise", "0.02", "--seed", "12"], work)
+        with open(deck) as f:
+            text = f.read()
+        coarse = text.replace("scheme = 'trapezoidal'", "scheme = 'implicit'")
+        coarse = coarse.replace("steps = 1, 1000, 2000, 1000", "steps = 1, 500, 1000, 500")
+        assert coarse != text
+        with open(os.path.join(work, "implicit100.nml"), "w") as f:
+            f.write(coarse)
+        ratios = {}
+        for stem in ("granite", "implicit100"):
+            rc, out, err = fit_run(fit, stem + ".nml", work, "-q")
+            print(out)
+            assert rc == 0, err
+            assert "discretization check" in out
+            with h5py.File(os.path.join(work, stem + "_fit.h5"), "r") as f:
+                names = [str(x) for x in f.attrs["parameters"]]
+                ratio = np.asarray(f.attrs["discretization_change_se"])
+                change = np.asarray(f.attrs["discretization_change"])
+                se = np.asarray(f.attrs["std_error"])
+                assert f.attrs["discretization_check"] == ""
+            assert np.allclose(ratio, change / se), (ratio, change / se)
+            ratios[stem] = dict(zip(names, ratio))
+            assert ("the steps are fine enough" in out) == all(abs(ratio) < 0.1), out
+            print(stem, {n: f"{r:.4f}" for n, r in ratios[stem].items()})
+        assert all(abs(r) < 0.1 for r in ratios["granite"].values()), ratios["granite"]
+        assert abs(ratios["implicit100"]["theta0_deg"]) >= 0.1, ratios["implicit100"]
+    print("discretization check: shipped deck below 0.1 standard error, implicit 100/mm above")
+
+
 def main():
     fit, history, mode = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2]), sys.argv[3]
+    modes = {"identifiability": identifiability, "files": files, "coupled": coupled,
+             "inputs": inputs, "deckfail": deckfail}
     if mode == "recovery":
         recovery(fit, history, sys.argv[4], float(sys.argv[5]))
-    elif mode == "identifiability":
-        identifiability(fit, history)
-    elif mode == "files":
-        files(fit, history)
-    elif mode == "staged":
-        staged(fit, history, sys.argv[4])
+    elif mode in ("staged", "discretization"):
+        {"staged": staged, "discretization": discretization}[mode](fit, history, sys.argv[4])
+    elif mode in modes:
+        modes[mode](fit, history)
     else:
         sys.exit(__doc__)
     print("ok")

@@ -23,6 +23,10 @@ usage: test_history_extrapolate.py PROGRAM DATA_DIR WORK_DIR MODE [K_REF K1 K2 .
                 K_REF instead (no check; the table of docs/history-output.md: 12800 100 200
                 400 800; the environment variable INTERLOCK_REFERENCE_PROGRAM names another
                 program for the reference run).
+  jumps         The warning on a load jump in which planes slide or wear: Fig. 12's one-step
+                preload to -2 MPa (planes slide) is warned about, plain and extrapolated, and the
+                warning names the segment and the remedy (more steps in it); the same preload in
+                20 steps, and the granite preload of Fig. 14 (the planes stick), are not.
   stopped       An overloaded history (tangential traction beyond the interface's capacity):
                 exit status 2, the case stops at the same step as the plain run, its status
                 names the run that failed, and the rows before are kept.
@@ -330,8 +334,38 @@ def mode_preload(program, data, work, counts=()):
           "when the preload was doubled)")
 
 
+def mode_jumps(program, data, work):
+    inputs = os.path.join(data, "..", "..", "inputs")
+    with open(os.path.join(inputs, "fig12.nml")) as f:
+        base = f.read()
+    if "steps = 1, 2000, 4000, 4000" not in base or "scheme = 'implicit'" not in base:
+        check(False, "inputs/fig12.nml: the steps line or the scheme line changed; update the test")
+        return
+    variants = {
+        "jump_plain": (base.replace("steps = 1, 2000, 4000, 4000", "steps = 1, 200, 400, 400"),
+                       True),
+        "jump_extrapolated": (base.replace("steps = 1, 2000, 4000, 4000", "steps = 1, 200, 400, 400")
+                              .replace("scheme = 'implicit'", "scheme = 'implicit', extrapolate = .true."),
+                              True),
+        "jump_refined": (base.replace("steps = 1, 2000, 4000, 4000", "steps = 20, 200, 400, 400"),
+                         False),
+    }
+    with open(os.path.join(inputs, "fig14.nml")) as f:
+        variants["jump_sticks"] = (f.read(), False)
+    for stem, (text, warned) in variants.items():
+        path = os.path.join(work, stem + ".nml")
+        with open(path, "w") as f:
+            f.write(text)
+        r = subprocess.run([program, "--output-dir", work, path], capture_output=True, text=True)
+        said = "warning: planes slide or wear within a segment of one step (t = 0 to 1)" in r.stdout
+        check(r.returncode == 0 and said == warned and
+              (not warned or "give that segment more steps" in r.stdout),
+              f"{stem}: exit status {r.returncode}, " + ("warned" if said else "no warning")
+              + f" (expected {'a warning' if warned else 'none'})")
+
+
 def main(argv):
-    if len(argv) < 4 or argv[3] not in ("wear", "nowear", "stopped", "preload") or \
+    if len(argv) < 4 or argv[3] not in ("wear", "nowear", "stopped", "preload", "jumps") or \
             (len(argv) > 4 and argv[3] != "preload"):
         print(__doc__)
         return 2
@@ -341,8 +375,8 @@ def main(argv):
     if mode == "preload":
         mode_preload(program, data, work, counts)
     else:
-        {"wear": mode_wear, "nowear": mode_nowear, "stopped": mode_stopped}[mode](program, data,
-                                                                                  work)
+        {"wear": mode_wear, "nowear": mode_nowear, "stopped": mode_stopped,
+         "jumps": mode_jumps}[mode](program, data, work)
     print(f"history_extrapolate {mode}: {failures} failed")
     return 1 if failures else 0
 

@@ -13,10 +13,16 @@ usage: test_history_reliability.py PROGRAM DECK WORK_DIR MODE
                   message "cannot write", no crash (no SIGSEGV, no backtrace), no file left.
        tmpfs      The same on a real full file system, a 64 kB tmpfs (ENOSPC): needs the
                   right to mount; skipped (exit 77) where mounting is not possible.
-       signals    SIGINT, SIGTERM and SIGHUP during a long run: the run ends by that signal,
-                  its NAME.h5.tmp-PID is removed, NAME.h5 is not created (an earlier NAME.h5 is
-                  left as it was); SIGKILL cannot be caught: the temporary file stays, the
-                  earlier NAME.h5 is still untouched.
+       signals    SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGUSR1, SIGUSR2, SIGALRM and
+                  SIGXCPU during a long run: the run ends by that signal, its NAME.h5.tmp-PID
+                  is removed, NAME.h5 is not created (an earlier NAME.h5 is left as it was), no
+                  backtrace; SIGKILL cannot be caught: the temporary file stays, the earlier
+                  NAME.h5 is still untouched.
+       pipe       `interlock-history DECK | head -1` on a sweep of many cases: the reader
+                  closes the pipe, the next line kills the program by SIGPIPE, and its
+                  temporary file is removed (no result file either).
+       longname   An output name of 255 characters (the longest file name): written, and no
+                  temporary file left (the temporary name is shortened to fit).
        memory     A 2,000,000-step history (separation-driven, the paper's 3-plane RIA) with
                   &output every = 1000: peak resident memory of the program (VmHWM) below
                   64 MB (rows are streamed to the file; 450-540 MB when the whole history was
@@ -196,7 +202,8 @@ def mode_signals(program, deck, work):
     subprocess.run([program, os.path.join(work, "earlier.nml")], cwd=work, check=True,
                    capture_output=True)
     earlier = open(final, "rb").read()
-    for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGKILL):
+    for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT, signal.SIGPIPE,
+                signal.SIGUSR1, signal.SIGUSR2, signal.SIGALRM, signal.SIGXCPU, signal.SIGKILL):
         name = signal.Signals(sig).name
         for n in leftovers(work, stem + ".h5"):
             os.remove(os.path.join(work, n))
@@ -227,6 +234,36 @@ def mode_signals(program, deck, work):
             check(not os.path.exists(temp) and untouched,
                   f"{name}: {os.path.basename(temp)} removed, the earlier result untouched")
         check("Backtrace" not in err, f"{name}: no backtrace")
+
+
+def mode_pipe(program, deck, work):
+    sweep = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", "history",
+                         "pipe_sweep.nml")
+    shutil.copy(sweep, os.path.join(work, "p.nml"))
+    p = subprocess.Popen([program, "p.nml"], cwd=work, stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE)
+    first = p.stdout.readline()
+    p.stdout.close()
+    err = p.stderr.read().decode(errors="replace")
+    p.wait(timeout=300)
+    check(b"case 0001" in first, f"the first line: {first!r}")
+    check(p.returncode == -signal.SIGPIPE, f"ended by SIGPIPE (returncode {p.returncode}, "
+          f"expected {-signal.SIGPIPE}; a shell shows 141)")
+    left = sorted(os.listdir(work))
+    check(left == ["p.nml"], f"no temporary and no result file left ({left})")
+    check("Backtrace" not in err, "no backtrace")
+
+
+def mode_longname(program, deck, work):
+    name = "x" * 252 + ".h5"
+    deck_with_output(deck, os.path.join(work, "long.nml"), name)
+    r = subprocess.run([program, "long.nml"], cwd=work, capture_output=True, text=True,
+                       timeout=300)
+    check(r.returncode == 0, f"an output name of {len(name)} characters: exit status "
+          f"{r.returncode} {r.stderr.strip()[:300]}")
+    left = sorted(os.listdir(work))
+    check(left == sorted(["long.nml", name]), f"the file written, nothing else ({len(left)} "
+          "names)")
 
 
 def mode_memory(program, deck, work):
@@ -270,7 +307,7 @@ def mode_memory(program, deck, work):
 
 def main(argv):
     modes = {"overwrite": mode_overwrite, "fulldisk": mode_fulldisk, "signals": mode_signals,
-             "memory": mode_memory,
+             "memory": mode_memory, "pipe": mode_pipe, "longname": mode_longname,
              "tmpfs": lambda program, deck, work: mode_fulldisk(program, deck, work, True)}
     if len(argv) != 4 or argv[3] not in modes:
         print(__doc__)

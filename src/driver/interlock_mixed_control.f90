@@ -55,6 +55,10 @@ module interlock_mixed_control
     !> variables and energies are those of the run with doubled steps, iterations and substeps
     !> the sums of both runs (run_history_extrapolated)
     logical :: extrapolated = .false.
+    !> The one-step segments (load jumps) in which a plane slid or wore, as "t = a to b, ...",
+    !> '' if none: their end state is the scheme's, not the law's (one step of a scheme of
+    !> order one or two over the whole jump), and more steps elsewhere do not change it.
+    character(len=:), allocatable :: sliding_jumps
   contains
     procedure(put_row), deferred :: put
   end type history_sink_t
@@ -129,10 +133,25 @@ contains
         call keep_row(hist, state_row(time, new, sigma, iterations, substeps), steps, iseg, j, &
                       stat)
         if (stat /= 0) return
+        if (steps(iseg) == 1) call note_sliding_jump(hist, mat%n_planes, old, new, times, iseg)
         old = new
       end do
     end do
   end subroutine run_history
+
+  !> A one-step segment iseg from `old` to `new`: noted in hist%sliding_jumps where a plane slid
+  !> (its frictional slip changed) or wore (its inclination changed).
+  subroutine note_sliding_jump(hist, np, old, new, times, iseg)
+    class(history_sink_t), intent(inout) :: hist
+    integer, intent(in) :: np, iseg
+    type(interlock_state_t), intent(in) :: old, new
+    real(dp), intent(in) :: times(:)
+    if (.not. (any(abs(new%sf(1:np) - old%sf(1:np)) > 0.0_dp) .or. &
+               any(abs(new%theta(1:np) - old%theta(1:np)) > 0.0_dp))) return
+    if (len(hist%sliding_jumps) > 0) hist%sliding_jumps = hist%sliding_jumps // ', '
+    hist%sliding_jumps = hist%sliding_jumps // 't = ' // format_real(times(iseg)) // ' to ' // &
+                         format_real(times(iseg + 1))
+  end subroutine note_sliding_jump
 
   !> Global Richardson extrapolation of a history: the run with the path's steps (n, the
   !> "coarse" run) and the run with the step count of every segment of more than one step
@@ -204,6 +223,7 @@ contains
         row%traction = 2.0_dp * sigma_f - sigma_c
         call keep_row(hist, row, steps, iseg, j, stat)
         if (stat /= 0) return
+        if (steps(iseg) == 1) call note_sliding_jump(hist, mat%n_planes, old_c, new_c, times, iseg)
         old_c = new_c
       end do
     end do
@@ -237,6 +257,7 @@ contains
     hist%n_rows = 0
     hist%extrapolated = extrapolated
     hist%status = 'completed'
+    hist%sliding_jumps = ''
   end subroutine begin_history
 
   !> Hand the next row (step j of segment iseg) to the sink; stat /= 0 (the sink could not keep

@@ -1,13 +1,14 @@
 !> What the command-line programs share (interlock-history, interlock-query, interlock-bench,
 !> interlock-fuzz): ending with an exit status and nothing else. Fortran's `stop 2` and
 !> `error stop 2` print "STOP 2" / "ERROR STOP 2" (and, in the Debug build, a backtrace); a
-!> usage error must print only its message and the usage. And reading the command line whole.
+!> usage error must print only its message and the usage. And reading the command line whole,
+!> and whether a folder given on it can be written into (checked before any work is done).
 module interlock_cli
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-  use, intrinsic :: iso_c_binding, only: c_int
+  use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
   implicit none
   private
-  public :: exit_program, command_argument, command_text
+  public :: exit_program, command_argument, command_text, folder_writable
 
   interface
     !> _exit: ends the process at once, without the C exit handlers (HDF5 1.10's own handler
@@ -17,6 +18,11 @@ module interlock_cli
       import :: c_int
       integer(c_int), value :: status
     end subroutine c_exit
+    integer(c_int) function c_access(path, mode) bind(C, name='access')
+      import :: c_int, c_char
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_int), value :: mode
+    end function c_access
   end interface
 
 contains
@@ -48,5 +54,15 @@ contains
     allocate (character(len=length) :: text)
     if (length > 0) call get_command(text)
   end function command_text
+
+  !> `path` is a folder in which this process may create files: access(2) on "path/." for
+  !> writing and searching (only a folder has the entry ".").
+  logical function folder_writable(path)
+    character(len=*), intent(in) :: path
+    integer(c_int), parameter :: w_ok = 2_c_int, x_ok = 1_c_int
+    folder_writable = .false.
+    if (len(path) == 0) return
+    folder_writable = c_access(path // '/.' // c_null_char, ior(w_ok, x_ok)) == 0
+  end function folder_writable
 
 end module interlock_cli

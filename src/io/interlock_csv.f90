@@ -1,20 +1,31 @@
 !> Measured curves as CSV files: an optional header line of column names, then rows of numbers
-!> separated by commas (blanks around them ignored); blank lines and lines starting with '#' are
-!> skipped. Every value must be a finite number: NaN, Inf, an empty field or text is an error
-!> naming the file, the line and the column; so are rows of different lengths.
+!> separated by commas (blanks and tabs around them ignored); blank lines and lines starting
+!> with '#' are skipped, and a UTF-8 byte-order mark before the first line is ignored. Every value
+!> must be a decimal number of magnitude below max_magnitude (1e150: the fit squares and sums
+!> them), written as [sign] digits [. digits] [e|d [sign] digits]: NaN, Inf, an empty field,
+!> text, a larger value, a row of another length, a line of more than max_line characters and a
+!> header name of more than 64 characters or given twice are errors naming the file, the line
+!> and the column. A number may have any number of digits (it is read whole, never cut).
 module interlock_csv
   use interlock, only: dp, format_integer
   use interlock_files, only: path_kind, path_regular
+  use, intrinsic :: iso_fortran_env, only: iostat_eor
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   implicit none
   private
-  public :: csv_t, read_csv, csv_column
+  public :: csv_t, read_csv, csv_column, parse_number, max_magnitude, max_line
 
+  !> The longest line read (characters, without the line end).
   integer, parameter :: max_line = 65536
+  !> The longest header name.
+  integer, parameter :: name_len = 64
+  !> Values must be below this in magnitude: the fit squares and sums them (double precision
+  !> overflows above 1.8e308).
+  real(dp), parameter :: max_magnitude = 1.0e150_dp
 
   type :: csv_t
-    character(len=64), allocatable :: names(:)   !< header names ('' without a header)
-    real(dp), allocatable :: values(:, :)        !< (rows, columns)
+    character(len=name_len), allocatable :: names(:)   !< header names ('' without a header)
+    real(dp), allocatable :: values(:, :)              !< (rows, columns)
   end type csv_t
 
 contains
@@ -23,12 +34,12 @@ contains
     character(len=*), intent(in) :: path
     type(csv_t), intent(out) :: csv
     character(len=*), intent(out) :: message
-    integer :: u, ios, line, ncol, nrow, k
+    integer :: u, ios, line, ncol, nrow, k, n, j
     character(len=max_line) :: text
+    character(len=1) :: extra
     character(len=512) :: iomsg
     real(dp), allocatable :: row(:), rows(:, :), grown(:, :)
-    character(len=64), allocatable :: fields(:)
-    logical :: header_done
+    integer, allocatable :: first(:), last(:)
 
     message = ''
     if (path_kind(path) /= path_regular) then
@@ -43,39 +54,73 @@ contains
     ncol = 0
     nrow = 0
     line = 0
-    header_done = .false.
     allocate (rows(0, 0))
     do
-      read (u, '(a)', iostat=ios) text
-      if (ios /= 0) exit
+      text = ''
+      n = 0
+      read (u, '(a)', advance='no', size=n, iostat=ios) text
+      if (ios /= 0 .and. ios /= iostat_eor) exit
       line = line + 1
+      if (ios == 0) then
+        ! the buffer is full: the line goes on unless its end comes next
+        k = 0
+        read (u, '(a)', advance='no', size=k, iostat=ios) extra
+        if (ios /= iostat_eor .or. k > 0) then
+          message = path // ': line ' // format_integer(line) // ' is longer than ' // &
+                    format_integer(max_line) // ' characters (the longest line read)'
+          close (u)
+          return
+        end if
+      end if
+      if (line == 1 .and. n >= 3) then
+        ! a UTF-8 byte-order mark (EF BB BF) is not part of the first field
+        if (ichar(text(1:1)) == 239 .and. ichar(text(2:2)) == 187 .and. ichar(text(3:3)) == 191) &
+          text = text(4:)
+      end if
       k = len_trim(text)
       if (k > 0) then
         if (text(k:k) == achar(13)) text(k:k) = ' '
       end if
-      if (len_trim(text) == 0) cycle
       k = verify(text, ' ' // achar(9))
+      if (k == 0) cycle
       if (text(k:k) == '#') cycle
-      call split(trim(text), fields)
+      call split(text(1:len_trim(text)), first, last)
       if (ncol == 0) then
-        ncol = size(fields)
+        ncol = size(first)
         allocate (csv%names(ncol))
         csv%names = ''
         deallocate (rows)
         allocate (rows(ncol, 64))
-        if (.not. all_numbers(fields)) then
-          csv%names = fields
-          header_done = .true.
+        if (.not. all_numbers(text, first, last)) then
+          do j = 1, ncol
+            if (last(j) - first(j) + 1 > name_len) then
+              message = path // ': line ' // format_integer(line) // ', column ' // &
+                        format_integer(j) // ': the header name ''' // text(first(j):last(j)) // &
+                        ''' is longer than ' // format_integer(name_len) // ' characters'
+              close (u)
+              return
+            end if
+            csv%names(j) = text(first(j):last(j))
+            if (j > 1 .and. len_trim(csv%names(j)) > 0) then
+              if (any(csv%names(1:j - 1) == csv%names(j))) then
+                message = path // ': line ' // format_integer(line) // ', column ' // &
+                          format_integer(j) // ': the header name ''' // trim(csv%names(j)) // &
+                          ''' is given twice (a column must be named once)'
+                close (u)
+                return
+              end if
+            end if
+          end do
           cycle
         end if
       end if
-      if (size(fields) /= ncol) then
+      if (size(first) /= ncol) then
         message = path // ': line ' // format_integer(line) // ' has ' // &
-                  format_integer(size(fields)) // ' fields: every row needs ' // format_integer(ncol)
+                  format_integer(size(first)) // ' fields: every row needs ' // format_integer(ncol)
         close (u)
         return
       end if
-      call read_row(fields, row, message)
+      call read_row(text, first, last, row, message)
       if (len_trim(message) > 0) then
         message = path // ': line ' // format_integer(line) // ', ' // trim(message)
         close (u)
@@ -106,65 +151,148 @@ contains
     do csv_column = 1, size(csv%names)
       if (trim(csv%names(csv_column)) == trim(name)) return
     end do
-    read (name, *, iostat=ios) k
     csv_column = 0
-    if (ios == 0 .and. verify(trim(name), '0123456789') == 0) then
-      if (k >= 1 .and. k <= size(csv%names)) csv_column = k
-    end if
+    if (len_trim(name) == 0 .or. len_trim(name) > 9) return
+    if (verify(trim(name), '0123456789') /= 0) return
+    read (name, *, iostat=ios) k
+    if (ios == 0 .and. k >= 1 .and. k <= size(csv%names)) csv_column = k
   end function csv_column
 
-  subroutine split(text, fields)
+  !> The fields of a line: text(first(k):last(k)) without the blanks and tabs around them.
+  pure subroutine split(text, first, last)
     character(len=*), intent(in) :: text
-    character(len=64), allocatable, intent(out) :: fields(:)
-    integer :: n, i, start
+    integer, allocatable, intent(out) :: first(:), last(:)
+    integer :: n, i, a, b
     n = count([(text(i:i) == ',', i = 1, len(text))]) + 1
-    allocate (fields(n))
-    start = 1
+    allocate (first(n), last(n))
+    a = 1
     n = 0
     do i = 1, len(text) + 1
-      if (i > len(text)) then
-        n = n + 1
-        fields(n) = adjustl(text(start:))
-      else if (text(i:i) == ',') then
-        n = n + 1
-        fields(n) = adjustl(text(start:i - 1))
-        start = i + 1
+      if (i <= len(text)) then
+        if (text(i:i) /= ',') cycle
       end if
+      n = n + 1
+      b = i - 1
+      do while (a <= b)
+        if (text(a:a) /= ' ' .and. text(a:a) /= achar(9)) exit
+        a = a + 1
+      end do
+      do while (b >= a)
+        if (text(b:b) /= ' ' .and. text(b:b) /= achar(9)) exit
+        b = b - 1
+      end do
+      first(n) = a
+      last(n) = b
+      a = i + 1
     end do
   end subroutine split
 
-  logical function all_numbers(fields)
-    character(len=*), intent(in) :: fields(:)
-    integer :: i, ios
+  logical function all_numbers(text, first, last)
+    character(len=*), intent(in) :: text
+    integer, intent(in) :: first(:), last(:)
+    integer :: i
     real(dp) :: x
+    character(len=200) :: why
     all_numbers = .true.
-    do i = 1, size(fields)
-      read (fields(i), *, iostat=ios) x
-      if (ios /= 0 .or. len_trim(fields(i)) == 0 .or. &
-          verify(trim(fields(i)), '0123456789+-.eEdDnNaAiIfF') /= 0) all_numbers = .false.
+    do i = 1, size(first)
+      call parse_number(text(first(i):last(i)), x, why)
+      if (len_trim(why) > 0) all_numbers = .false.
     end do
   end function all_numbers
 
-  subroutine read_row(fields, row, message)
-    character(len=*), intent(in) :: fields(:)
+  subroutine read_row(text, first, last, row, message)
+    character(len=*), intent(in) :: text
+    integer, intent(in) :: first(:), last(:)
     real(dp), allocatable, intent(out) :: row(:)
     character(len=*), intent(out) :: message
-    integer :: i, ios
+    integer :: i
+    character(len=200) :: why
     message = ''
-    allocate (row(size(fields)))
-    do i = 1, size(fields)
-      ios = 1
-      if (len_trim(fields(i)) > 0 .and. verify(trim(fields(i)), '0123456789+-.eEdD') == 0) &
-        read (fields(i), *, iostat=ios) row(i)
-      if (ios == 0) then
-        if (.not. ieee_is_finite(row(i))) ios = 1
-      end if
-      if (ios /= 0) then
-        message = 'column ' // format_integer(i) // ': ''' // trim(fields(i)) // &
-                  ''' is not a finite number (NaN, Inf, empty fields and text are rejected)'
+    allocate (row(size(first)))
+    do i = 1, size(first)
+      call parse_number(text(first(i):last(i)), row(i), why)
+      if (len_trim(why) > 0) then
+        message = 'column ' // format_integer(i) // ': ''' // text(first(i):last(i)) // &
+                  ''' ' // trim(why)
         return
       end if
     end do
   end subroutine read_row
+
+  !> A decimal number [sign] digits [. digits] [e|E|d|D [sign] digits] (at least one digit
+  !> before the exponent) of magnitude below max_magnitude; why /= '' says what it is not.
+  !> The magnitude is found from the digits before anything is converted, so no conversion
+  !> overflows; a value below 1e-400 in magnitude is 0.
+  subroutine parse_number(field, x, why)
+    character(len=*), intent(in) :: field
+    real(dp), intent(out) :: x
+    character(len=*), intent(out) :: why
+    integer :: i, n, digits, int_digits, first_nonzero, expo, esign, ios
+    logical :: point
+
+    x = 0.0_dp
+    why = ''
+    n = len(field)
+    if (n == 0) then
+      why = 'is empty: every field needs a number'
+      return
+    end if
+    i = 1
+    if (index('+-', field(1:1)) > 0) i = 2
+    digits = 0
+    int_digits = 0
+    first_nonzero = 0
+    point = .false.
+    do while (i <= n)
+      if (field(i:i) == '.' .and. .not. point) then
+        point = .true.
+      else if (index('0123456789', field(i:i)) > 0) then
+        digits = digits + 1
+        if (.not. point) int_digits = int_digits + 1
+        if (first_nonzero == 0 .and. field(i:i) /= '0') first_nonzero = digits
+      else
+        exit
+      end if
+      i = i + 1
+    end do
+    expo = 0
+    if (digits > 0 .and. i <= n) then
+      if (index('eEdD', field(i:i)) > 0 .and. i < n) then
+        i = i + 1
+        esign = 1
+        if (index('+-', field(i:i)) > 0) then
+          if (field(i:i) == '-') esign = -1
+          i = i + 1
+        end if
+        if (i > n) digits = 0
+        do while (i <= n)
+          if (index('0123456789', field(i:i)) == 0) exit
+          if (expo < 100000) expo = 10 * expo + (iachar(field(i:i)) - iachar('0'))
+          i = i + 1
+        end do
+        expo = esign * expo
+      end if
+    end if
+    if (digits == 0 .or. i <= n) then
+      why = 'is not a finite number (NaN, Inf, empty fields and text are rejected)'
+      return
+    end if
+    if (first_nonzero == 0) return
+    ! the value is 0.d... x 10^(int_digits - first_nonzero + 1 + expo)
+    if (int_digits - first_nonzero + 1 + expo > 150) then
+      why = 'is beyond the largest magnitude read, 1e150 (the fit squares and sums the values)'
+      return
+    end if
+    if (int_digits - first_nonzero + 1 + expo < -400) return
+    read (field, *, iostat=ios) x
+    if (ios /= 0) then
+      why = 'is not a finite number (NaN, Inf, empty fields and text are rejected)'
+      return
+    end if
+    if (.not. ieee_is_finite(x) .or. abs(x) >= max_magnitude) then
+      x = 0.0_dp
+      why = 'is beyond the largest magnitude read, 1e150 (the fit squares and sums the values)'
+    end if
+  end subroutine parse_number
 
 end module interlock_csv

@@ -1,13 +1,14 @@
 !> Files as the operating system sees them (interlock_posix.c and the C library): what a path
 !> names, whether it is a folder that can be opened, whether two paths are the same file,
-!> removing and renaming, and the guard that removes an unfinished output file when the program
-!> is interrupted.
+!> removing and renaming, and the guard that removes unfinished output files when the program
+!> ends before they are complete (any signal that ends it and can be caught, or an exit).
 module interlock_files
   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_associated
   implicit none
   private
   public :: path_absent, path_regular, path_folder, path_other, path_kind, same_file, &
-            guard_file, unguard_file, remove_file, rename_file, process_id, is_folder
+            guard_file, unguard_file, remove_file, rename_file, process_id, temporary_name, &
+            is_folder
 
   !> What a path names (path_kind): nothing, a regular file, a folder, anything else (a FIFO,
   !> a device, a socket).
@@ -34,16 +35,19 @@ module interlock_files
       import :: c_int, c_char
       character(kind=c_char), intent(in) :: path(*)
     end function c_guard_file
-    subroutine c_unguard_file() bind(C, name='interlock_unguard_file')
+    subroutine c_unguard_file(path) bind(C, name='interlock_unguard_file')
+      import :: c_char
+      character(kind=c_char), intent(in) :: path(*)
     end subroutine c_unguard_file
+
     integer(c_int) function c_rename(old, new) bind(C, name='rename')
       import :: c_int, c_char
       character(kind=c_char), intent(in) :: old(*), new(*)
     end function c_rename
-    integer(c_int) function c_remove(path) bind(C, name='remove')
+    integer(c_int) function c_unlink(path) bind(C, name='unlink')
       import :: c_int, c_char
       character(kind=c_char), intent(in) :: path(*)
-    end function c_remove
+    end function c_unlink
     integer(c_int) function c_getpid() bind(C, name='getpid')
       import :: c_int
     end function c_getpid
@@ -73,24 +77,28 @@ contains
     same_file = c_same_file(a // c_null_char, b // c_null_char) /= 0
   end function same_file
 
-  !> From now on SIGINT, SIGTERM or SIGHUP remove `path` before the program ends (by that
-  !> signal). stat /= 0: the guard could not be set (a path of 8192 bytes or more).
+  !> From now on `path` is removed if the program ends before unguard_file(path): by a signal
+  !> (SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGQUIT, ...: every one that ends it and can be caught)
+  !> or an exit. stat /= 0: the guard could not be set (a path of 8192 bytes or more, or four
+  !> files guarded already).
   subroutine guard_file(path, stat)
     character(len=*), intent(in) :: path
     integer, intent(out) :: stat
     stat = int(c_guard_file(path // c_null_char))
   end subroutine guard_file
 
-  !> The guarded file is complete or gone: a signal no longer removes it.
-  subroutine unguard_file()
-    call c_unguard_file()
+  !> The guarded file `path` is complete or gone: the end of the program no longer removes it.
+  subroutine unguard_file(path)
+    character(len=*), intent(in) :: path
+    call c_unguard_file(path // c_null_char)
   end subroutine unguard_file
 
-  !> Remove a file if it is there (nothing happens otherwise).
+
+  !> Remove a file if it is there (nothing happens otherwise; never a folder: unlink(2)).
   subroutine remove_file(path)
     character(len=*), intent(in) :: path
     integer(c_int) :: ignore
-    ignore = c_remove(path // c_null_char)
+    ignore = c_unlink(path // c_null_char)
   end subroutine remove_file
 
   !> Give file `old` the name `new` (replacing a file of that name in one step). stat /= 0:
@@ -100,6 +108,37 @@ contains
     integer, intent(out) :: stat
     stat = int(c_rename(old // c_null_char, new // c_null_char))
   end subroutine rename_file
+
+  !> The temporary name of the output file `final_name` while it is written: NAME.tmp-PID in the
+  !> same folder (the rename that completes it stays on one file system). Where that would
+  !> exceed the 255 bytes a file name may have (NAME_MAX of Linux file systems), NAME is cut
+  !> and followed by a hash of the whole name, so that every legal output name has a legal,
+  !> distinct temporary name.
+  function temporary_name(final_name) result(temp)
+    character(len=*), intent(in) :: final_name
+    character(len=:), allocatable :: temp
+    integer, parameter :: name_max = 255
+    character(len=16) :: pid
+    character(len=8) :: hash
+    character(len=:), allocatable :: base, folder, suffix
+    integer :: slash, i
+    integer(8) :: h
+    write (pid, '(i0)') process_id()
+    suffix = '.tmp-' // trim(pid)
+    slash = index(final_name, '/', back=.true.)
+    folder = final_name(1:slash)
+    base = final_name(slash + 1:)
+    if (len(base) + len(suffix) > name_max) then
+      ! FNV-1a, 32 bits
+      h = 2166136261_8
+      do i = 1, len(base)
+        h = iand(ieor(h, int(iachar(base(i:i)), 8)) * 16777619_8, 4294967295_8)
+      end do
+      write (hash, '(z8.8)') h
+      base = base(1:name_max - len(suffix) - 9) // '-' // hash
+    end if
+    temp = folder // base // suffix
+  end function temporary_name
 
   !> This process's id.
   integer function process_id()

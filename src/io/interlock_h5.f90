@@ -41,9 +41,9 @@ module interlock_h5
     module procedure append_real_1d, append_real_2d, append_int_1d
   end interface h5_append
 
-  !> Write an attribute: character, real scalar or array, integer scalar.
+  !> Write an attribute: character scalar or array, real scalar or array, integer scalar.
   interface h5_attribute
-    module procedure attr_text, attr_real, attr_real_1d, attr_int
+    module procedure attr_text, attr_text_1d, attr_real, attr_real_1d, attr_int
   end interface h5_attribute
 
 contains
@@ -229,8 +229,8 @@ contains
     integer(hid_t), intent(in) :: dset
     character(len=*), intent(in) :: unit, description
     integer, intent(out) :: stat
-    call text_attribute(dset, 'unit', unit, stat)
-    if (stat == 0) call text_attribute(dset, 'description', description, stat)
+    call text_attribute(dset, 'unit', [unit], .true., stat)
+    if (stat == 0) call text_attribute(dset, 'description', [description], .true., stat)
   end subroutine describe
 
   ! -------------------------------------------------------------- attributes
@@ -239,26 +239,52 @@ contains
     type(h5_file_t), intent(in) :: loc
     character(len=*), intent(in) :: name, text
     integer, intent(out) :: stat
-    call text_attribute(loc%id, name, text, stat)
+    call text_attribute(loc%id, name, [text], .true., stat)
   end subroutine attr_text
 
-  !> A scalar variable-length string attribute, marked UTF-8 when the text is valid UTF-8 (h5py
-  !> returns it as str; text that is not, e.g. a Latin-1 comment in a deck, is marked ASCII and
-  !> keeps its bytes).
-  subroutine text_attribute(id, name, text, stat)
+  !> An array of strings (each without its trailing blanks): h5py returns an array of str.
+  subroutine attr_text_1d(loc, name, texts, stat)
+    type(h5_file_t), intent(in) :: loc
+    character(len=*), intent(in) :: name, texts(:)
+    integer, intent(out) :: stat
+    call text_attribute(loc%id, name, texts, .false., stat)
+  end subroutine attr_text_1d
+
+  !> A variable-length string attribute, scalar (one text) or an array, marked UTF-8 when
+  !> the texts are valid UTF-8 (h5py returns str; text that is not, e.g. a Latin-1 comment in a
+  !> deck, is marked ASCII and keeps its bytes).
+  subroutine text_attribute(id, name, texts, scalar, stat)
     integer(hid_t), intent(in) :: id
-    character(len=*), intent(in) :: name, text
+    character(len=*), intent(in) :: name, texts(:)
+    logical, intent(in) :: scalar
     integer, intent(out) :: stat
     integer(hid_t) :: space, attr, stype
-    character(len=len(text) + 1, kind=c_char), target :: buffer
-    type(c_ptr), target :: pointers(1)
-    integer :: ignore
-    buffer = text // c_null_char
-    pointers(1) = c_loc(buffer)
+    character(kind=c_char), allocatable, target :: buffer(:)
+    type(c_ptr), allocatable, target :: pointers(:)
+    integer :: ignore, k, at, n
+    logical :: utf8
+    allocate (buffer(size(texts) * (len(texts) + 1) + 1), pointers(max(1, size(texts))))
+    at = 1
+    utf8 = .true.
+    do k = 1, size(texts)
+      n = len(texts(k))
+      if (.not. scalar) n = len_trim(texts(k))
+      buffer(at:at + n - 1) = transfer(texts(k)(1:n), buffer(1:n))
+      buffer(at + n) = c_null_char
+      pointers(k) = c_loc(buffer(at))
+      at = at + n + 1
+      utf8 = utf8 .and. is_utf8(texts(k)(1:n))
+    end do
     call h5tcopy_f(H5T_STRING, stype, stat)
     if (stat /= 0) return
-    if (is_utf8(text)) call h5tset_cset_f(stype, H5T_CSET_UTF8_F, stat)
-    if (stat == 0) call h5screate_f(H5S_SCALAR_F, space, stat)
+    if (utf8) call h5tset_cset_f(stype, H5T_CSET_UTF8_F, stat)
+    if (stat == 0) then
+      if (scalar) then
+        call h5screate_f(H5S_SCALAR_F, space, stat)
+      else
+        call h5screate_simple_f(1, [int(size(texts), hsize_t)], space, stat)
+      end if
+    end if
     if (stat == 0) then
       call h5acreate_f(id, name, stype, space, attr, stat)
       if (stat == 0) then

@@ -6,7 +6,7 @@
 !> keeps go to a block of at most one chunk and each full block is appended to extendible,
 !> chunked datasets, so memory is bounded by one chunk, whatever the history's length. The file
 !> is written under a temporary name in the destination folder (removed on any failure and on
-!> SIGINT, SIGTERM, SIGHUP) and renamed when complete. It never replaces a file that is not an
+!> every signal that ends the program) and renamed when complete. It never replaces a file that is not an
 !> earlier result of interlock-history (output_check_target).
 module interlock_history_output
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
@@ -19,7 +19,7 @@ module interlock_history_output
   use interlock_deck, only: deck_t, deck_n_cases, n_datasets, history_datasets
   use interlock_mixed_control, only: history_row_t, history_sink_t, history_t
   use interlock_files, only: path_kind, path_absent, path_regular, path_folder, same_file, &
-      guard_file, unguard_file, remove_file, rename_file, process_id
+      guard_file, unguard_file, remove_file, rename_file, temporary_name
   implicit none
   private
   public :: output_t, case_writer_t, output_check_target, output_open, output_begin_case, &
@@ -98,7 +98,7 @@ contains
   end subroutine output_check_target
 
   !> Create the temporary file beside `final_name` and write the file attributes. The
-  !> temporary file is removed if the program is interrupted (SIGINT, SIGTERM, SIGHUP).
+  !> temporary file is removed if the program ends before it is complete.
   subroutine output_open(final_name, deck, command, out, stat, message)
     character(len=*), intent(in) :: final_name, command
     type(deck_t), intent(in) :: deck
@@ -124,18 +124,16 @@ contains
   end subroutine output_open
 
   !> Create the temporary file NAME.tmp-PID beside `final_name` (out%file, guarded: removed if
-  !> the program is interrupted by SIGINT, SIGTERM or SIGHUP); output_close renames it.
+  !> the program ends before it is complete: interlock_files' guard); output_close renames it.
   subroutine output_create(final_name, out, stat, message)
     character(len=*), intent(in) :: final_name
     type(output_t), intent(out) :: out
     integer, intent(out) :: stat
     character(len=*), intent(out) :: message
-    character(len=16) :: pid
 
     message = ''
-    write (pid, '(i0)') process_id()
     out%final_name = final_name
-    out%temp_name = final_name // '.tmp-' // trim(pid)
+    out%temp_name = temporary_name(final_name)
     call guard_file(out%temp_name, stat)
     if (stat /= 0) then
       message = 'cannot guard ' // out%temp_name // ' against interruption (path too long?)'
@@ -145,7 +143,7 @@ contains
     if (stat /= 0) then
       message = 'cannot create ' // out%temp_name // ' (does the folder exist and is it writable?)'
       call remove_file(out%temp_name)
-      call unguard_file()
+      call unguard_file(out%temp_name)
       return
     end if
     out%open = .true.
@@ -400,7 +398,7 @@ contains
     if (stat /= 0) then
       message = 'cannot close ' // out%temp_name // ' (is the disk full?)'
       call remove_file(out%temp_name)
-      call unguard_file()
+      call unguard_file(out%temp_name)
       return
     end if
     call rename_file(out%temp_name, out%final_name, stat)
@@ -408,7 +406,7 @@ contains
       message = 'cannot rename ' // out%temp_name // ' to ' // out%final_name
       call remove_file(out%temp_name)
     end if
-    call unguard_file()
+    call unguard_file(out%temp_name)
   end subroutine output_close
 
   !> Give up: close what is open and remove the temporary file.
@@ -421,7 +419,7 @@ contains
       out%open = .false.
     end if
     if (allocated(out%temp_name)) call remove_file(out%temp_name)
-    call unguard_file()
+    call unguard_file(out%temp_name)
   end subroutine output_abort
 
 

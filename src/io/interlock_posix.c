@@ -1,28 +1,54 @@
-/* What interlock-history needs of POSIX that Fortran 2008 does not give: the kind of a path
- * (regular file, folder, or something else such as a FIFO or a device), whether two paths
- * name the same file, and a guard that removes the temporary output file when the program is
- * interrupted (SIGINT, SIGTERM, SIGHUP; SIGXFSZ is ignored, so that a file-size limit is a
- * failed write like a full disk). Called from Fortran through bind(C)
+/* What the programs need of POSIX that Fortran 2008 does not give: the kind of a path (regular
+ * file, folder, or something else such as a FIFO or a device), whether two paths name the same
+ * file, and a guard that removes the temporary output
+ * files when the program ends before they are complete. Called from Fortran through bind(C)
  * (module interlock_files).
  *
  * The guard is the one piece of process-wide state of the programs: a signal handler can only
- * reach static storage. It keeps one path; the handler does only async-signal-safe things
- * (unlink, sigaction, raise): it removes the file, restores the default action and raises the
- * signal again, so that the program ends as killed by that signal (exit status 128 + signal
- * number in a shell: 130 for SIGINT, 143 for SIGTERM). SIGKILL cannot be caught: it leaves the
- * temporary file behind (README, "Reliability"). */
-#define _POSIX_C_SOURCE 200809L
+ * reach static storage. It keeps a few paths (a program writes at most two files at once); the
+ * handler does only async-signal-safe things (unlink, sigaction, raise): it removes the files,
+ * restores the signal's earlier action and raises the signal again, so that the program ends as
+ * that signal ends it (exit status 128 + signal number in a shell: 130 for SIGINT, 141 for
+ * SIGPIPE, 143 for SIGTERM). Guarded: every signal whose default action ends the process and
+ * that can be caught. For the signals sent from outside (SIGINT, SIGTERM, SIGHUP, SIGQUIT,
+ * SIGPIPE: a closed pipe such as `| head`, SIGALRM, SIGVTALRM, SIGPROF, SIGUSR1, SIGUSR2,
+ * SIGXCPU: a CPU-time limit, SIGIO, SIGPWR) the earlier action is the default one, without the
+ * Fortran runtime's backtrace; for the faults of the program itself (SIGSEGV, SIGBUS, SIGFPE,
+ * SIGILL, SIGABRT, SIGTRAP, SIGSYS) it is the earlier handler, so a Debug build still prints its
+ * backtrace. A normal end of the process (exit, a Fortran runtime error) removes them too
+ * (atexit). SIGKILL cannot be caught: it leaves the temporary file behind (README,
+ * "Reliability"). SIGXFSZ is ignored, so that a file-size limit is a failed write like a full
+ * disk. A signal ignored by the parent (nohup, background jobs) stays ignored. */
+#define _GNU_SOURCE
 #include <signal.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
-enum { guard_capacity = 8192 };
+enum { guard_capacity = 8192, guard_slots = 4 };
 
-static char guarded_path[guard_capacity];
-static volatile sig_atomic_t guard_armed = 0;
+static char guarded_paths[guard_slots][guard_capacity];
+static volatile sig_atomic_t guard_armed[guard_slots];
 static int handlers_installed = 0;
-static const int guarded_signals[] = {SIGINT, SIGTERM, SIGHUP};
+
+static const int sent_signals[] = {
+    SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGALRM, SIGVTALRM, SIGPROF, SIGUSR1, SIGUSR2,
+    SIGXCPU,
+#ifdef SIGIO
+    SIGIO,
+#endif
+#ifdef SIGPWR
+    SIGPWR,
+#endif
+};
+static const int fault_signals[] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGTRAP, SIGSYS};
+enum {
+    n_sent = sizeof sent_signals / sizeof sent_signals[0],
+    n_fault = sizeof fault_signals / sizeof fault_signals[0]
+};
+/* The action each fault signal had before the guard (restored when it arrives). */
+static struct sigaction earlier_fault_actions[n_fault];
 
 /* 0: nothing there; 1: a regular file; 2: a folder; 3: anything else (FIFO, device, socket).
  * Symbolic links are followed. */
@@ -43,52 +69,81 @@ int interlock_same_file(const char *a, const char *b)
     return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
+static void remove_guarded(void)
+{
+    int k;
+    for (k = 0; k < guard_slots; ++k) {
+        if (guard_armed[k]) unlink(guarded_paths[k]);
+        guard_armed[k] = 0;
+    }
+}
+
 static void remove_guarded_and_reraise(int sig)
 {
-    struct sigaction dfl;
-    if (guard_armed) unlink(guarded_path);
-    guard_armed = 0;
-    memset(&dfl, 0, sizeof dfl);
-    dfl.sa_handler = SIG_DFL;
-    sigemptyset(&dfl.sa_mask);
-    sigaction(sig, &dfl, NULL);
+    struct sigaction again;
+    int k;
+    remove_guarded();
+    memset(&again, 0, sizeof again);
+    again.sa_handler = SIG_DFL;
+    sigemptyset(&again.sa_mask);
+    for (k = 0; k < n_fault; ++k)
+        if (fault_signals[k] == sig) again = earlier_fault_actions[k];
+    sigaction(sig, &again, NULL);
     raise(sig);
 }
 
-/* Remove `path` if the program is interrupted from now on. 0: armed; 1: the path is too long
- * (not armed); 2: the handlers could not be installed. */
-int interlock_guard_file(const char *path)
+static int install_handlers(void)
 {
-    size_t n = strlen(path);
-    size_t k;
-    if (n >= guard_capacity) return 1;
-    guard_armed = 0;
-    memcpy(guarded_path, path, n + 1);
-    if (!handlers_installed) {
-        struct sigaction sa;
-        memset(&sa, 0, sizeof sa);
-        sa.sa_handler = remove_guarded_and_reraise;
-        sigemptyset(&sa.sa_mask);
-        for (k = 0; k < sizeof guarded_signals / sizeof guarded_signals[0]; ++k)
-            sigaddset(&sa.sa_mask, guarded_signals[k]);
-        for (k = 0; k < sizeof guarded_signals / sizeof guarded_signals[0]; ++k) {
-            struct sigaction old;
-            /* A signal ignored by the parent (nohup, background jobs) stays ignored. */
-            if (sigaction(guarded_signals[k], NULL, &old) != 0) return 2;
-            if (old.sa_handler == SIG_IGN) continue;
-            if (sigaction(guarded_signals[k], &sa, NULL) != 0) return 2;
-        }
-        /* A file-size limit (ulimit -f) then makes writes fail with EFBIG, reported like a
-         * full disk, instead of killing the program (SIGXFSZ) with the file half written. */
-        signal(SIGXFSZ, SIG_IGN);
-        handlers_installed = 1;
+    struct sigaction sa;
+    int k;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = remove_guarded_and_reraise;
+    sigemptyset(&sa.sa_mask);
+    for (k = 0; k < n_sent; ++k) sigaddset(&sa.sa_mask, sent_signals[k]);
+    for (k = 0; k < n_sent; ++k) {
+        struct sigaction old;
+        if (sigaction(sent_signals[k], NULL, &old) != 0) return 2;
+        if (old.sa_handler == SIG_IGN) continue;
+        if (sigaction(sent_signals[k], &sa, NULL) != 0) return 2;
     }
-    guard_armed = 1;
+    for (k = 0; k < n_fault; ++k) {
+        if (sigaction(fault_signals[k], NULL, &earlier_fault_actions[k]) != 0) return 2;
+        if (earlier_fault_actions[k].sa_handler == SIG_IGN) continue;
+        if (sigaction(fault_signals[k], &sa, NULL) != 0) return 2;
+    }
+    /* A file-size limit (ulimit -f) then makes writes fail with EFBIG, reported like a full
+     * disk, instead of killing the program (SIGXFSZ) with the file half written. */
+    signal(SIGXFSZ, SIG_IGN);
+    if (atexit(remove_guarded) != 0) return 2;
     return 0;
 }
 
-/* The file is complete (renamed) or removed: an interruption no longer touches it. */
-void interlock_unguard_file(void)
+/* Remove `path` if the program ends before interlock_unguard_file(path). 0: armed; 1: the path
+ * is too long or every slot is taken (not armed); 2: the handlers could not be installed. */
+int interlock_guard_file(const char *path)
 {
-    guard_armed = 0;
+    size_t n = strlen(path);
+    int k;
+    if (n >= guard_capacity) return 1;
+    if (!handlers_installed) {
+        int stat = install_handlers();
+        if (stat != 0) return stat;
+        handlers_installed = 1;
+    }
+    for (k = 0; k < guard_slots; ++k) {
+        if (guard_armed[k]) continue;
+        memcpy(guarded_paths[k], path, n + 1);
+        guard_armed[k] = 1;
+        return 0;
+    }
+    return 1;
+}
+
+/* The file `path` is complete (renamed) or removed: the end of the program no longer touches
+ * it. */
+void interlock_unguard_file(const char *path)
+{
+    int k;
+    for (k = 0; k < guard_slots; ++k)
+        if (guard_armed[k] && strcmp(guarded_paths[k], path) == 0) guard_armed[k] = 0;
 }

@@ -21,7 +21,7 @@ program interlock_fuzz
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan, &
       ieee_positive_inf, ieee_negative_inf
-  use interlock_cli, only: exit_program
+  use interlock_cli, only: exit_program, command_argument, folder_writable
   use interlock
   use interlock_replay, only: interlock_write_replay_deck
   use test_stability_tools
@@ -31,7 +31,7 @@ program interlock_fuzz
   integer(int64) :: n_updates = 100000_int64, done = 0_int64, n_fd = 0_int64, n_fd_skip = 0_int64
   integer :: seed = 1, fd_every = 10, max_decks = 5, n_decks = 0, n_fail = 0, n_materials = 0
   integer :: n_status = 0, n_stated = 0, worst_newton = 0, worst_attempts = 0
-  character(len=256) :: deck_dir = '.'
+  character(len=:), allocatable :: deck_dir
   type(rng_t) :: rng
   real(dp) :: t0, t1
   integer(int64) :: n_garbage = 0_int64
@@ -62,12 +62,13 @@ contains
 
   subroutine parse_arguments()
     integer :: i, n, ios
-    character(len=256) :: arg, val
+    character(len=:), allocatable :: arg, val
+    deck_dir = '.'
     n = command_argument_count()
     i = 1
     do while (i <= n)
-      call get_command_argument(i, arg)
-      select case (trim(arg))
+      arg = command_argument(i)
+      select case (arg)
       case ('-h', '--help')
         call usage(output_unit)
         call exit_program(0)
@@ -75,10 +76,10 @@ contains
         write (output_unit, '(a)') 'interlock-fuzz ' // interlock_version_string
         call exit_program(0)
       case ('--updates', '--seed', '--fd-every', '--deck-dir', '--max-decks', '--garbage')
-        if (i == n) call usage_error(trim(arg) // ' needs a value')
-        call get_command_argument(i + 1, val)
+        if (i == n) call usage_error(arg // ' needs a value')
+        val = command_argument(i + 1)
         ios = 0
-        select case (trim(arg))
+        select case (arg)
         case ('--updates')
           read (val, *, iostat=ios) n_updates
           if (ios == 0 .and. n_updates < 1) ios = 1
@@ -89,6 +90,11 @@ contains
           if (ios == 0 .and. fd_every < 1) ios = 1
         case ('--deck-dir')
           deck_dir = val
+          ! the replay decks' paths are held in 512 characters (report)
+          if (len(deck_dir) > 450) call usage_error('--deck-dir: a path of ' // &
+            'at most 450 characters (the replay decks'' names follow it)')
+          if (.not. folder_writable(deck_dir)) call usage_error('--deck-dir ' // deck_dir // &
+            ': no such folder, or not writable (it must exist and be writable)')
         case ('--max-decks')
           read (val, *, iostat=ios) max_decks
           if (ios == 0 .and. max_decks < 0) ios = 1
@@ -96,12 +102,12 @@ contains
           read (val, *, iostat=ios) n_garbage
           if (ios == 0 .and. n_garbage < 1) ios = 1
         end select
-        if (ios /= 0) call usage_error(trim(arg) // ' ' // trim(val) // ': not an admissible ' // &
+        if (ios /= 0) call usage_error(arg // ' ' // val // ': not an admissible ' // &
           'value (--updates, --fd-every, --garbage: integers >= 1; --seed: an integer; ' // &
           '--max-decks >= 0)')
         i = i + 1
       case default
-        call usage_error('unknown argument ' // trim(arg))
+        call usage_error('unknown argument ' // arg)
       end select
       i = i + 1
     end do

@@ -11,14 +11,18 @@ module interlock_fit_deck
   use interlock_deck_text, only: group_scan_t, scan_deck, to_lower => lower
   use interlock_csv, only: csv_t, read_csv, csv_column
   use interlock_lm, only: lm_options_t
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
   implicit none
   private
   public :: fit_t, curve_t, stage_t, read_fit_deck, output_names, n_outputs, fit_groups, &
-            split_branches, deck_value, join_selected
+            split_branches, deck_value, join_selected, law_angles
 
   integer, parameter :: max_curves = 32, max_free = 16, max_stages = 16
   integer, parameter :: name_len = 64, file_len = 1024, list_len = 1024
   real(dp), parameter :: unset = -huge(1.0_dp)
+  !> The range of a weight (curve_weight, and each value of a weight column up to 0): weights
+  !> far outside it would make the residuals vanish or their squares overflow.
+  real(dp), parameter :: min_weight = 1.0e-100_dp, max_weight = 1.0e100_dp
 
   !> History outputs a curve can be compared with (one value per row).
   integer, parameter :: n_outputs = 9
@@ -57,6 +61,7 @@ module interlock_fit_deck
     real(dp), allocatable :: start(:), lower(:), upper(:)
     type(stage_t), allocatable :: stages(:)
     type(lm_options_t) :: options
+    character(len=512), allocatable :: warnings(:)   !< printed before the fit
   end type fit_t
 
 contains
@@ -121,8 +126,8 @@ contains
     curve_weight = unset
     curve_weight_column = ''
     curve_window_column = ''
-    curve_window_min = -huge(1.0_dp)
-    curve_window_max = huge(1.0_dp)
+    curve_window_min = unset
+    curve_window_max = unset
     parameters = ''
     start = unset
     lower = unset
@@ -142,6 +147,15 @@ contains
                 'each variable takes)'
       return
     end if
+
+    allocate (fd%warnings(0))
+    ! every real value given is a number: NaN or Inf is an error, never "not given"
+    if (.not. finite_list('curve_weight', curve_weight)) return
+    if (.not. finite_list('curve_window_min', curve_window_min)) return
+    if (.not. finite_list('curve_window_max', curve_window_max)) return
+    if (.not. finite_list('start', start)) return
+    if (.not. finite_list('lower', lower)) return
+    if (.not. finite_list('upper', upper)) return
 
     ! options
     if (max_iterations < 1 .or. max_iterations > 100000) then
@@ -166,6 +180,9 @@ contains
                 'other (at most ' // format_integer(max_free) // ')'
       return
     end if
+    if (.not. per_item_real('start', start, np, 'free parameter')) return
+    if (.not. per_item_real('lower', lower, np, 'free parameter')) return
+    if (.not. per_item_real('upper', upper, np, 'free parameter')) return
     allocate (fd%names(np), fd%property(np))
     fd%names = parameters(1:np)
     fd%start = start(1:np)
@@ -175,6 +192,8 @@ contains
       call check_parameter(i)
       if (len_trim(message) > 0) return
     end do
+    call check_angles()
+    if (len_trim(message) > 0) return
 
     ! curves
     nc = count(curve_file /= '')
@@ -183,6 +202,16 @@ contains
                 format_integer(max_curves) // ')'
       return
     end if
+    if (.not. per_item_text('curve_name', curve_name, nc, .false.)) return
+    if (.not. per_item_text('curve_x', curve_x, nc, .true.)) return
+    if (.not. per_item_text('curve_y', curve_y, nc, .true.)) return
+    if (.not. per_item_text('curve_along', curve_along, nc, .true.)) return
+    if (.not. per_item_text('curve_against', curve_against, nc, .true.)) return
+    if (.not. per_item_text('curve_weight_column', curve_weight_column, nc, .true.)) return
+    if (.not. per_item_text('curve_window_column', curve_window_column, nc, .true.)) return
+    if (.not. per_item_real('curve_weight', curve_weight, nc, 'curve')) return
+    if (.not. per_item_real('curve_window_min', curve_window_min, nc, 'curve')) return
+    if (.not. per_item_real('curve_window_max', curve_window_max, nc, 'curve')) return
     allocate (fd%curves(nc))
     do i = 1, nc
       call read_curve(i)
@@ -241,9 +270,99 @@ contains
 
   contains
 
+    !> Every value of a real list is finite (its unset elements are: -huge).
+    logical function finite_list(name, x)
+      character(len=*), intent(in) :: name
+      real(dp), intent(in) :: x(:)
+      integer :: k
+      finite_list = .true.
+      do k = 1, size(x)
+        if (ieee_is_finite(x(k))) cycle
+        finite_list = .false.
+        message = prefix // name // '(' // format_integer(k) // ') = ' // &
+                  trim(merge('NaN     ', 'Infinity', ieee_is_nan(x(k)))) // ' is not a finite ' // &
+                  'number (give a finite value, or leave the whole list out for its default)'
+        return
+      end do
+    end function finite_list
+
+    !> A real list with one value per item (n items, `what` they are): none given (every
+    !> element unset: the default, or an error later where the list is required), exactly n,
+    !> or one, which then applies to all. Anything else is an error naming the list.
+    logical function per_item_real(name, x, n, what)
+      character(len=*), intent(in) :: name, what
+      real(dp), intent(inout) :: x(:)
+      integer, intent(in) :: n
+      integer :: k
+      do k = size(x), 1, -1
+        if (.not. same_value(x(k), unset)) exit
+      end do
+      per_item_real = list_count(name, k, n, what)
+      if (.not. per_item_real) return
+      if (k == 1) x(2:n) = x(1)
+      if (k == 1 .and. n > 1) call note_one_for_all(name, n, what)
+      do k = 1, merge(n, 0, k > 0)
+        if (.not. same_value(x(k), unset)) cycle
+        message = prefix // name // '(' // format_integer(k) // ') is not given: give one ' // &
+                  'value per ' // what // ' or one for all'
+        per_item_real = .false.
+        return
+      end do
+    end function per_item_real
+
+    !> As per_item_real for a list of names ('' unset); allow_one: one value may apply to all
+    !> (not for curve_name: names differ).
+    logical function per_item_text(name, x, n, allow_one)
+      character(len=*), intent(in) :: name
+      character(len=*), intent(inout) :: x(:)
+      integer, intent(in) :: n
+      logical, intent(in) :: allow_one
+      integer :: k
+      do k = size(x), 1, -1
+        if (x(k) /= '') exit
+      end do
+      if (.not. allow_one .and. k == 1 .and. n > 1) then
+        message = prefix // name // ' gives 1 value for ' // format_integer(n) // ' curves: ' // &
+                  'give one per curve (in the order of curve_file), or leave it out'
+        per_item_text = .false.
+        return
+      end if
+      per_item_text = list_count(name, k, n, 'curve')
+      if (per_item_text .and. k == 1) x(2:n) = x(1)
+      if (per_item_text .and. k == 1 .and. n > 1) call note_one_for_all(name, n, 'curve')
+    end function per_item_text
+
+    !> One value of a list for n > 1 items applies to all: said before the fit.
+    subroutine note_one_for_all(name, n, what)
+      character(len=*), intent(in) :: name, what
+      integer, intent(in) :: n
+      character(len=512) :: line
+      line = '&fit: ' // name // ' gives one value for ' // format_integer(n) // ' ' // what // &
+             's: it applies to every ' // what
+      fd%warnings = [fd%warnings, line]
+    end subroutine note_one_for_all
+
+    !> k values given for n items: 0, 1 or n.
+    logical function list_count(name, k, n, what)
+      character(len=*), intent(in) :: name, what
+      integer, intent(in) :: k, n
+      list_count = k == 0 .or. k == 1 .or. k == n
+      if (list_count) return
+      message = prefix // name // ' gives ' // format_integer(k) // ' values for ' // &
+                format_integer(n) // ' ' // what // 's: give one per ' // what // ' (in the ' // &
+                'order of ' // merge('curve_file', 'parameters', what == 'curve') // &
+                '), or one value for all'
+    end function list_count
+
     logical function in_range(x, lo, hi, name)
       real(dp), intent(in) :: x, lo, hi
       character(len=*), intent(in) :: name
+      in_range = .false.
+      if (ieee_is_nan(x)) then
+        message = prefix // name // ' = NaN is not a number: admissible ' // format_real(lo) // &
+                  ' <= ' // name // ' <= ' // format_real(hi)
+        return
+      end if
       in_range = x >= lo .and. x <= hi
       if (.not. in_range) message = prefix // name // ' = ' // format_real(x) // &
         ' is inadmissible: admissible ' // format_real(lo) // ' <= ' // name // ' <= ' // format_real(hi)
@@ -308,6 +427,32 @@ contains
       end if
     end subroutine check_parameter
 
+    !> The law's constraint |theta_f| <= |theta_0| between two parameters: the boxes (or the
+    !> deck's values of a parameter not freed) must leave a point that meets it, and the start
+    !> values must meet it.
+    subroutine check_angles()
+      integer :: i0, if0
+      real(dp) :: hi0, lof, s0, sf
+      real(dp), allocatable :: corner(:)
+      logical :: relevant
+      call law_angles(fd, fd%start, i0, if0, s0, sf, relevant)
+      if (.not. relevant .or. (i0 == 0 .and. if0 == 0)) return   ! read_deck checked the deck
+      ! the box's corner most favourable to theta_f <= theta_0
+      corner = fd%start
+      if (i0 > 0) corner(i0) = fd%upper(i0)
+      if (if0 > 0) corner(if0) = fd%lower(if0)
+      call law_angles(fd, corner, i0, if0, hi0, lof, relevant)
+      if (lof > hi0) then
+        message = prefix // 'theta_f >= ' // format_real(lof) // ' deg and theta_0 <= ' // &
+                  format_real(hi0) // ' deg (bounds or the deck''s values) leave no admissible ' // &
+                  'point: the law needs |theta_f| <= |theta_0|'
+      else if (sf > s0) then
+        message = prefix // 'the start values theta_f = ' // format_real(sf) // ' deg and ' // &
+                  'theta_0 = ' // format_real(s0) // ' deg are inadmissible: the law needs ' // &
+                  '|theta_f| <= |theta_0|'
+      end if
+    end subroutine check_angles
+
     subroutine read_curve(i)
       integer, intent(in) :: i
       type(csv_t) :: csv
@@ -358,6 +503,8 @@ contains
       if (curve_window_column(i) /= '') then
         cwin = find_column(csv, curve_window_column(i), 'curve_window_column', cname)
         if (len_trim(message) > 0) return
+        if (same_value(curve_window_min(i), unset)) curve_window_min(i) = -huge(1.0_dp)
+        if (same_value(curve_window_max(i), unset)) curve_window_max(i) = huge(1.0_dp)
         keep = csv%values(:, cwin) >= curve_window_min(i) .and. &
                csv%values(:, cwin) <= curve_window_max(i)
         if (.not. any(keep)) then
@@ -369,7 +516,8 @@ contains
                     format_real(maxval(csv%values(:, cwin))) // ')'
           return
         end if
-      else if (curve_window_min(i) > -huge(1.0_dp) .or. curve_window_max(i) < huge(1.0_dp)) then
+      else if (.not. same_value(curve_window_min(i), unset) .or. &
+               .not. same_value(curve_window_max(i), unset)) then
         message = prefix // 'curve ' // cname // ': curve_window_min/max without ' // &
                   'curve_window_column (the column the window applies to)'
         return
@@ -388,9 +536,16 @@ contains
         cw = find_column(csv, curve_weight_column(i), 'curve_weight_column', cname)
         if (len_trim(message) > 0) return
         c%w = pack(csv%values(:, cw), keep)
-        if (any(c%w < 0.0_dp)) then
+        if (any(c%w < 0.0_dp) .or. any(c%w > max_weight)) then
           message = prefix // 'curve ' // cname // ': the weight column ' // &
-                    trim(curve_weight_column(i)) // ' has negative values (admissible >= 0)'
+                    trim(curve_weight_column(i)) // ' has values outside [0, ' // &
+                    format_real(max_weight) // '] (admissible 0 <= weight <= ' // &
+                    format_real(max_weight) // ')'
+          return
+        end if
+        if (all(c%w <= 0.0_dp)) then
+          message = prefix // 'curve ' // cname // ': every weight in the column ' // &
+                    trim(curve_weight_column(i)) // ' is 0 (the curve would not count)'
           return
         end if
       else
@@ -398,15 +553,23 @@ contains
         c%w = 1.0_dp
       end if
       if (.not. same_value(curve_weight(i), unset)) then
-        if (.not. (curve_weight(i) > 0.0_dp .and. curve_weight(i) < huge(1.0_dp))) then
+        if (.not. (curve_weight(i) >= min_weight .and. curve_weight(i) <= max_weight)) then
           message = prefix // 'curve ' // cname // ': curve_weight = ' // &
-                    format_real(curve_weight(i)) // ' is inadmissible: admissible > 0'
+                    format_real(curve_weight(i)) // ' is inadmissible: admissible ' // &
+                    format_real(min_weight) // ' <= curve_weight <= ' // format_real(max_weight)
           return
         end if
         c%w = c%w * curve_weight(i)
       else
         scale = maxval(abs(c%y))
-        if (scale > 0.0_dp) c%w = c%w / scale**2
+        if (scale > 0.0_dp .and. scale < sqrt(min_weight)) then
+          message = prefix // 'curve ' // cname // ': every value of ' // trim(curve_y(i)) // &
+                    ' is below ' // format_real(sqrt(min_weight)) // ' in magnitude: the ' // &
+                    'default weight 1/max|y|^2 would exceed ' // format_real(max_weight) // &
+                    ' (give curve_weight, or the values in another unit)'
+          return
+        end if
+        if (scale > 0.0_dp) c%w = c%w * (1.0_dp / scale)**2
       end if
       fd%curves(i) = c
     end subroutine read_curve
@@ -453,6 +616,35 @@ contains
     end subroutine parse_list
 
   end subroutine read_fit_deck
+
+  !> The magnitudes of theta_0 and theta_f at `values` (a free parameter's value, else the
+  !> deck's: the smallest |theta_0| of its planes), their indices among the parameters (0: not
+  !> free), and whether theta_f applies (freed or given by the deck; otherwise it follows
+  !> theta_0: no wear).
+  pure subroutine law_angles(fit, values, it0, itf, theta0, thetaf, relevant)
+    type(fit_t), intent(in) :: fit
+    real(dp), intent(in) :: values(:)
+    integer, intent(out) :: it0, itf
+    real(dp), intent(out) :: theta0, thetaf
+    logical, intent(out) :: relevant
+    integer :: np
+    it0 = findloc(fit%property, prop_theta0, dim=1)
+    itf = findloc(fit%property, prop_thetaf, dim=1)
+    np = 1
+    if (.not. fit%deck%paper_ria) np = fit%deck%n_planes
+    if (it0 > 0) then
+      theta0 = values(it0)
+    else
+      theta0 = minval(abs(fit%deck%theta0_deg(1:np)))
+    end if
+    relevant = itf > 0 .or. fit%deck%thetaf_given
+    thetaf = 0.0_dp
+    if (itf > 0) then
+      thetaf = values(itf)
+    else if (relevant) then
+      thetaf = maxval(abs(fit%deck%thetaf_deg(1:np)))
+    end if
+  end subroutine law_angles
 
   !> The deck's value of property ip (plane 1 for per-plane properties).
   pure real(dp) function deck_value(deck, ip) result(v)

@@ -6,16 +6,20 @@
 program interlock_fit
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
   use interlock_cli, only: exit_program, command_argument, command_text
-  use interlock, only: dp, interlock_version_string, format_integer
+  use interlock, only: dp, interlock_version_string, format_integer, format_real
   use interlock_h5, only: h5_open_library, h5_close_library
   use interlock_files, only: is_folder
   use interlock_mixed_control, only: history_t
   use interlock_history_output, only: output_check_target
-  use interlock_fit_deck, only: fit_t, read_fit_deck, join_selected
-  use interlock_fit_model, only: fit_problem_t, fit_history, curve_model, history_output
-  use interlock_fit_output, only: stage_outcome_t, curve_outcome_t, write_fit_file, &
-      write_fitted_deck, fitted_deck_check
-  use interlock_lm, only: lm_solve, lm_jacobian, lm_statistics, lm_stats_t
+  use interlock_fit_deck, only: fit_t, read_fit_deck, join_selected, output_names
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use interlock_files, only: remove_file, rename_file, unguard_file
+  use interlock_fit_model, only: fit_problem_t, fit_history, curve_model, history_output, &
+      bound_state
+  use interlock_fit_output, only: stage_outcome_t, curve_outcome_t, discretization_t, &
+      write_fit_file, write_fitted_deck, fitted_deck_check
+  use interlock_lm, only: lm_solve, lm_jacobian, lm_statistics, lm_stats_t, lm_evaluate, &
+      lm_least_squares, lm_statistics_unavailable
   implicit none
 
   character(len=:), allocatable :: arg, deck_path, output_dir, command
@@ -98,9 +102,11 @@ contains
     type(stage_outcome_t), allocatable :: stages(:)
     type(curve_outcome_t), allocatable :: curves(:)
     type(lm_stats_t) :: stats
+    type(discretization_t) :: disc
     type(history_t) :: hist
     character(len=1024) :: message
-    character(len=:), allocatable :: base, h5_name, deck_name, why
+    character(len=:), allocatable :: base, h5_name, deck_name, why, statistics, deck_temp
+    character(len=20), allocatable :: at_bound(:)
     real(dp), allocatable :: values(:), r(:), jac(:, :), typical(:), x0(:)
     real(dp) :: t0, t1
     integer :: k, stat, slash, dot, j, r1, r2, n
@@ -129,6 +135,10 @@ contains
       write (error_unit, '(a)') 'interlock-fit: error: ' // path // ': ' // trim(message)
       return
     end if
+    call scale_check(fit)
+    do k = 1, size(fit%warnings)
+      write (output_unit, '(a)') 'interlock-fit: warning: ' // path // ': ' // trim(fit%warnings(k))
+    end do
 
     values = fit%start
     typical = max(abs(fit%start), 1.0e-3_dp * (fit%upper - fit%lower))
@@ -147,26 +157,34 @@ contains
       problem%curves = fit%stages(k)%curves
       problem%m = sum([(size(fit%curves(problem%curves(j))%x), j = 1, size(problem%curves))])
       problem%runs = 0
+      problem%failure = ''
       call say('stage ' // format_integer(k) // ': ' // join_selected(fit%names, problem%free) // &
                ' on ' // join_selected(fit%curve_names, problem%curves) // ' (' // format_integer(problem%m) // ' points)')
       x0 = values(problem%free)
       call lm_solve(problem, x0, fit%lower(problem%free), fit%upper(problem%free), &
                     typical(problem%free), fit%options, stages(k)%result)
-      if (stages(k)%result%iterations == 0 .or. (.not. stages(k)%result%converged .and. &
-          index(stages(k)%result%reason, 'start values') > 0)) then
+      if (.not. stages(k)%result%started) then
+        ! nothing was computed: a bad deck in effect (exit 1, nothing written)
         write (error_unit, '(a)') 'interlock-fit: error: ' // path // ': stage ' // &
-          format_integer(k) // ': ' // stages(k)%result%reason // ': ' // problem%failure
+          format_integer(k) // ': ' // stages(k)%result%reason // ': ' // why_failed(problem)
         return
       end if
       values(problem%free) = stages(k)%result%x
       call cpu_time(t1)
       stages(k)%seconds = t1 - t0
       stages(k)%runs = problem%runs
+      if (.not. stages(k)%result%converged .and. len(problem%failure) > 0) &
+        stages(k)%result%reason = stages(k)%result%reason // ': ' // problem%failure
       call say('stage ' // format_integer(k) // ' stopped after ' // &
                format_integer(stages(k)%result%iterations) // ' iterations (' // &
                format_integer(problem%runs) // ' histories, ' // seconds(t1 - t0) // '): ' // &
                stages(k)%result%reason)
-      if (.not. stages(k)%result%converged) rc = 2
+      if (.not. stages(k)%result%converged) then
+        rc = 2
+        write (output_unit, '(a)') 'interlock-fit: stage ' // format_integer(k) // &
+          ' did NOT converge: ' // stages(k)%result%reason // ' (its last accepted values ' // &
+          'are kept; the results below are written, exit status 2)'
+      end if
     end do
 
     ! statistics over all parameters and all curves, at the fitted values
@@ -175,18 +193,27 @@ contains
     problem%curves = [(j, j = 1, size(fit%curves))]
     problem%m = sum([(size(fit%curves(j)%x), j = 1, size(fit%curves))])
     problem%verbose = .false.
+    problem%failure = ''
     allocate (r(problem%m), jac(problem%m, size(values)))
-    call problem%residuals(values, r, ok)
+    call lm_evaluate(problem, values, r, ok)
     if (ok) call lm_jacobian(problem, values, r, fit%lower, fit%upper, typical, &
                              fit%options%fd_step, jac, ok)
-    if (.not. ok) then
-      write (error_unit, '(a)') 'interlock-fit: error: ' // path // ': at the fitted values: ' // &
-                                problem%failure
-      return
+    statistics = ''
+    if (ok) then
+      call lm_statistics(jac, r, stats)
+      call discretization_check(fit, values, r, jac, stats, disc)
+    else
+      statistics = 'not computed: the Jacobian at the fitted values cannot be computed: ' // &
+                   why_failed(problem)
+      call lm_statistics_unavailable(size(values), stats)
+      disc%change = [(0.0_dp, j = 1, size(values))]
+      disc%ratio = disc%change
+      disc%note = 'not computed (no statistics)'
+      rc = 2
     end if
-    call lm_statistics(jac, r, stats)
+    at_bound = bound_state(fit, values)
 
-    ! the curves at the fitted values
+    ! the curves at the fitted values (the residuals there were computed: the history runs)
     call fit_history(fit, values, hist, why)
     allocate (curves(size(fit%curves)))
     do k = 1, size(fit%curves)
@@ -202,11 +229,26 @@ contains
         o%rms = sqrt(sum((o%model - c%y)**2) / n)
       end associate
     end do
-    call report(fit, values, stats, curves, problem%m)
+    call report(fit, values, stats, curves, problem%m, at_bound, statistics, disc)
 
-    call write_fit_file(h5_name, fit, command, values, stats, stages, curves, deck_name, stat, &
-                        message)
-    if (stat == 0) call write_fitted_deck(deck_name, fit, values, stat, message)
+    ! the fitted deck as a temporary file, the fit file, then the deck's rename: a failure
+    ! anywhere leaves neither file (exit 1)
+    call write_fitted_deck(deck_name, fit, values, deck_temp, stat, message)
+    if (stat == 0) then
+      call write_fit_file(h5_name, fit, command, values, stats, stages, curves, deck_name, &
+                          at_bound, statistics, disc, stat, message)
+      if (stat /= 0) call remove_file(deck_temp)
+    end if
+    if (stat == 0) then
+      call rename_file(deck_temp, deck_name, stat)
+      if (stat /= 0) then
+        message = 'cannot rename ' // deck_temp // ' to ' // deck_name // ' (' // h5_name // &
+                  ' removed too)'
+        call remove_file(deck_temp)
+        call remove_file(h5_name)
+      end if
+    end if
+    if (allocated(deck_temp)) call unguard_file(deck_temp)
     if (stat /= 0) then
       write (error_unit, '(a)') 'interlock-fit: error: ' // path // ': ' // trim(message)
       rc = 1
@@ -216,13 +258,116 @@ contains
     if (rc /= 2) rc = 0
   end subroutine run_fit
 
+  !> Curves on another scale than the model at the start values (the deck's units are mm and
+  !> MPa: a slip in metres spans a thousandth of the history's): each is a warning in
+  !> fit%warnings. Branch matching would compare such a curve with the first thousandth of each
+  !> branch of the history, and the fit would chase parameters far off.
+  subroutine scale_check(fit)
+    type(fit_t), intent(inout) :: fit
+    type(history_t) :: hist
+    character(len=:), allocatable :: why
+    real(dp), allocatable :: hx(:), hy(:)
+    real(dp) :: data_span, model_span, ratio
+    character(len=512) :: line
+    integer :: k
+    call fit_history(fit, fit%start, hist, why)
+    if (len(why) > 0 .or. hist%n_rows < 2) return   ! the first stage reports it
+    do k = 1, size(fit%curves)
+      associate (c => fit%curves(k))
+        hx = history_output(hist, c%along)
+        hy = history_output(hist, c%against)
+        data_span = maxval(c%x) - minval(c%x)
+        model_span = maxval(hx) - minval(hx)
+        if (model_span > 0.0_dp .and. data_span < 1.0e-2_dp * model_span) then
+          line = 'curve ' // c%name // ': its abscissa ' // c%x_column // ' spans ' // &
+            format_real(data_span) // ', the history''s ' // trim(output_names(c%along)) // ' ' // &
+            format_real(model_span) // ' (' // format_real(model_span / data_span) // &
+            ' times more): is the curve in other units than the deck (mm, MPa; a slip in ' // &
+            'metres)? It is compared with the start of each branch of the history only'
+          fit%warnings = [fit%warnings, line]
+        end if
+        data_span = maxval(abs(c%y))
+        model_span = maxval(abs(hy))
+        if (data_span > 0.0_dp .and. model_span > 0.0_dp) then
+          ratio = data_span / model_span
+          if (ratio < 1.0e-2_dp .or. ratio > 1.0e2_dp) then
+            line = 'curve ' // c%name // ': its values ' // c%y_column // ' reach ' // &
+              format_real(data_span) // ', the history''s ' // trim(output_names(c%against)) // &
+              ' at the start values ' // format_real(model_span) // ': is the curve in other ' // &
+              'units than the deck (mm, MPa)?'
+            fit%warnings = [fit%warnings, line]
+          end if
+        end if
+      end associate
+    end do
+  end subroutine scale_check
+
+  !> Why the last evaluation failed, or the generic reason (residuals not finite or too large).
+  function why_failed(problem) result(text)
+    type(fit_problem_t), intent(in) :: problem
+    character(len=:), allocatable :: text
+    text = problem%failure
+    if (len(text) == 0) text = 'the residuals are not finite or their norm exceeds ' // &
+      '1e100 (data or weights far off the model''s scale: check the units of the curves)'
+  end function why_failed
+
+  !> The discretization check: the fitted model's history with twice the steps per segment
+  !> (fit_history refine = 2), and the change of the fitted values this implies, linearised at
+  !> the optimum with the Jacobian of the statistics: dp = -J^+ (r_2N - r_N) (the residuals of
+  !> the finer history at the fitted values minus those of the fit's own). The fit's bias
+  !> against the exact law is about the change times 2^q / (2^q - 1) for a scheme of order q.
+  subroutine discretization_check(fit, values, r, jac, stats, disc)
+    type(fit_t), intent(in) :: fit
+    real(dp), intent(in) :: values(:), r(:), jac(:, :)
+    type(lm_stats_t), intent(in) :: stats
+    type(discretization_t), intent(out) :: disc
+    type(history_t) :: fine
+    character(len=:), allocatable :: why
+    real(dp), allocatable :: dr(:), y(:)
+    integer :: k, first, n, r1, r2, j
+
+    allocate (disc%change(size(values)), disc%ratio(size(values)), dr(size(r)))
+    disc%change = 0.0_dp
+    disc%ratio = 0.0_dp
+    disc%note = ''
+    call fit_history(fit, values, fine, why, refine=2)
+    first = 0
+    do k = 1, size(fit%curves)
+      if (len(why) > 0) exit
+      associate (c => fit%curves(k))
+        n = size(c%x)
+        allocate (y(n))
+        call curve_model(c, fine, y, r1, r2, why)
+        dr(first + 1:first + n) = sqrt(c%w) * (y - c%y) - r(first + 1:first + n)
+        deallocate (y)
+      end associate
+      first = first + n
+    end do
+    if (len(why) > 0) then
+      disc%note = 'not computed: the history with twice the steps fails: ' // why
+      return
+    end if
+    if (.not. all(ieee_is_finite(dr))) then
+      disc%note = 'not computed: the history with twice the steps gives residuals that are ' // &
+                  'not finite'
+      return
+    end if
+    disc%change = -lm_least_squares(jac, dr)
+    do j = 1, size(values)
+      if (stats%identifiable(j) .and. stats%std_error(j) > 0.0_dp) &
+        disc%ratio(j) = disc%change(j) / stats%std_error(j)
+    end do
+  end subroutine discretization_check
+
   !> The table of results on the terminal.
-  subroutine report(fit, values, stats, curves, m)
+  subroutine report(fit, values, stats, curves, m, at_bound, statistics, disc)
     type(fit_t), intent(in) :: fit
     real(dp), intent(in) :: values(:)
     type(lm_stats_t), intent(in) :: stats
     type(curve_outcome_t), intent(in) :: curves(:)
     integer, intent(in) :: m
+    character(len=*), intent(in) :: at_bound(:), statistics
+    type(discretization_t), intent(in) :: disc
     integer :: i, j, n
     character(len=200) :: line
     character(len=:), allocatable :: flags, bad
@@ -235,7 +380,13 @@ contains
     bad = ''
     do i = 1, n
       flags = ''
-      if (values(i) <= fit%lower(i) .or. values(i) >= fit%upper(i)) flags = ' AT A BOUND'
+      select case (trim(at_bound(i)))
+      case ('')
+      case ('theta_f = theta_0')
+        flags = ' AT THE LAW''S LIMIT theta_f = theta_0 (no wear)'
+      case default
+        flags = ' AT THE ' // to_upper(trim(at_bound(i)))
+      end select
       if (.not. stats%identifiable(i)) then
         flags = flags // ' NOT IDENTIFIABLE'
         bad = bad // ' ' // trim(fit%names(i))
@@ -250,6 +401,7 @@ contains
       write (output_unit, '(a, 2x, a, es10.3, a, es10.3, a, a)') trim(line), '[', fit%lower(i), &
         ', ', fit%upper(i), ']', flags
     end do
+    if (len(statistics) > 0) write (output_unit, '(a)') 'statistics ' // statistics
     write (output_unit, '(a)') 'correlation matrix:'
     do i = 1, n
       write (output_unit, '(a16, *(f9.4))') trim(fit%names(i)), (stats%correlation(i, j), j = 1, n)
@@ -271,7 +423,36 @@ contains
       write (output_unit, '(2x, a20, es12.4, es12.4, i8, a)') fit%curves(i)%name, &
         curves(i)%residual_norm, curves(i)%rms, size(fit%curves(i)%x), ' points'
     end do
+    if (len(disc%note) > 0) then
+      write (output_unit, '(a)') 'discretization check ' // disc%note
+      return
+    end if
+    write (output_unit, '(a)') 'discretization check (the fitted model with twice the steps ' // &
+      'per segment: the change of the fitted values it implies):'
+    write (output_unit, '(a16, a24, a24)') 'parameter', 'change', 'change / std. error'
+    do i = 1, n
+      write (output_unit, '(a16, es24.4, f24.4)') trim(fit%names(i)), disc%change(i), disc%ratio(i)
+    end do
+    if (maxval(abs(disc%ratio)) >= 0.1_dp) then
+      write (output_unit, '(a)') 'WARNING: the steps move the fit by more than 0.1 standard ' // &
+        'error (the bias against the exact law is about 2x this change for a first-order ' // &
+        'scheme, explicit or implicit, 4/3x for trapezoidal or extrapolate): give more ' // &
+        'steps, scheme = ''trapezoidal'' or extrapolate = .true. (docs/fit.md)'
+    else
+      write (output_unit, '(a)') 'the steps are fine enough: every change is below 0.1 ' // &
+        'standard error'
+    end if
   end subroutine report
+
+  pure function to_upper(text) result(up)
+    character(len=*), intent(in) :: text
+    character(len=len(text)) :: up
+    integer :: i
+    up = text
+    do i = 1, len(text)
+      if (text(i:i) >= 'a' .and. text(i:i) <= 'z') up(i:i) = achar(iachar(text(i:i)) - 32)
+    end do
+  end function to_upper
 
   function seconds(t) result(text)
     real(dp), intent(in) :: t

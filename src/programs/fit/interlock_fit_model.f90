@@ -9,14 +9,14 @@
 module interlock_fit_model
   use, intrinsic :: iso_fortran_env, only: output_unit
   use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
-      prop_thetaf, status_ok, format_integer, format_real
+      prop_theta0, prop_thetaf, status_ok, format_integer, format_real
   use interlock_deck, only: deck_t, deck_case, deck_set_property
   use interlock_mixed_control, only: history_t, run_history, run_history_extrapolated
-  use interlock_fit_deck, only: fit_t, curve_t, split_branches
+  use interlock_fit_deck, only: fit_t, curve_t, split_branches, law_angles
   use interlock_lm, only: lm_problem_t
   implicit none
   private
-  public :: fit_problem_t, fit_history, curve_model, history_output
+  public :: fit_problem_t, fit_history, curve_model, history_output, bound_state, law_project
 
   !> One stage's least-squares problem: all parameters' current values, the free ones of the
   !> stage (x of the problem) and its curves.
@@ -32,17 +32,21 @@ module interlock_fit_model
   contains
     procedure :: residuals => fit_residuals
     procedure :: progress => fit_progress
+    procedure :: project => fit_project
   end type fit_problem_t
 
 contains
 
   !> The history of the deck with the parameters set to `values` (fit%names order).
   !> message /= '': the values are inadmissible together or the history stopped.
-  subroutine fit_history(fit, values, hist, message)
+  !> refine = 2: every segment of more than one step in twice as many steps (the discretization
+  !> check; a one-step segment is a load jump and stays one step, as with `extrapolate`).
+  subroutine fit_history(fit, values, hist, message, refine)
     type(fit_t), intent(in) :: fit
     real(dp), intent(in) :: values(:)
     type(history_t), intent(inout) :: hist
     character(len=:), allocatable, intent(out) :: message
+    integer, intent(in), optional :: refine
     type(deck_t) :: d
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver
@@ -57,9 +61,12 @@ contains
       call deck_set_property(d, fit%property(i), values(i))
       if (fit%property(i) == prop_thetaf) d%thetaf_given = .true.
     end do
+    if (present(refine)) then
+      where (d%steps > 1) d%steps = refine * d%steps
+    end if
     call deck_case(d, 1, mat, solver, state, label, stat, why)
     if (stat /= status_ok) then
-      message = trim(why)
+      message = 'at ' // parameter_text(fit, values) // ': ' // trim(why)
       return
     end if
     hist%n_rows = 0
@@ -68,8 +75,88 @@ contains
     else
       call run_history(mat, solver, d%control, d%times, d%values, d%steps, state, hist)
     end if
-    if (hist%status /= 'completed') message = 'the history ' // hist%status
+    if (hist%status /= 'completed') message = 'at ' // parameter_text(fit, values) // &
+                                              ': the history ' // hist%status
   end subroutine fit_history
+
+  !> "name = value, ..." of every parameter, as the deck gives them (angles as magnitudes).
+  function parameter_text(fit, values) result(text)
+    type(fit_t), intent(in) :: fit
+    real(dp), intent(in) :: values(:)
+    character(len=:), allocatable :: text
+    integer :: i
+    text = ''
+    do i = 1, size(values)
+      if (i > 1) text = text // ', '
+      text = text // trim(fit%names(i)) // ' = ' // format_real(values(i))
+    end do
+  end function parameter_text
+
+  !> The law's constraint between two parameters, |theta_f| <= |theta_0| (SPEC: the asperities
+  !> wear from theta_0 down to theta_f), on `values` (all parameters, fit%names order) where
+  !> the parameters `movable` (indices) may move: where both may, the projection onto the
+  !> half-plane (both to their mean, within both boxes: the projected step then slides along the
+  !> constraint), else theta_f down to theta_0 or theta_0 up to theta_f. Each bound of the box
+  !> lies in its parameter's own admissible range and the boxes meet the constraint
+  !> (read_fit_deck), so the box and this constraint make the admissible set.
+  pure subroutine law_project(fit, values, movable)
+    type(fit_t), intent(in) :: fit
+    real(dp), intent(inout) :: values(:)
+    integer, intent(in) :: movable(:)
+    integer :: it0, itf
+    real(dp) :: theta0, thetaf, mean
+    logical :: relevant, move0, movef
+    call law_angles(fit, values, it0, itf, theta0, thetaf, relevant)
+    if (.not. relevant .or. thetaf <= theta0) return
+    movef = .false.
+    move0 = .false.
+    if (itf > 0) movef = any(movable == itf)
+    if (it0 > 0) move0 = any(movable == it0)
+    if (movef .and. move0) then
+      mean = 0.5_dp * (thetaf + theta0)
+      mean = min(max(mean, fit%lower(itf), fit%lower(it0)), fit%upper(itf), fit%upper(it0))
+      values(itf) = mean
+      values(it0) = mean
+    else if (movef) then
+      values(itf) = max(theta0, fit%lower(itf))
+    else if (move0) then
+      values(it0) = min(thetaf, fit%upper(it0))
+    end if
+  end subroutine law_project
+
+  !> Where each parameter ended: '' (inside), 'lower bound', 'upper bound', or the law's limit
+  !> 'theta_f = theta_0' (theta_f and theta_0 both on it, to 1e-8 relative, about the
+  !> resolution of the fit's difference steps: an unworn joint).
+  function bound_state(fit, values) result(state)
+    type(fit_t), intent(in) :: fit
+    real(dp), intent(in) :: values(:)
+    character(len=20) :: state(size(values))
+    integer :: i, it0, itf
+    real(dp) :: theta0, thetaf
+    logical :: relevant
+    state = ''
+    do i = 1, size(values)
+      if (values(i) <= fit%lower(i)) state(i) = 'lower bound'
+      if (values(i) >= fit%upper(i)) state(i) = 'upper bound'
+    end do
+    call law_angles(fit, values, it0, itf, theta0, thetaf, relevant)
+    if (relevant .and. thetaf >= theta0 * (1.0_dp - 1.0e-8_dp)) then
+      if (itf > 0) state(itf) = 'theta_f = theta_0'
+      if (it0 > 0) state(it0) = 'theta_f = theta_0'
+    end if
+  end function bound_state
+
+  !> The problem's admissible set: the law's constraint on the stage's free parameters.
+  subroutine fit_project(problem, x)
+    class(fit_problem_t), intent(inout) :: problem
+    real(dp), intent(inout) :: x(:)
+    real(dp), allocatable :: values(:)
+    allocate (values(size(problem%values)))
+    values = problem%values
+    values(problem%free) = x
+    call law_project(problem%fit, values, problem%free)
+    x = values(problem%free)
+  end subroutine fit_project
 
   !> History output k (interlock_fit_deck's output_names) as a series over the rows.
   function history_output(hist, k) result(v)

@@ -11,14 +11,14 @@ module interlock_fit_output
       h5_create_series, h5_append, h5_close_series, h5_attribute
   use interlock_history_output, only: output_t, output_create, output_close, output_abort
   use interlock_files, only: path_kind, path_absent, path_regular, same_file, guard_file, &
-      unguard_file, remove_file, rename_file, process_id
+      unguard_file, remove_file, temporary_name
   use interlock_deck_text, only: group_scan_t, scan_deck
   use interlock_fit_deck, only: fit_t, fit_groups, output_names, join_selected
   use interlock_lm, only: lm_result_t, lm_stats_t
   implicit none
   private
-  public :: stage_outcome_t, curve_outcome_t, write_fit_file, write_fitted_deck, &
-            fitted_deck_check, fitted_deck_mark
+  public :: stage_outcome_t, curve_outcome_t, discretization_t, write_fit_file, &
+            write_fitted_deck, fitted_deck_check, fitted_deck_mark
 
   character(len=*), parameter :: fitted_deck_mark = '! interlock-fit: fitted deck'
 
@@ -35,38 +35,51 @@ module interlock_fit_output
     real(dp) :: rms = 0.0_dp             !< sqrt(mean (model - y)^2), in the curve's unit
   end type curve_outcome_t
 
+  !> The discretization check: the change of each fitted value that twice the steps per segment
+  !> implies (linearised at the optimum), and that change in standard errors. note: '' when
+  !> computed, else why not.
+  type :: discretization_t
+    real(dp), allocatable :: change(:), ratio(:)
+    character(len=:), allocatable :: note
+  end type discretization_t
+
 contains
 
   !> Write the fit file `final_name` (checked by the caller with output_check_target).
+  !> at_bound: where each parameter ended (interlock_fit_model's bound_state); statistics: ''
+  !> or why the statistics could not be computed.
   subroutine write_fit_file(final_name, fit, command, values, stats, stages, curves, &
-                            fitted_deck_name, stat, message)
-    character(len=*), intent(in) :: final_name, command, fitted_deck_name
+                            fitted_deck_name, at_bound, statistics, disc, stat, message)
+    character(len=*), intent(in) :: final_name, command, fitted_deck_name, at_bound(:), statistics
     type(fit_t), intent(in) :: fit
     real(dp), intent(in), contiguous :: values(:)
     type(lm_stats_t), intent(in) :: stats
     type(stage_outcome_t), intent(in) :: stages(:)
     type(curve_outcome_t), intent(in) :: curves(:)
+    type(discretization_t), intent(in) :: disc
     integer, intent(out) :: stat
     character(len=*), intent(out) :: message
     type(output_t) :: out
     type(h5_file_t) :: g, sg, top
-    integer :: k, i
-    character(len=:), allocatable :: names
+    integer :: k
 
     call output_create(final_name, out, stat, message)
     if (stat /= 0) return
-    names = ''
-    do i = 1, size(fit%names)
-      if (i > 1) names = names // ', '
-      names = names // trim(fit%names(i))
-    end do
     call h5_attribute(out%file, 'program', 'interlock-fit', stat)
     if (stat == 0) call h5_attribute(out%file, 'version', interlock_version_string, stat)
     if (stat == 0) call h5_attribute(out%file, 'command_line', command, stat)
     if (stat == 0) call h5_attribute(out%file, 'deck', fit%deck%text, stat)
     if (stat == 0) call h5_attribute(out%file, 'deck_file', fit%deck%path, stat)
     if (stat == 0) call h5_attribute(out%file, 'fitted_deck', fitted_deck_name, stat)
-    if (stat == 0) call h5_attribute(out%file, 'parameters', names, stat)
+    if (stat == 0) call h5_attribute(out%file, 'parameters', fit%names, stat)
+    if (stat == 0) call h5_attribute(out%file, 'curve_names', fit%curve_names, stat)
+    if (stat == 0) call h5_attribute(out%file, 'at_bound', at_bound, stat)
+    if (stat == 0) call h5_attribute(out%file, 'statistics', statistics, stat)
+    if (stat == 0) call h5_attribute(out%file, 'discretization_change', disc%change, stat)
+    if (stat == 0) call h5_attribute(out%file, 'discretization_change_se', disc%ratio, stat)
+    if (stat == 0) call h5_attribute(out%file, 'discretization_check', disc%note, stat)
+    if (stat == 0 .and. size(fit%warnings) > 0) &
+      call h5_attribute(out%file, 'warnings', fit%warnings, stat)
     if (stat == 0) call h5_attribute(out%file, 'values', values, stat)
     if (stat == 0) call h5_attribute(out%file, 'std_error', stats%std_error, stat)
     if (stat == 0) call h5_attribute(out%file, 'start', fit%start, stat)
@@ -188,19 +201,20 @@ contains
 
   !> The deck with the fitted values (each free parameter's value replaced, or added to its
   !> group where the deck left it at its default) and without the group &fit; written as
-  !> NAME.tmp-PID and renamed.
-  subroutine write_fitted_deck(name, fit, values, stat, message)
+  !> `temp` (NAME.tmp-PID, guarded), which the caller renames to `name` once the fit file is
+  !> written too (or removes).
+  subroutine write_fitted_deck(name, fit, values, temp, stat, message)
     character(len=*), intent(in) :: name
     type(fit_t), intent(in) :: fit
     real(dp), intent(in) :: values(:)
+    character(len=:), allocatable, intent(out) :: temp
     integer, intent(out) :: stat
     character(len=*), intent(out) :: message
     type(group_scan_t) :: scan(size(fit_groups))
-    character(len=:), allocatable :: text, temp, header
+    character(len=:), allocatable :: text, header
     integer :: n_edit, i, k, g, u, ios, ip, first, last, amp, np
     integer, allocatable :: at(:), cut(:)
     character(len=512), allocatable :: put(:)
-    character(len=32) :: pid
     character(len=:), allocatable :: value
     logical :: found
 
@@ -254,8 +268,7 @@ contains
     do i = 1, size(values)
       header = header // ' ' // trim(fit%names(i)) // ' = ' // real_text(values(i))
     end do
-    write (pid, '(i0)') process_id()
-    temp = name // '.tmp-' // trim(pid)
+    temp = temporary_name(name)
     call guard_file(temp, stat)
     if (stat /= 0) then
       message = 'cannot guard ' // temp // ' against interruption'
@@ -265,16 +278,15 @@ contains
           form='unformatted', iostat=ios)
     if (ios == 0) write (u, iostat=ios) header // achar(10) // text
     if (ios == 0) close (u, iostat=ios)
-    if (ios == 0) call rename_file(temp, name, ios)
     if (ios /= 0) then
-      message = 'cannot write the fitted deck ' // name
+      message = 'cannot write the fitted deck ' // name // ' (as ' // temp // ')'
       call remove_file(temp)
+      call unguard_file(temp)
       stat = 1
     else
       stat = 0
       message = ''
     end if
-    call unguard_file()
 
   contains
 

@@ -5,32 +5,47 @@
 !> Why projected, not a transform: the parameters keep their own units all the way (the Jacobian
 !> at the optimum is the one of the model, so the standard errors need no chain rule that blows up
 !> near a bound, as x = l + (u - l) sin^2(y) would), and a parameter that ends on a bound is seen
-!> there (it is reported). Each iteration: the Jacobian by forward differences of whole
-!> residual vectors (steps into the box); the parameters on a bound whose gradient points out of
+!> there (it is reported). The admissible set is the box and what the problem's `project` adds
+!> (a constraint that couples parameters, such as theta_f <= theta_0 of the law): every point at
+!> which the residuals are evaluated, difference steps included, lies in it. Each iteration: the
+!> Jacobian by one-sided differences of whole residual vectors (forward, or backward where the
+!> forward step would leave the admissible set); the parameters on a bound whose gradient points out of
 !> the box are held (active set); the others take the step p of the damped linear problem
 !>   min | [J_F; sqrt(lambda) D_F] p + [r; 0] |
 !> solved by LAPACK dgelsd (SVD, never the normal equations; D: Moré's scaling, the largest
-!> column norms of J so far), and the trial point is the projection of x + p onto the box. The
+!> column norms of J so far), and the trial point is the projection of x + p onto the box (then
+!> the problem's projection). The
 !> trial is accepted when it lowers f by at least 1e-4 of the reduction predicted by the linear
 !> model along the projected step; lambda then shrinks (Nielsen's rule), else it grows.
 !> Stopping (lm_result_t%reason): the scaled projected gradient |g_j| / (|J_j| |r|) <= gtol for
 !> every free parameter; the accepted step |D s| <= xtol (|D x| + xtol); the actual and predicted
-!> relative reductions of f both <= ftol; f = 0; or max_iterations, or no step can lower f.
+!> relative reductions of f both <= ftol; f = 0; or max_iterations, or no step can lower f, or
+!> the residuals cannot be computed at a point of the admissible set. Whatever the stop, the
+!> result is the last accepted point (lm_result_t%started: the start itself could be evaluated).
+!> Residuals that are not finite, or whose norm exceeds max_residual_norm (their squares would
+!> overflow), count as residuals that cannot be computed: never as a fit.
 module interlock_lm
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use interlock, only: dp
   implicit none
   private
   public :: lm_problem_t, lm_options_t, lm_result_t, lm_stats_t, lm_solve, lm_jacobian, &
-            lm_statistics
+            lm_statistics, lm_statistics_unavailable, lm_least_squares, lm_evaluate, max_residual_norm
+
+  !> The largest residual norm taken as computed: far above any weighted misfit of data in
+  !> their own units, far below the square root of the largest double (the cost is |r|^2 / 2).
+  real(dp), parameter :: max_residual_norm = 1.0e100_dp
 
   !> A least-squares problem: m residuals of n parameters. residuals(x, r, ok): ok = .false.
   !> where r cannot be computed (the trial point is then rejected); progress: a report per
-  !> accepted iteration.
+  !> accepted iteration; project: moves a point of the box into the admissible set where a
+  !> constraint couples parameters (the default: the box is the admissible set).
   type, abstract :: lm_problem_t
     integer :: m = 0
   contains
     procedure(residual_function), deferred :: residuals
     procedure(progress_report), deferred :: progress
+    procedure :: project => no_projection
   end type lm_problem_t
 
   abstract interface
@@ -63,6 +78,7 @@ module interlock_lm
     real(dp) :: cost = 0.0_dp
     integer :: iterations = 0, evaluations = 0
     logical :: converged = .false.
+    logical :: started = .false.   !< the residuals at the start values could be computed
     character(len=:), allocatable :: reason
   end type lm_result_t
 
@@ -118,15 +134,18 @@ contains
     m = problem%m
     allocate (x(n), r(m), jac(m, n), g(n), d(n), xt(n), rt(m), s(n), col(n), free(n))
     x = min(max(x0, lower), upper)
+    call problem%project(x)
     d = 0.0_dp
+    r = 0.0_dp
     res%evaluations = 1
-    call problem%residuals(x, r, ok)
+    call lm_evaluate(problem, x, r, ok)
     if (.not. ok) then
       res%reason = 'the residuals cannot be computed at the start values'
       call finish()
       return
     end if
-    f = 0.5_dp * dot_product(r, r)
+    res%started = .true.
+    f = 0.5_dp * norm2(r)**2
     lambda = 1.0e-3_dp
     nu = 2.0_dp
     call problem%progress(0, x, f, 0.0_dp)
@@ -141,7 +160,8 @@ contains
       call lm_jacobian(problem, x, r, lower, upper, typical, opts%fd_step, jac, ok)
       res%evaluations = res%evaluations + n
       if (.not. ok) then
-        res%reason = 'the residuals cannot be computed at a difference step of the Jacobian'
+        res%reason = 'the residuals cannot be computed at a difference step of the Jacobian ' // &
+                     '(within the admissible set)'
         exit
       end if
       g = matmul(r, jac)
@@ -172,14 +192,15 @@ contains
           k = k + 1
           xt(j) = min(max(x(j) + p(k), lower(j)), upper(j))
         end do
+        call problem%project(xt)
         s = xt - x
         pred = f - 0.5_dp * sum((r + matmul(jac, s))**2)
         rho = -1.0_dp
         if (pred > 0.0_dp) then
-          call problem%residuals(xt, rt, ok)
+          call lm_evaluate(problem, xt, rt, ok)
           res%evaluations = res%evaluations + 1
           if (ok) then
-            ft = 0.5_dp * dot_product(rt, rt)
+            ft = 0.5_dp * norm2(rt)**2
             rho = (f - ft) / pred
           end if
         end if
@@ -226,28 +247,25 @@ contains
     subroutine finish()
       res%x = x
       res%r = r
-      res%cost = 0.5_dp * dot_product(r, r)
+      res%cost = 0.0_dp
+      if (res%started) res%cost = 0.5_dp * norm2(r)**2
     end subroutine finish
 
   end subroutine lm_solve
 
-  !> The step of the free parameters: least-squares solution of [J_F; sqrt(lambda) D_F] p = [-r; 0]
-  !> (dgelsd).
+  !> The step of the free parameters: least-squares solution of [J_F; sqrt(lambda) D_F] p = [-r; 0].
   function damped_step(jac, r, d, lambda, free, nf) result(p)
     real(dp), intent(in) :: jac(:, :), r(:), d(:), lambda
     logical, intent(in) :: free(:)
     integer, intent(in) :: nf
     real(dp) :: p(nf)
-    real(dp), allocatable :: a(:, :), b(:, :), sv(:), work(:)
-    integer, allocatable :: iwork(:)
-    integer :: m, j, k, rank, info, lwork
-    real(dp) :: query(1)
-    integer :: iquery(1)
+    real(dp), allocatable :: a(:, :), b(:)
+    integer :: m, j, k
 
     m = size(r)
     p = 0.0_dp
     if (nf == 0) return
-    allocate (a(m + nf, nf), b(m + nf, 1), sv(nf))
+    allocate (a(m + nf, nf), b(m + nf))
     a = 0.0_dp
     k = 0
     do j = 1, size(free)
@@ -256,34 +274,101 @@ contains
       a(1:m, k) = jac(:, j)
       a(m + k, k) = sqrt(lambda) * d(j)
     end do
-    b(1:m, 1) = -r
-    b(m + 1:, 1) = 0.0_dp
-    call dgelsd(m + nf, nf, 1, a, m + nf, b, m + nf, sv, -1.0_dp, rank, query, -1, iquery, info)
-    lwork = max(1, int(query(1)))
-    allocate (work(lwork), iwork(max(1, iquery(1))))
-    call dgelsd(m + nf, nf, 1, a, m + nf, b, m + nf, sv, -1.0_dp, rank, work, lwork, iwork, info)
-    if (info == 0) p = b(1:nf, 1)
+    b(1:m) = -r
+    b(m + 1:) = 0.0_dp
+    p = lm_least_squares(a, b)
   end function damped_step
 
-  !> Forward-difference Jacobian of r at x: column j from one more evaluation at x + h_j e_j,
-  !> h_j = fd_step max(|x_j|, typical_j), taken backwards where the forward step would leave the box.
+  !> The minimum-norm least-squares solution of a x = b (LAPACK dgelsd: SVD, never the normal
+  !> equations; singular values below machine precision times the largest are dropped). Zero
+  !> if LAPACK fails.
+  function lm_least_squares(a, b) result(x)
+    real(dp), intent(in) :: a(:, :), b(:)
+    real(dp) :: x(size(a, 2))
+    real(dp), allocatable :: aa(:, :), bb(:, :), sv(:), work(:)
+    integer, allocatable :: iwork(:)
+    integer :: m, n, ld, rank, info, lwork
+    real(dp) :: query(1)
+    integer :: iquery(1)
+
+    m = size(a, 1)
+    n = size(a, 2)
+    x = 0.0_dp
+    if (n == 0 .or. m == 0) return
+    ld = max(m, n)
+    allocate (aa(m, n), bb(ld, 1), sv(min(m, n)))
+    aa = a
+    bb = 0.0_dp
+    bb(1:m, 1) = b
+    call dgelsd(m, n, 1, aa, m, bb, ld, sv, -1.0_dp, rank, query, -1, iquery, info)
+    lwork = max(1, int(query(1)))
+    allocate (work(lwork), iwork(max(1, iquery(1))))
+    call dgelsd(m, n, 1, aa, m, bb, ld, sv, -1.0_dp, rank, work, lwork, iwork, info)
+    if (info == 0) x = bb(1:n, 1)
+  end function lm_least_squares
+
+  !> The residuals at x, checked: ok = .false. where the problem cannot compute them, or where
+  !> they are not finite or their norm exceeds max_residual_norm.
+  subroutine lm_evaluate(problem, x, r, ok)
+    class(lm_problem_t), intent(inout) :: problem
+    real(dp), intent(in) :: x(:)
+    real(dp), intent(out) :: r(:)
+    logical, intent(out) :: ok
+    call problem%residuals(x, r, ok)
+    if (.not. ok) return
+    ok = all(ieee_is_finite(r))
+    if (ok) ok = norm2(r) <= max_residual_norm
+  end subroutine lm_evaluate
+
+  !> The default projection: none (the box is the admissible set).
+  subroutine no_projection(problem, x)
+    class(lm_problem_t), intent(inout) :: problem
+    real(dp), intent(inout) :: x(:)
+    if (.false.) x(1) = x(1) + real(problem%m, dp)   ! (both arguments are part of the interface)
+  end subroutine no_projection
+
+  !> One-sided difference Jacobian of r at x (a point of the admissible set): column j from one
+  !> more evaluation at x + h_j e_j, h_j = fd_step max(|x_j|, typical_j), taken backwards where
+  !> the forward point would leave the admissible set (the box, then the problem's projection:
+  !> a step that either moves is not taken). ok = .false.: neither step stays inside, or the
+  !> residuals cannot be computed there.
   subroutine lm_jacobian(problem, x, r, lower, upper, typical, fd_step, jac, ok)
     class(lm_problem_t), intent(inout) :: problem
     real(dp), intent(in) :: x(:), r(:), lower(:), upper(:), typical(:), fd_step
     real(dp), intent(out) :: jac(:, :)
     logical, intent(out) :: ok
     real(dp), allocatable :: xh(:), rh(:)
-    real(dp) :: h
-    integer :: j
+    real(dp) :: h, step, intended
+    integer :: j, side
+    logical :: inside
     allocate (xh(size(x)), rh(size(r)))
+    ok = .false.
     do j = 1, size(x)
-      h = fd_step * max(abs(x(j)), typical(j))
-      if (x(j) + h > upper(j)) h = -h
-      if (x(j) + h < lower(j)) h = 0.5_dp * (upper(j) - lower(j)) * sign(1.0_dp, upper(j) - 2 * x(j) + lower(j))
-      xh = x
-      xh(j) = x(j) + h
+      step = fd_step * max(abs(x(j)), typical(j))
+      inside = .false.
+      ! forward, backward, and (a box narrower than the step) half the larger room
+      do side = 1, 3
+        select case (side)
+        case (1)
+          h = step
+        case (2)
+          h = -step
+        case default
+          h = 0.5_dp * merge(upper(j) - x(j), lower(j) - x(j), upper(j) - x(j) >= x(j) - lower(j))
+        end select
+        xh = x
+        xh(j) = x(j) + h
+        if (xh(j) > upper(j) .or. xh(j) < lower(j) .or. .not. abs(xh(j) - x(j)) > 0.0_dp) cycle
+        intended = xh(j)
+        call problem%project(xh)
+        ! inside: the projection moved nothing
+        inside = .not. (abs(xh(j) - intended) > 0.0_dp .or. any(abs(xh(1:j - 1) - x(1:j - 1)) > 0.0_dp) &
+                        .or. any(abs(xh(j + 1:) - x(j + 1:)) > 0.0_dp))
+        if (inside) exit
+      end do
+      if (.not. inside) return
       h = xh(j) - x(j)
-      call problem%residuals(xh, rh, ok)
+      call lm_evaluate(problem, xh, rh, ok)
       if (.not. ok) return
       jac(:, j) = (rh - r) / h
     end do
@@ -355,5 +440,23 @@ contains
       end do
     end do
   end subroutine lm_statistics
+
+  !> The statistics of n parameters where none can be computed: infinite standard errors, no
+  !> parameter identifiable, the unit matrix as correlation, an infinite condition number.
+  pure subroutine lm_statistics_unavailable(n, st)
+    integer, intent(in) :: n
+    type(lm_stats_t), intent(out) :: st
+    integer :: j
+    allocate (st%std_error(n), st%correlation(n, n), st%identifiable(n), st%singular(n))
+    st%std_error = huge(1.0_dp)
+    st%identifiable = .false.
+    st%singular = 0.0_dp
+    st%correlation = 0.0_dp
+    do j = 1, n
+      st%correlation(j, j) = 1.0_dp
+    end do
+    st%condition = huge(1.0_dp)
+    st%ill_conditioned = .true.
+  end subroutine lm_statistics_unavailable
 
 end module interlock_lm

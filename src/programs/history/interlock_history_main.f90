@@ -2,8 +2,9 @@
 !> Exit status: 0 every case of every deck completed; 1 a deck was rejected, its output would
 !> replace a file that is not an earlier result, or a file could not be written (no result file,
 !> no temporary file is left for it); 2 every file was written but some case stopped early (its
-!> `status` attribute says why). SIGINT, SIGTERM, SIGHUP: the temporary file is removed and the
-!> program ends by the signal (interlock_posix.c).
+!> `status` attribute says why). A signal that ends the program (SIGINT, SIGTERM, SIGHUP, SIGPIPE,
+!> SIGQUIT, ...): the temporary file is removed and the program ends by the signal
+!> (interlock_posix.c).
 program interlock_history
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
   use interlock_cli, only: exit_program, command_argument, command_text
@@ -107,7 +108,9 @@ contains
     character(len=1024) :: message
     integer :: stat, icase, slash
     character(len=8) :: cbuf
+    logical :: jump_warned
 
+    jump_warned = .false.
     call read_deck(path, deck, stat, message)
     if (stat /= status_ok) then
       write (error_unit, '(a)') 'interlock-history: error: ' // trim(message)
@@ -181,6 +184,14 @@ contains
         write (output_unit, '(a)') path // ': case ' // trim(cbuf) // ': ' // writer%status
       end if
       if (writer%status /= 'completed') rc = max(rc, 2)
+      if (len(writer%sliding_jumps) > 0 .and. .not. jump_warned) then
+        jump_warned = .true.
+        write (output_unit, '(a)') path // ': case ' // trim(cbuf) // ': warning: planes ' // &
+          'slide or wear within a segment of one step (' // writer%sliding_jumps // '): ' // &
+          'the state at its end is the scheme''s, not the law''s (the schemes differ there, ' // &
+          'whatever the steps elsewhere); give that segment more steps to follow the law ' // &
+          '(docs/deck-format.md, "steps")'
+      end if
     end do
     call output_close(out, stat, message)
     if (stat /= 0) then
@@ -200,7 +211,8 @@ contains
       'writes one HDF5 file per deck (docs/history-output.md): the &output file, or the', &
       'deck''s name with .h5 in the working folder. The file is written as NAME.h5.tmp-PID', &
       'and renamed when complete: a rejected deck or a failed write leaves no file, and', &
-      'SIGINT, SIGTERM or SIGHUP remove the temporary file (SIGKILL leaves it). An existing', &
+      'a signal that ends the program (SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGQUIT, ...)', &
+      'removes the temporary file (SIGKILL leaves it). An existing', &
       'file is replaced only if it is an earlier result of interlock-history: never the', &
       'deck or any other file.', &
       '', &

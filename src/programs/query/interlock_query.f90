@@ -3,14 +3,14 @@
 !> docs/material.md is the output of `interlock-query --markdown`.
 program interlock_query
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-  use interlock_cli, only: exit_program
+  use interlock_cli, only: exit_program, command_argument
   use interlock, only: properties, statevars, n_properties, n_required_properties, &
       n_statevars_per_plane, n_statevars_global, umat_planes, umat_nstatv, statevar_index, &
       format_range, format_real, property_t, statevar_t, kind_real, kind_flag, kind_choice, &
       interlock_version_string, format_integer
   implicit none
   character(len=:), allocatable :: arg
-  integer :: iarg, n, length
+  integer :: iarg, n
 
 
   n = command_argument_count()
@@ -19,10 +19,20 @@ program interlock_query
     call usage(error_unit)
     call exit_program(2)
   end if
+  ! every option is checked before anything is printed
   do iarg = 1, n
-    call get_command_argument(iarg, length=length)
-    allocate (character(len=length) :: arg)
-    if (length > 0) call get_command_argument(iarg, arg)
+    arg = command_argument(iarg)
+    select case (arg)
+    case ('--help', '-h', '--version', '--properties', '--state-variables', '--props', &
+          '--statev', '--markdown')
+    case default
+      write (error_unit, '(a)') "interlock-query: error: unknown option '" // arg // "'"
+      call usage(error_unit)
+      call exit_program(2)
+    end select
+  end do
+  do iarg = 1, n
+    arg = command_argument(iarg)
     select case (arg)
     case ('--help', '-h')
       call usage(output_unit)
@@ -38,12 +48,7 @@ program interlock_query
       call print_statev()
     case ('--markdown')
       call print_markdown()
-    case default
-      write (error_unit, '(a)') "interlock-query: error: unknown option '" // arg // "'"
-      call usage(error_unit)
-      call exit_program(2)
     end select
-    deallocate (arg)
   end do
   call exit_program(0)
 
