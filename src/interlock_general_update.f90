@@ -28,9 +28,9 @@ contains
 
   !> interlock_update (its contract) for every material and solver but the flat-plane laws of
   !> interlock_update itself: a specialised kernel without substepping first, with only the
-  !> checks it needs (mat%kernel /= kernel_general only in a prepared material; s tested on its
-  !> bits, interlock_kinds:is_finite_bits), else general_update. When the kernel does not apply
-  !> or its result is not finite, general_update takes the increment again (and reports). A small procedure of its own: through general_update's checks and
+  !> checks it needs (mat%kernel /= kernel_general only in a prepared material; s finite, the
+  !> caller's test), else general_update. When the kernel does not apply or its result is not
+  !> finite, general_update takes the increment again (and reports). A small procedure of its own: through general_update's checks and
   !> frame the full model's update costs more (docs/bench.md, section 1).
   pure subroutine kernel_update(mat, solver, s, old, new, sigma, tangent, info)
     type(interlock_material_t), intent(in) :: mat
@@ -42,8 +42,7 @@ contains
     type(interlock_info_t), intent(inout) :: info
     logical :: done
     if (mat%kernel /= kernel_general .and. solver%substep_tol <= 0.0_dp .and. &
-        solver%scheme >= 1 .and. solver%scheme <= n_schemes .and. &
-        is_finite_bits(s(1)) .and. is_finite_bits(s(2))) then
+        solver%scheme >= 1 .and. solver%scheme <= n_schemes) then
       call kernel_step(mat, solver, s, old, new, tangent, done, info%newton_iterations)
       if (done) then
         if (finite_response(new%sigma, tangent)) then

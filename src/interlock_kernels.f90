@@ -69,14 +69,12 @@ contains
                              sigma, tangent)
       if (mat%n_planes > 1) call share_first_plane(mat%n_planes, old, new)
     else
-      if (scheme == scheme_explicit) then
-        ! The frozen frames first: libm's sincos sets and restores the rounding mode, which
-        ! waits for the floating-point work before it, so that the planes' laws after it
-        ! overlap (the same values).
-        do k = 1, mat%n_planes
-          if (mat%plane_wears(k)) call plane_frame(mat, k, old%theta(k), c_k(k), sn_k(k))
-        end do
-      end if
+      ! The start frames of the wearing planes first (the explicit scheme's frozen ones): libm's
+      ! sincos sets and restores the rounding mode, which waits for the floating-point work
+      ! before it, so that the planes' laws after it overlap (the same values).
+      do k = 1, mat%n_planes
+        if (mat%plane_wears(k)) call plane_frame(mat, k, old%theta(k), c_k(k), sn_k(k))
+      end do
       do k = 1, mat%n_planes
         if (.not. mat%plane_wears(k)) then
           call wear_weights(mat, scheme, old%damage(k), old%tauf(k), mat%cos0(k), mat%sin0(k), &
@@ -118,7 +116,8 @@ contains
           ! A coupled scheme: the wear equation at the end of the step, at the root's angle,
           ! and d theta / d s by implicit differentiation: d zeta/d s = (grad G . R) / F'.
           theta = old%theta(k)
-          call plane_frame(mat, k, theta, c, sn)
+          c = c_k(k)
+          sn = sn_k(k)
           c_o = c
           s_o = sn
           call wear_weights(mat, scheme, old%damage(k), old%tauf(k), c, sn, old%s(1), old%s(2), &

@@ -51,14 +51,14 @@ contains
       r%gsf = [-p%dtauf_n * mat%inv_kt, 1.0_dp, 0.0_dp, 0.0_dp]
     end if
     r%gtauf = [p%dtauf_n, p%dtauf_t, 0.0_dp, -p%dtauf_t]
-    r%gslip = [p%dslip_n, p%dslip_t, 0.0_dp, -p%dslip_t]
+    r%gslip = [abs(p%dtauf_n) * mat%inv_kt, p%dslip_t, 0.0_dp, -p%dslip_t]
 
     ! The traction (eq. 6): D and tau_f carry the start state's columns.
     r%gsig(1, :) = [p%k_nn, p%k_nt, -mat%kn * max(0.0_dp, sl(1)) * r%gdmg(3), 0.0_dp]
     r%gsig(2, :) = [p%k_tn, p%k_tt, (p%tauf - mat%kt * sl(2)) * r%gdmg(3), p%dmg * r%gtauf(4)]
 
     ! The frictional work on the damaged part (decision D4), the wear driver.
-    call wear_driver(p, 1.0_dp, 0.0_dp, drv, gw_n, gw_t)
+    call wear_driver(mat, p, 1.0_dp, 0.0_dp, drv, gw_n, gw_t)
     r%gwfric = [gw_n, gw_t, abs(p%tauf) * p%slip * r%gdmg(3), &
                 p%dmg * p%slip * sign(1.0_dp, p%tauf) * r%gtauf(4) + &
                 p%dmg * abs(p%tauf) * r%gslip(4)]

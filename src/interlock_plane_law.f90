@@ -31,7 +31,7 @@ module interlock_plane_law
     real(dp) :: gd_n, gd_t            !< dD / d(s_kn, s_kt)
     real(dp) :: dtauf_n, dtauf_t      !< d tau_f / d(s_kn, s_kt)
     real(dp) :: slip                  !< |sf - sf_o| [mm]
-    real(dp) :: dslip_n, dslip_t      !< d|sf - sf_o| / d(s_kn, s_kt)
+    real(dp) :: dslip_t               !< d|sf - sf_o| / d s_kt: the slip's sign (0 sticking)
     real(dp) :: wfric   !< frictional work on the damaged part, D |tau_f| |sf - sf_o| [N/mm]
     real(dp) :: wdmg    !< energy dissipated by damage in the step [N/mm]
     real(dp) :: psi     !< stored energy at the end of the step [N/mm]
@@ -67,9 +67,6 @@ contains
     if (friction) mu_p = -mat%mu_eff * mat%kn * min(0.0_dp, sl_n)
     call friction_step(mu_p, mat%mu_eff * mat%kn, mat%kt, mat%inv_kt, sl_t, sf_o, p%sf, p%tauf, &
                        p%dtauf_n, p%dtauf_t, p%slip, p%dslip_t)
-    ! (d|d sf| / d s_kt is the slip's sign; d/d s_kn is the bound's slope while sliding)
-    p%dslip_n = 0.0_dp
-    if (mu_p > 0.0_dp .and. abs(p%dslip_t) > 0.5_dp) p%dslip_n = mat%mu_eff * mat%kn * mat%inv_kt
 
     ! The traction (eq. 6): sigma_kn = K_n s_kn - D K_n <s_kn>_+,
     ! sigma_kt = (1 - D) K_t s_kt + D tau_f, and its derivative; tk = tau_f - K_t s_kt is
@@ -161,17 +158,20 @@ contains
 
   !> The wear driver G = a_end D |tau_f| |d sf| + g_slip |d sf| of the plane's response p and
   !> its derivative with respect to (s_kn, s_kt) at fixed start state (d|tau_f| = sign(tau_f)
-  !> d tau_f; tau_f = 0 where the damaged part is free).
-  elemental subroutine wear_driver(p, a_end, g_slip, drv, gdrv_n, gdrv_t)
+  !> d tau_f; tau_f = 0 where the damaged part is free; d|d sf| / d s_kn = |d tau_f / d s_kn|
+  !> / K_t, the bound's slope while sliding, 0 otherwise).
+  elemental subroutine wear_driver(mat, p, a_end, g_slip, drv, gdrv_n, gdrv_t)
+    type(interlock_material_t), intent(in) :: mat
     type(plane_response_t), intent(in) :: p
     real(dp), intent(in) :: a_end, g_slip
     real(dp), intent(out) :: drv, gdrv_n, gdrv_t
-    real(dp) :: atau, sgt
+    real(dp) :: atau, sgt, dslip_n
     atau = abs(p%tauf)
     sgt = sign(1.0_dp, p%tauf)
+    dslip_n = abs(p%dtauf_n) * mat%inv_kt
     drv = a_end * p%wfric + g_slip * p%slip
     gdrv_n = a_end * (atau * p%slip * p%gd_n + p%dmg * p%slip * sgt * p%dtauf_n + &
-                      p%dmg * atau * p%dslip_n) + g_slip * p%dslip_n
+                      p%dmg * atau * dslip_n) + g_slip * dslip_n
     gdrv_t = a_end * (atau * p%slip * p%gd_t + p%dmg * p%slip * sgt * p%dtauf_t + &
                       p%dmg * atau * p%dslip_t) + g_slip * p%dslip_t
   end subroutine wear_driver
@@ -299,7 +299,7 @@ contains
     sl(1) = c * s(1) + sn * s(2)
     sl(2) = -sn * s(1) + c * s(2)
     call plane_law(mat, sl(1), sl(2), beta_o, d_o, sf_o, mat%use_friction, p)
-    call wear_driver(p, a_end, g_slip, drv, gdrv_n, gdrv_t)
+    call wear_driver(mat, p, a_end, g_slip, drv, gdrv_n, gdrv_t)
     fp = 1.0_dp - thp * (gdrv_n * sl(2) - gdrv_t * sl(1))
   end subroutine wear_evaluate
 
