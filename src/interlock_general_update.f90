@@ -4,12 +4,14 @@
 !> failed local solve is retried on sub-increments before it is reported. interlock_update
 !> (interlock_integrate) calls it, through kernel_update (a specialised kernel without
 !> substepping, with only the checks it needs), for everything but the flat-plane laws it runs
-!> itself; it is a module of its own so that the compiler does not inline it there, where its
-!> size would make every call of the small laws pay for saving registers.
+!> itself. A module of its own, compiled as the UMAT's path rather than as the laws
+!> (src/CMakeLists.txt): general_update is too large to be inlined into the front, where it
+!> would make every call of the small laws pay for saving registers; the small kernel_update
+!> is inlined there.
 module interlock_general_update
   use interlock_kinds, only: dp, is_finite_bits, is_finite_value
   use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, &
-      n_schemes, scheme_names, kernel_general
+      n_schemes, scheme_list, kernel_general
   use interlock_material_table, only: format_real, format_integer
   use interlock_state, only: interlock_state_t
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
@@ -28,10 +30,11 @@ contains
 
   !> interlock_update (its contract) for every material and solver but the flat-plane laws of
   !> interlock_update itself: a specialised kernel without substepping first, with only the
-  !> checks it needs (mat%kernel /= kernel_general only in a prepared material; s finite, the
-  !> caller's test), else general_update. When the kernel does not apply or its result is not
-  !> finite, general_update takes the increment again (and reports). A small procedure of its own: through general_update's checks and
-  !> frame the full model's update costs more (docs/bench.md, section 1).
+  !> checks it needs (mat%kernel /= kernel_general only in a prepared material; s tested on its
+  !> bits, interlock_kinds:is_finite_bits), else general_update. When the kernel does not apply
+  !> or its result is not finite, general_update takes the increment again (and reports). A
+  !> small procedure of its own: through general_update's checks and frame the full model's
+  !> update costs more (docs/bench.md, section 1).
   pure subroutine kernel_update(mat, solver, s, old, new, sigma, tangent, info)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
@@ -42,7 +45,8 @@ contains
     type(interlock_info_t), intent(inout) :: info
     logical :: done
     if (mat%kernel /= kernel_general .and. solver%substep_tol <= 0.0_dp .and. &
-        solver%scheme >= 1 .and. solver%scheme <= n_schemes) then
+        solver%scheme >= 1 .and. solver%scheme <= n_schemes .and. &
+        is_finite_bits(s(1)) .and. is_finite_bits(s(2))) then
       call kernel_step(mat, solver, s, old, new, tangent, done, info%newton_iterations)
       if (done) then
         if (finite_response(new%sigma, tangent)) then
@@ -137,21 +141,6 @@ contains
     finite_response = is_finite_value(abs(sigma(1)) + abs(sigma(2)) + abs(tangent(1, 1)) + &
                                       abs(tangent(2, 1)) + abs(tangent(1, 2)) + abs(tangent(2, 2)))
   end function finite_response
-
-  !> The schemes and their codes, for messages: "1 (explicit), 2 (implicit) or 3 (...)".
-  pure function scheme_list() result(text)
-    character(len=:), allocatable :: text
-    integer :: i
-    text = ''
-    do i = 1, n_schemes
-      if (i == n_schemes .and. i > 1) then
-        text = text // ' or '
-      else if (i > 1) then
-        text = text // ', '
-      end if
-      text = text // format_integer(i) // ' (' // trim(scheme_names(i)) // ')'
-    end do
-  end function scheme_list
 
   !> The largest damage and angle increments over the n planes of an update (its info report).
   pure subroutine largest_increments(n, old, new, info)

@@ -9,7 +9,7 @@ module interlock_integrate
       kernel_cohesive
   use interlock_state, only: interlock_state_t
   use interlock_status, only: interlock_info_t, status_ok
-  use interlock_general_update, only: kernel_update, general_update
+  use interlock_general_update, only: kernel_update
   use interlock_kernels, only: share_first_plane
   use interlock_plane_law, only: plane_response_t, plane_law, wear_weights
   implicit none
@@ -42,12 +42,11 @@ contains
     info%max_angle_increment = 0.0_dp
     ! The kernel is kernel_cohesive only in a prepared material. s is tested on its bits (a
     ! NaN in an ordered comparison raises the invalid exception, a trap in hosts that run with
-    ! traps on); kernel_update (a specialised kernel) takes a finite s, general_update checks
-    ! and reports everything else.
-    if (.not. (is_finite_bits(s(1)) .and. is_finite_bits(s(2)))) then
-      call general_update(mat, solver, s, old, new, sigma, tangent, info)
-    else if (mat%kernel == kernel_cohesive .and. solver%substep_tol <= 0.0_dp .and. &
-             solver%scheme >= 1 .and. solver%scheme <= n_schemes) then
+    ! traps on): anything else is checked and reported by kernel_update (a specialised kernel)
+    ! or general_update.
+    if (mat%kernel == kernel_cohesive .and. solver%substep_tol <= 0.0_dp .and. &
+        solver%scheme >= 1 .and. solver%scheme <= n_schemes .and. &
+        is_finite_bits(s(1)) .and. is_finite_bits(s(2))) then
       if (mat%use_friction) then
         call flat_plane_step(mat, solver%scheme, .true., s, old, new, sigma, tangent)
       else

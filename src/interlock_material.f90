@@ -12,7 +12,7 @@ module interlock_material
   public :: interlock_material_prepare, interlock_paper_ria, interlock_material_derive, &
             interlock_paper_material_derive, derived_range_message
   public :: scheme_explicit, scheme_implicit, scheme_trapezoidal, scheme_name, n_schemes, &
-            scheme_names
+            scheme_names, scheme_list
   public :: effect_damage, effect_friction, effect_interlocking, effect_finite_depth, effect_wear
   public :: effect_names, n_effects
   public :: kernel_general, kernel_flat, kernel_inclined, kernel_cohesive
@@ -110,6 +110,22 @@ contains
       name = 'unknown'
     end if
   end function scheme_name
+
+  !> The schemes and their codes, for messages and docs: "1 (explicit), 2 (implicit) or 3
+  !> (trapezoidal)".
+  pure function scheme_list() result(text)
+    character(len=:), allocatable :: text
+    integer :: i
+    text = ''
+    do i = 1, n_schemes
+      if (i == n_schemes .and. i > 1) then
+        text = text // ' or '
+      else if (i > 1) then
+        text = text // ', '
+      end if
+      text = text // format_integer(i) // ' (' // trim(scheme_names(i)) // ')'
+    end do
+  end function scheme_list
 
   !> The paper's symmetric three-plane RIA (gamma_hat = 1/3; -theta_0, 0, +theta_0; the middle
   !> plane never wears). Angles in radians.

@@ -7,7 +7,7 @@
 module test_stability_matrix_suite
   use, intrinsic :: iso_fortran_env, only: output_unit
   use interlock
-  use interlock_material, only: n_schemes, scheme_names
+  use interlock_material, only: n_schemes, scheme_names, scheme_list
   use interlock_assert
   use test_stability_tools
   implicit none
@@ -325,16 +325,6 @@ contains
     solver%scheme = (column + 1) / 2
     solver%substep_tol = merge(substep_tol, 0.0_dp, mod(column, 2) == 0)
   end subroutine make_solver
-
-  !> The schemes' names, "explicit, implicit, ...".
-  function scheme_list() result(text)
-    character(len=:), allocatable :: text
-    integer :: i
-    text = trim(scheme_names(1))
-    do i = 2, n_schemes
-      text = text // ', ' // trim(scheme_names(i))
-    end do
-  end function scheme_list
 
   !> The label of column `column`: the scheme's name, '+sub' with substepping.
   function column_label(column) result(label)
