@@ -19,3 +19,4 @@ interlock_add_core_suite(core_invariants test_invariants.pf)
 interlock_add_core_suite(core_mechanisms test_kinematics.pf test_damage.pf test_friction.pf
   test_wear.pf test_geometry.pf)
 interlock_add_core_suite(core_kernels test_kernels.pf)
+interlock_add_core_suite(core_update_input test_update_input.pf)

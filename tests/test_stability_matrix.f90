@@ -7,6 +7,7 @@
 module test_stability_matrix_suite
   use, intrinsic :: iso_fortran_env, only: output_unit
   use interlock
+  use interlock_material, only: n_schemes, scheme_names, scheme_list
   use interlock_assert
   use test_stability_tools
   implicit none
@@ -37,9 +38,9 @@ module test_stability_matrix_suite
   !> Table 1 baseline: H_N = 1 mm, eta = 0.9, scale 1, theta_0 = 45 deg, no wear, mu = 0.5.
   integer, parameter :: baseline(n_factors) = [4, 2, 3, 4, 1, 4, 2, 1, 1]
 
-  integer, parameter :: n_schemes = 4, n_loadings = 6
-  character(len=16), parameter :: scheme_labels(n_schemes) = [character(len=16) :: &
-    'explicit', 'explicit+sub', 'implicit', 'implicit+sub']
+  !> The columns: every scheme of the library (interlock_material:scheme_names, so that a new
+  !> scheme is run by itself), each without and with substepping.
+  integer, parameter :: n_columns = 2 * n_schemes, n_loadings = 6
   character(len=24), parameter :: loading_names(n_loadings) = [character(len=24) :: &
     'monotonic slip, sigma_N', 'cyclic slip, sigma_N', 'open past H_N, re-close', &
     'pure opening', 'whole history, 1 step', 'steps of 1e-9 mm']
@@ -317,12 +318,21 @@ contains
     end select
   end subroutine make_loading
 
-  subroutine make_solver(isch, solver)
-    integer, intent(in) :: isch
+  !> Column `column`: scheme (column + 1) / 2, with substepping in the even columns.
+  subroutine make_solver(column, solver)
+    integer, intent(in) :: column
     type(interlock_solver_t), intent(out) :: solver
-    solver%scheme = merge(scheme_explicit, scheme_implicit, isch <= 2)
-    solver%substep_tol = merge(substep_tol, 0.0_dp, mod(isch, 2) == 0)
+    solver%scheme = (column + 1) / 2
+    solver%substep_tol = merge(substep_tol, 0.0_dp, mod(column, 2) == 0)
   end subroutine make_solver
+
+  !> The label of column `column`: the scheme's name, '+sub' with substepping.
+  function column_label(column) result(label)
+    integer, intent(in) :: column
+    character(len=:), allocatable :: label
+    label = trim(scheme_names((column + 1) / 2))
+    if (mod(column, 2) == 0) label = label // '+sub'
+  end function column_label
 
   !> Index of a failure reason (numbers stripped so that reasons group), added when new.
   integer function reason_index(text, legit) result(idx)
@@ -446,7 +456,7 @@ contains
     integer :: n
     n = mat%n_planes
     write (output_unit, '(a,i0,a,a,a,a,a,i0)') '  DEFECT row ', c%row, ' loading "', &
-      trim(loading_names(c%loading)), '" scheme ', trim(scheme_labels(c%scheme)), ' step ', istep
+      trim(loading_names(c%loading)), '" scheme ', column_label(c%scheme), ' step ', istep
     write (output_unit, '(4x,a)') trim(message)
     write (output_unit, '(4x,a,9(1x,i0))') 'levels', design(:, c%row)
     write (output_unit, '(4x,a,6es12.4)') 'sigma0_n sigma0_t gc eta mu h_n', mat%sigma0_n, &
@@ -508,13 +518,13 @@ contains
     integer :: n_defects
     real(dp) :: t0, t1
     if (.not. allocated(design)) call build_design()
-    n_cells = size(design, 2) * n_loadings * n_schemes
+    n_cells = size(design, 2) * n_loadings * n_columns
     allocate (cells(n_cells))
     ic = 0
     call cpu_time(t0)
     do r = 1, size(design, 2)
       do il = 1, n_loadings
-        do is = 1, n_schemes
+        do is = 1, n_columns
           ic = ic + 1
           cells(ic)%row = r
           cells(ic)%loading = il
@@ -614,7 +624,7 @@ contains
       'plus ', size(design, 2) - n_pairwise, ' one-factor extremes around the Table 1 ' // &
       'baseline (H_N = 1 mm, eta = 0.9, sigma0 = 3 MPa, Gc_bar = 0.3 N/mm, theta_0 = 45 deg, ' // &
       'no wear, mu = 0.5, intact, paper RIA); x ', n_loadings, ' loadings x ', n_schemes, &
-      ' schemes.'
+      ' schemes x without and with substepping.'
     write (u, '(a,i0,a,i0,a)') '- Cells: ', n_cells, '; updates (including mixed-control ' // &
       'trials): ', total, '.'
     write (u, '(a,i0,a,i0,a,i0,a)') '- Worst iteration counts: core wear Newton ', worst_newton, &
@@ -629,27 +639,27 @@ contains
     write (u, '(a)') '  |sigma| <= c + (1 + mu) K_n |s| with c = sigma0_n + sigma0_t ' // &
       '(the cohesive part never exceeds the peak tractions, contact is the penalty K_n on ' // &
       'the interpenetration, friction at most mu times the contact pressure).'
-    write (u, '(a)') '- Schemes: explicit and implicit, each without and with substepping ' // &
-      '(tol 1e-4). Loadings: sigma_N = -sigma0_n/15 (Table 1: -0.2 MPa) held by a ' // &
+    write (u, '(a)') '- Schemes: every scheme of the library (' // scheme_list() // &
+      '), each without and with substepping (tol 1e-4). Loadings: sigma_N = -sigma0_n/15 (Table 1: -0.2 MPa) held by a ' // &
       'safeguarded scalar Newton iteration on s_N; lengths in units of s_c = 2 Gc_bar/sigma0.'
     write (u, '(a)') ''
     write (u, '(a)') 'Cell text: completed/total, then `+n [r]` for n cells that ended with ' // &
       'reason r (legend below).'
     write (u, '(a)') ''
     line = '| factor | level |'
-    do is = 1, n_schemes
-      line = line // ' ' // trim(scheme_labels(is)) // ' |'
+    do is = 1, n_columns
+      line = line // ' ' // column_label(is) // ' |'
     end do
     write (u, '(a)') line
     line = '|---|---|'
-    do is = 1, n_schemes
+    do is = 1, n_columns
       line = line // '---|'
     end do
     write (u, '(a)') line
     do f = 1, n_factors
       do l = 1, n_levels(f)
         line = '| ' // trim(factor_names(f)) // ' | ' // level_label(f, l) // ' |'
-        do is = 1, n_schemes
+        do is = 1, n_columns
           line = line // ' ' // cell_text(design(f, cells%row) == l .and. cells%scheme == is) // ' |'
         end do
         write (u, '(a)') line
@@ -657,13 +667,13 @@ contains
     end do
     do il = 1, n_loadings
       line = '| loading | ' // trim(loading_names(il)) // ' |'
-      do is = 1, n_schemes
+      do is = 1, n_columns
         line = line // ' ' // cell_text(cells%loading == il .and. cells%scheme == is) // ' |'
       end do
       write (u, '(a)') line
     end do
     line = '| all | |'
-    do is = 1, n_schemes
+    do is = 1, n_columns
       line = line // ' ' // cell_text(cells%scheme == is) // ' |'
     end do
     write (u, '(a)') line

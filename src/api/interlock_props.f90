@@ -3,7 +3,7 @@
 module interlock_props
   use interlock_kinds, only: dp, deg_to_rad
   use, intrinsic :: iso_fortran_env, only: int64
-  use interlock_kinds, only: same_value, is_finite_bits, exponent_bits
+  use interlock_kinds, only: same_value, is_finite_bits
   use interlock_numbers, only: key_in_range, format_integer, format_real
   use interlock_material_table, only: properties, n_properties, n_required_properties, &
       check_property, all_properties_ok, property_defaults, umat_planes, umat_nstatv, statevars, &
@@ -215,7 +215,7 @@ contains
     integer :: i, k
     logical :: ok
     bad = 0
-    if (iand(transfer(statev(slot_flag), 0_int64), exponent_bits) == exponent_bits) then
+    if (.not. is_finite_bits(statev(slot_flag))) then
       bad = slot_flag
       return
     end if

@@ -4,7 +4,8 @@ module interlock_kinds
   implicit none
   private
   public :: dp, pi, deg_to_rad, rad_to_deg, infinite_threshold, separation_bound
-  public :: is_infinite_value, is_nan_value, same_value, is_finite_bits, exponent_bits
+  public :: is_finite_bits, is_finite_value, is_infinite_value, is_nan_value, same_value, &
+            exponent_bits
 
   integer, parameter :: dp = real64
   real(dp), parameter :: pi = 3.14159265358979323846264338327950288_dp
@@ -19,41 +20,49 @@ module interlock_kinds
   !> interlock_material_prepare admits) every traction, ratio s/s_0 and energy of the update
   !> stays below 1e200: no overflow, no FP trap.
   real(dp), parameter :: separation_bound = 1.0e6_dp
-  !> The exponent field of a real(dp): all ones in a NaN or an infinity. A finite test from
-  !> the bits, iand(transfer(x, 0_int64), exponent_bits) /= exponent_bits, compares no NaN (an
-  !> ordered comparison of a NaN raises the invalid flag: a trap in FE codes that run with
-  !> traps on) and needs no IEEE module (whose save and restore of the floating-point state
-  !> around each procedure costs more than the test); is_finite_bits is the same as a function.
+  !> The exponent field of a real(dp): all ones in a NaN or an infinity.
   integer(int64), parameter :: exponent_bits = shiftl(2047_int64, 52)
 
 contains
 
-  !> True for +Inf or a value >= infinite_threshold; never raises an FP exception on NaN.
-  elemental logical function is_infinite_value(x)
-    ! (the IEEE module here only: gfortran saves and restores the floating-point state around
-    ! every procedure that uses it, which same_value, on the UMAT's path, need not pay)
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
-    real(dp), intent(in) :: x
-    if (ieee_is_nan(x)) then
-      is_infinite_value = .false.
-    else if (.not. ieee_is_finite(x)) then
-      is_infinite_value = x > 0.0_dp
-    else
-      is_infinite_value = x >= infinite_threshold
-    end if
-  end function is_infinite_value
-
-  elemental logical function is_nan_value(x)
-    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
-    real(dp), intent(in) :: x
-    is_nan_value = ieee_is_nan(x)
-  end function is_nan_value
-
-  !> x is finite (not NaN, not +-Inf), from its bits (exponent_bits).
+  !> x is finite (not NaN, not +-Inf), from its bits: iand(bits, exponent_bits) /=
+  !> exponent_bits. For values from outside the library (separations, PROPS, STATEV, deck
+  !> values): it compares no NaN (an ordered comparison of a NaN raises the invalid exception,
+  !> a trap in hosts that run with traps on; a signalling NaN traps in any floating-point
+  !> test) and needs no IEEE module (whose save and restore of the floating-point state around
+  !> each procedure costs more than the test).
   elemental logical function is_finite_bits(x)
     real(dp), intent(in) :: x
     is_finite_bits = iand(transfer(x, 0_int64), exponent_bits) /= exponent_bits
   end function is_finite_bits
+
+  !> x is finite (not NaN, not +-Inf), by one comparison: for values the library computed
+  !> from finite input (a traction, a sum of them), where under traps a NaN or an overflow
+  !> would already have trapped where it was made. The comparison raises the invalid
+  !> exception on a NaN: for input use is_finite_bits.
+  elemental logical function is_finite_value(x)
+    real(dp), intent(in) :: x
+    is_finite_value = abs(x) <= huge(x)
+  end function is_finite_value
+
+  !> x means "+infinity" in a parameter (H_N, zeta_0): +Inf or a finite x >= infinite_threshold
+  !> (FE input files cannot always hold an IEEE infinity). False for NaN and -Inf; no
+  !> floating-point exception on any input.
+  elemental logical function is_infinite_value(x)
+    real(dp), intent(in) :: x
+    if (is_finite_bits(x)) then
+      is_infinite_value = x >= infinite_threshold
+    else
+      is_infinite_value = transfer(x, 0_int64) == exponent_bits   ! +Inf: sign 0, mantissa 0
+    end if
+  end function is_infinite_value
+
+  !> x is a NaN (from its bits: the exponent all ones, a mantissa other than 0); no
+  !> floating-point exception on any input.
+  elemental logical function is_nan_value(x)
+    real(dp), intent(in) :: x
+    is_nan_value = iand(transfer(x, 0_int64), huge(0_int64)) > exponent_bits
+  end function is_nan_value
 
   !> a == b without the compiler's warning on real equality: used where exact equality is meant
   !> (flags stored as reals, a parameter that switches an effect off exactly).

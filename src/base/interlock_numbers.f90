@@ -3,7 +3,7 @@
 !> and the compact rendering of reals and integers that every message uses.
 module interlock_numbers
   use, intrinsic :: iso_fortran_env, only: int64
-  use interlock_kinds, only: dp, same_value, exponent_bits
+  use interlock_kinds, only: dp, same_value, is_finite_bits, is_nan_value
   implicit none
   private
   public :: keys_in_range, key_in_range, is_flag, is_whole, format_real, format_integer
@@ -71,11 +71,13 @@ contains
     real(dp), intent(in) :: x
     character(len=:), allocatable :: text
     character(len=32) :: buf
-    ! (NaN from the bits: a signalling NaN, which a host may pass, traps in any float test)
-    if (iand(transfer(x, 0_int64), huge(0_int64)) > exponent_bits) then
-      text = 'NaN'
-    else if (abs(x) > huge(1.0_dp)) then
-      text = merge('+Inf', '-Inf', x > 0.0_dp)
+    ! (from the bits first: a signalling NaN, which a host may pass, traps in any float test)
+    if (.not. is_finite_bits(x)) then
+      if (is_nan_value(x)) then
+        text = 'NaN'
+      else
+        text = merge('-Inf', '+Inf', transfer(x, 0_int64) < 0_int64)
+      end if
     else if (same_value(x, anint(x)) .and. abs(x) < 1.0e9_dp) then
       write (buf, '(i0)') nint(x, kind=8)
       text = trim(buf)

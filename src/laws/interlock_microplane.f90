@@ -1,77 +1,67 @@
-!> The cohesive-frictional law of one microplane (Alfano-Sacco, eq. 6): damage and friction
-!> combined into the local traction, with exact derivatives with respect to the local
-!> variables v = (s_kn, s_kt, beta_old, sf_old).
+!> The general path's derivatives of one microplane's law (interlock_plane_law, eq. 6) with
+!> respect to the local variables v = (s_kn, s_kt, beta_old, sf_old): the columns of the
+!> separation are the law's 2x2 tangent and partials, the columns of the start state are added
+!> here. Substepping chains them over sub-increments (interlock_schemes, interlock_ria).
 module interlock_microplane
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t
   use interlock_damage, only: equivalent_displacement, damage_of_beta
-  use interlock_friction, only: friction_return
+  use interlock_plane_law, only: plane_response_t, wear_driver
   implicit none
   private
-  public :: local_t, microplane_update
+  public :: local_t, microplane_gradients
 
-  !> Values at the end of the step and their gradients wrt v = (s_kn, s_kt, beta_old, sf_old).
+  !> Gradients wrt v = (s_kn, s_kt, beta_old, sf_old) of the plane's end state, its local
+  !> traction and its frictional work D |tau_f| |sf - sf_old|.
   type :: local_t
-    real(dp) :: beta, gbeta(4)
-    real(dp) :: dmg, gdmg(4)
-    real(dp) :: sf, gsf(4)
-    real(dp) :: tauf, gtauf(4)
-    real(dp) :: sig(2), gsig(2, 4)   !< local traction (sigma_kn, sigma_kt)
-    real(dp) :: slip, gslip(4)       !< |sf - sf_old|
-    real(dp) :: wdrv, gwdrv(4)       !< D |tau_f| |sf - sf_old|: frictional work on the damaged part
-    integer  :: branch               !< friction branch (interlock_friction)
+    real(dp) :: gbeta(4), gdmg(4), gsf(4), gtauf(4), gslip(4), gwfric(4)
+    real(dp) :: gsig(2, 4)
   end type local_t
 
 contains
 
-  pure subroutine microplane_update(mat, sl, beta_old, sf_old, dmg_frozen, r)
+  !> The gradients of the law's response p at the local separation sl from the start
+  !> history variable beta_o.
+  pure subroutine microplane_gradients(mat, sl, beta_o, p, r)
     type(interlock_material_t), intent(in) :: mat
-    real(dp), intent(in) :: sl(2), beta_old, sf_old, dmg_frozen
+    real(dp), intent(in) :: sl(2), beta_o
+    type(plane_response_t), intent(in) :: p
     type(local_t), intent(out) :: r
-    real(dp) :: beq, dbeq(2), dd_dbeta, dsf(3), dtauf(3), dslip(3), pos_n, neg_n, atau, sgt
+    real(dp) :: beq, dbeq(2), d_tmp, dd_dbeta, gw_n, gw_t, drv
 
-    ! Damage (SPEC 4.3).
-    r%beta = beta_old
+    ! Damage (SPEC 4.3): where beta grew it is beta_eq(s_k), else beta_old, and D = D(beta).
     r%gbeta = [0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp]
+    r%gdmg = 0.0_dp
     if (mat%use_damage) then
-      call equivalent_displacement(sl, mat%s0n, mat%s0t, beq, dbeq)
-      if (beq > beta_old) then
-        r%beta = beq
+      if (p%beta > beta_o) then
+        call equivalent_displacement(sl, mat%s0n, mat%s0t, beq, dbeq)
         r%gbeta = [dbeq(1), dbeq(2), 0.0_dp, 0.0_dp]
+        r%gdmg(1:2) = [p%gd_n, p%gd_t]
+      else
+        call damage_of_beta(mat%eta, mat%beta_break, beta_o, d_tmp, dd_dbeta)
+        r%gdmg(3) = dd_dbeta
       end if
-      call damage_of_beta(mat%eta, mat%beta_break, r%beta, r%dmg, dd_dbeta)
-      r%gdmg = dd_dbeta * r%gbeta
-    else
-      r%dmg = dmg_frozen
-      r%gdmg = 0.0_dp
     end if
 
-    ! Friction on the damaged part (SPEC 4.4).
-    call friction_return(mat%kn, mat%kt, mat%mu_eff, sl, sf_old, r%sf, r%tauf, dsf, dtauf, &
-                         r%slip, dslip, r%branch)
-    r%gsf = [dsf(1), dsf(2), 0.0_dp, dsf(3)]
-    r%gtauf = [dtauf(1), dtauf(2), 0.0_dp, dtauf(3)]
-    r%gslip = [dslip(1), dslip(2), 0.0_dp, dslip(3)]
-
-    ! Local traction (SPEC 4.5): sigma_kn = K_n s_kn - D K_n <s_kn>_+.
-    pos_n = max(0.0_dp, sl(1))
-    neg_n = min(0.0_dp, sl(1))
-    r%sig(1) = mat%kn * neg_n + (1.0_dp - r%dmg) * mat%kn * pos_n
-    r%sig(2) = (1.0_dp - r%dmg) * mat%kt * sl(2) + r%dmg * r%tauf
-    r%gsig(1, :) = -mat%kn * pos_n * r%gdmg
-    if (sl(1) > 0.0_dp) then
-      r%gsig(1, 1) = r%gsig(1, 1) + (1.0_dp - r%dmg) * mat%kn
+    ! Friction (SPEC 4.4): sticking, sf = sf_old and tau_f = K_t (s_kt - sf_old); sliding,
+    ! sf = s_kt - tau_f / K_t; free (no contact or no friction), sf = s_kt.
+    if (p%dtauf_t > 0.0_dp) then
+      r%gsf = [0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp]
     else
-      r%gsig(1, 1) = r%gsig(1, 1) + mat%kn
+      r%gsf = [-p%dtauf_n * mat%inv_kt, 1.0_dp, 0.0_dp, 0.0_dp]
     end if
-    r%gsig(2, :) = r%dmg * r%gtauf + (r%tauf - mat%kt * sl(2)) * r%gdmg
-    r%gsig(2, 2) = r%gsig(2, 2) + (1.0_dp - r%dmg) * mat%kt
+    r%gtauf = [p%dtauf_n, p%dtauf_t, 0.0_dp, -p%dtauf_t]
+    r%gslip = [abs(p%dtauf_n) * mat%inv_kt, p%dslip_t, 0.0_dp, -p%dslip_t]
 
-    ! Frictional work on the damaged part (decision D4): the implicit wear driver.
-    atau = abs(r%tauf)
-    sgt = sign(1.0_dp, r%tauf)
-    r%wdrv = r%dmg * atau * r%slip
-    r%gwdrv = atau * r%slip * r%gdmg + r%dmg * r%slip * sgt * r%gtauf + r%dmg * atau * r%gslip
-  end subroutine microplane_update
+    ! The traction (eq. 6): D and tau_f carry the start state's columns.
+    r%gsig(1, :) = [p%k_nn, p%k_nt, -mat%kn * max(0.0_dp, sl(1)) * r%gdmg(3), 0.0_dp]
+    r%gsig(2, :) = [p%k_tn, p%k_tt, (p%tauf - mat%kt * sl(2)) * r%gdmg(3), p%dmg * r%gtauf(4)]
+
+    ! The frictional work on the damaged part (decision D4), the wear driver.
+    call wear_driver(mat, p, 1.0_dp, 0.0_dp, drv, gw_n, gw_t)
+    r%gwfric = [gw_n, gw_t, abs(p%tauf) * p%slip * r%gdmg(3), &
+                p%dmg * p%slip * sign(1.0_dp, p%tauf) * r%gtauf(4) + &
+                p%dmg * abs(p%tauf) * r%gslip(4)]
+  end subroutine microplane_gradients
 
 end module interlock_microplane

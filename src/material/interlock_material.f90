@@ -2,7 +2,7 @@
 !> derived from them once, when the material is prepared (stiffnesses, the resolved effect set,
 !> constant sines and cosines), so that an update pays only for the effects a scene uses.
 module interlock_material
-  use interlock_kinds, only: dp, deg_to_rad, pi, is_nan_value, infinite_threshold
+  use interlock_kinds, only: dp, deg_to_rad, pi, is_finite_bits, is_finite_value, infinite_threshold
   use interlock_numbers, only: format_real, format_integer
   use interlock_material_table, only: check_property, &
       prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_zeta0
@@ -12,7 +12,8 @@ module interlock_material
   public :: interlock_material_t, interlock_solver_t, max_planes
   public :: interlock_material_prepare, interlock_paper_ria, interlock_material_derive, &
             interlock_paper_material_derive, derived_range_message
-  public :: scheme_explicit, scheme_implicit, scheme_trapezoidal, scheme_name
+  public :: scheme_explicit, scheme_implicit, scheme_trapezoidal, scheme_name, n_schemes, &
+            scheme_names, scheme_list
   public :: effect_damage, effect_friction, effect_interlocking, effect_finite_depth, effect_wear
   public :: effect_names, n_effects
   public :: kernel_general, kernel_flat, kernel_inclined, kernel_cohesive
@@ -21,14 +22,19 @@ module interlock_material
   !> Integration schemes (SPEC section 5, D11): the paper's explicit one, backward Euler, and
   !> the trapezoidal rule on the wear equation (second order, consistent at a zero increment).
   integer, parameter :: scheme_explicit = 1, scheme_implicit = 2, scheme_trapezoidal = 3
+  !> The schemes are the codes 1..n_schemes; their names in that order (messages, decks, and
+  !> the tests that run every scheme loop over them).
+  integer, parameter :: n_schemes = 3
+  character(len=11), parameter :: scheme_names(n_schemes) = &
+    [character(len=11) :: 'explicit', 'implicit', 'trapezoidal']
   integer, parameter :: n_effects = 5
   integer, parameter :: effect_damage = 1, effect_friction = 2, effect_interlocking = 3, &
                         effect_finite_depth = 4, effect_wear = 5
   !> Update kernels, chosen once by interlock_material_prepare from the effect set.
   integer, parameter :: kernel_general = 0      !< any effect set and scheme
   integer, parameter :: kernel_flat = 1         !< every plane flat: one plane, no rotation
-  !> inclined planes: constant angles, or wear with the explicit scheme (angle frozen in the
-  !> step); the implicit scheme with wear takes the general path
+  !> inclined planes, constant or wearing (the explicit scheme freezes the angle in the step,
+  !> the implicit and trapezoidal schemes solve each wearing plane's wear equation)
   integer, parameter :: kernel_inclined = 2
   !> one flat plane without finite depth (the Alfano-Sacco interface), inlined in the update
   integer, parameter :: kernel_cohesive = 3
@@ -95,20 +101,32 @@ module interlock_material
 
 contains
 
+  !> The name of scheme code `scheme` ('unknown' outside 1..n_schemes).
   pure function scheme_name(scheme) result(name)
     integer, intent(in) :: scheme
     character(len=:), allocatable :: name
-    select case (scheme)
-    case (scheme_explicit)
-      name = 'explicit'
-    case (scheme_implicit)
-      name = 'implicit'
-    case (scheme_trapezoidal)
-      name = 'trapezoidal'
-    case default
+    if (scheme >= 1 .and. scheme <= n_schemes) then
+      name = trim(scheme_names(scheme))
+    else
       name = 'unknown'
-    end select
+    end if
   end function scheme_name
+
+  !> The schemes and their codes, for messages and docs: "1 (explicit), 2 (implicit) or 3
+  !> (trapezoidal)".
+  pure function scheme_list() result(text)
+    character(len=:), allocatable :: text
+    integer :: i
+    text = ''
+    do i = 1, n_schemes
+      if (i == n_schemes .and. i > 1) then
+        text = text // ' or '
+      else if (i > 1) then
+        text = text // ', '
+      end if
+      text = text // format_integer(i) // ' (' // trim(scheme_names(i)) // ')'
+    end do
+  end function scheme_list
 
   !> The paper's symmetric three-plane RIA (gamma_hat = 1/3; -theta_0, 0, +theta_0; the middle
   !> plane never wears). Angles in radians.
@@ -152,21 +170,27 @@ contains
     end if
     gsum = 0.0_dp
     do k = 1, mat%n_planes
-      if (is_nan_value(mat%gamma_hat(k)) .or. .not. (mat%gamma_hat(k) > 0.0_dp .and. &
-          mat%gamma_hat(k) <= 1.0_dp)) then
+      ! (each value tested on its bits first: no comparison of a NaN)
+      ok = is_finite_bits(mat%gamma_hat(k))
+      if (ok) ok = mat%gamma_hat(k) > 0.0_dp .and. mat%gamma_hat(k) <= 1.0_dp
+      if (.not. ok) then
         message = 'gamma_hat(' // format_integer(k) // ') = ' // format_real(mat%gamma_hat(k)) &
                   // ' is inadmissible: admissible 0 < gamma_hat <= 1'
         return
       end if
       gsum = gsum + mat%gamma_hat(k)
-      if (is_nan_value(mat%theta0(k)) .or. .not. (abs(mat%theta0(k)) < 0.5_dp * pi)) then
+      ok = is_finite_bits(mat%theta0(k))
+      if (ok) ok = abs(mat%theta0(k)) < 0.5_dp * pi
+      if (.not. ok) then
         message = 'theta0(' // format_integer(k) // ') = ' // &
                   format_real(mat%theta0(k) / deg_to_rad) // &
                   ' deg is inadmissible: admissible -90 < theta0 < 90 deg'
         return
       end if
-      if (is_nan_value(mat%thetaf(k)) .or. .not. (abs(mat%thetaf(k)) <= abs(mat%theta0(k)) .and. &
-          mat%thetaf(k) * mat%theta0(k) >= 0.0_dp)) then
+      ok = is_finite_bits(mat%thetaf(k))
+      if (ok) ok = abs(mat%thetaf(k)) <= abs(mat%theta0(k)) .and. &
+                   mat%thetaf(k) * mat%theta0(k) >= 0.0_dp
+      if (.not. ok) then
         message = 'thetaf(' // format_integer(k) // ') = ' // &
                   format_real(mat%thetaf(k) / deg_to_rad) // &
                   ' deg is inadmissible: admissible 0 <= |thetaf| <= |theta0| = ' // &
@@ -320,7 +344,7 @@ contains
     mat%inv_eta = 1.0_dp / mat%eta
     mat%inv_kt = 1.0_dp / mat%kt
     mat%decohesion_energy_factor = 0.5_dp * mat%kn * mat%s0n**2 / mat%eta
-    ok = mat%kn < huge(1.0_dp) .and. mat%kt < huge(1.0_dp) .and. mat%s0n > 0.0_dp .and. &
+    ok = is_finite_value(mat%kn) .and. is_finite_value(mat%kt) .and. mat%s0n > 0.0_dp .and. &
          mat%s0t > 0.0_dp
     if (.not. ok) return
 

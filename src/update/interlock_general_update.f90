@@ -4,12 +4,15 @@
 !> failed local solve is retried on sub-increments before it is reported. interlock_update
 !> (interlock_integrate) calls it, through kernel_update (a specialised kernel without
 !> substepping, with only the checks it needs), for everything but the flat-plane laws it runs
-!> itself; it is a module of its own so that the compiler does not inline it there, where its
-!> size would make every call of the small laws pay for saving registers.
+!> itself. A module of its own, compiled as the UMAT's path rather than as the laws
+!> (src/CMakeLists.txt): general_update is too large to be inlined into the front, where it
+!> would make every call of the small laws pay for saving registers; the small kernel_update
+!> is inlined there.
 module interlock_general_update
-  use interlock_kinds, only: dp
+  use interlock_kinds, only: dp, is_finite_bits, is_finite_value
   use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, &
-      scheme_explicit, scheme_trapezoidal, kernel_general
+      n_schemes, scheme_list, kernel_general
+  use interlock_numbers, only: format_real, format_integer
   use interlock_state, only: interlock_state_t
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
   use interlock_ria, only: ria_step
@@ -27,11 +30,11 @@ contains
 
   !> interlock_update (its contract) for every material and solver but the flat-plane laws of
   !> interlock_update itself: a specialised kernel without substepping first, with only the
-  !> checks it needs (mat%kernel /= kernel_general only in a prepared material; abs(x) <= huge
-  !> is false for NaN and both infinities), else general_update. When the kernel does not apply
+  !> checks it needs (mat%kernel /= kernel_general only in a prepared material; s tested on its
+  !> bits, interlock_kinds:is_finite_bits), else general_update. When the kernel does not apply
   !> or its result is not finite, general_update takes the increment again (and reports). A
   !> small procedure of its own: through general_update's checks and frame the full model's
-  !> update cost 3 % more (docs/bench.md, section 1).
+  !> update costs more (docs/bench.md, section 1).
   pure subroutine kernel_update(mat, solver, s, old, new, sigma, tangent, info)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
@@ -42,8 +45,8 @@ contains
     type(interlock_info_t), intent(inout) :: info
     logical :: done
     if (mat%kernel /= kernel_general .and. solver%substep_tol <= 0.0_dp .and. &
-        solver%scheme >= scheme_explicit .and. solver%scheme <= scheme_trapezoidal .and. &
-        abs(s(1)) <= huge(1.0_dp) .and. abs(s(2)) <= huge(1.0_dp)) then
+        solver%scheme >= 1 .and. solver%scheme <= n_schemes .and. &
+        is_finite_bits(s(1)) .and. is_finite_bits(s(2))) then
       call kernel_step(mat, solver, s, old, new, tangent, done, info%newton_iterations)
       if (done) then
         if (finite_response(new%sigma, tangent)) then
@@ -75,15 +78,16 @@ contains
                 'the material has not been prepared (call interlock_material_prepare)')
       return
     end if
-    if (solver%scheme < scheme_explicit .or. solver%scheme > scheme_trapezoidal) then
-      call fail(old, new, sigma, tangent, info, status_bad_input, &
-                'unknown integration scheme: admissible 1 (explicit), 2 (implicit) or 3 (trapezoidal)')
+    if (solver%scheme < 1 .or. solver%scheme > n_schemes) then
+      call fail(old, new, sigma, tangent, info, status_bad_input, 'scheme = ' // &
+                format_integer(solver%scheme) // ' is inadmissible: admissible ' // &
+                scheme_list())
       return
     end if
-    ! abs(x) <= huge is false for NaN and both infinities.
-    if (.not. (abs(s(1)) <= huge(1.0_dp) .and. abs(s(2)) <= huge(1.0_dp))) then
+    if (.not. (is_finite_bits(s(1)) .and. is_finite_bits(s(2)))) then
       call fail(old, new, sigma, tangent, info, status_bad_input, &
-                'the relative displacement is not a finite number')
+                'the relative displacement s = (' // format_real(s(1)) // ', ' // &
+                format_real(s(2)) // ') mm is inadmissible: admissible finite s_N and s_T')
       return
     end if
 
@@ -134,8 +138,8 @@ contains
   !> infinite (so does a sum beyond huge, which no traction or stiffness of the law comes near).
   pure logical function finite_response(sigma, tangent)
     real(dp), intent(in) :: sigma(2), tangent(2, 2)
-    finite_response = abs(sigma(1)) + abs(sigma(2)) + abs(tangent(1, 1)) + abs(tangent(2, 1)) + &
-                      abs(tangent(1, 2)) + abs(tangent(2, 2)) <= huge(1.0_dp)
+    finite_response = is_finite_value(abs(sigma(1)) + abs(sigma(2)) + abs(tangent(1, 1)) + &
+                                      abs(tangent(2, 1)) + abs(tangent(1, 2)) + abs(tangent(2, 2)))
   end function finite_response
 
   !> The largest damage and angle increments over the n planes of an update (its info report).

@@ -7,6 +7,7 @@ module interlock_ria
   use interlock_state, only: interlock_state_t
   use interlock_geometry, only: contact_area
   use interlock_schemes, only: plane_t, plane_step
+  use interlock_plane_law, only: add_wear_error, wear_error_of
   implicit none
   private
   public :: ria_step
@@ -95,8 +96,7 @@ contains
         end if
         iterations = max(iterations, p%iterations)
         gam = merge(1.0_dp, mat%gamma_hat(k), mat%flat)
-        err_angle = max(err_angle, p%wear_error)
-        err_traction = max(err_traction, gam * area * maxval(abs(p%dsig_dtheta)) * p%wear_error)
+        call add_wear_error(p%wear_error, gam * area, p%dsig_dtheta, err_angle, err_traction)
         sigma = sigma + gam * area * p%sig
         if (chain .and. ncol > 2) then
           tangent = tangent + gam * (area * (a * p%gsig(:, 1:2) + &
@@ -135,8 +135,7 @@ contains
     new%s = s
     new%sigma = sigma
     new%work = old%work + 0.5_dp * dot_product(old%sigma + sigma, s - old%s)
-    if (present(wear_error)) wear_error = max(err_angle, err_traction / &
-        (max(mat%sigma0_n, mat%sigma0_t) + maxval(abs(sigma))))
+    if (present(wear_error)) wear_error = wear_error_of(mat, err_angle, err_traction, sigma)
   end subroutine ria_step
 
 end module interlock_ria

@@ -23,6 +23,7 @@ program interlock_fuzz
       ieee_positive_inf, ieee_negative_inf
   use interlock_cli, only: exit_program, command_argument, folder_writable
   use interlock
+  use interlock_material, only: n_schemes
   use interlock_replay, only: interlock_write_replay_deck
   use test_stability_tools
   use test_umat_interface, only: umat_point_t, call_umat
@@ -190,7 +191,7 @@ contains
       props = properties%default
       props(1:14) = props_base
       props(10) = merge(1.0_dp, 0.0_dp, rng_uniform(rng) < 0.2_dp)
-      props(11) = real(rng_int(rng, 1, 2), dp)
+      props(11) = real(rng_int(rng, 1, n_schemes), dp)
       props(12) = merge(1.0e-3_dp, 0.0_dp, rng_uniform(rng) < 0.2_dp)
       do k = 1, n_props
         props(k) = garble(props(k), p / 4.0_dp)
@@ -305,7 +306,8 @@ contains
       call interlock_material_prepare(mat, stat, message)
       if (stat == status_ok) exit
     end do
-    solver%scheme = merge(scheme_explicit, scheme_implicit, rng_uniform(rng) < 0.5_dp)
+    ! (every scheme of the library: interlock_material:n_schemes)
+    solver%scheme = rng_int(rng, 1, n_schemes)
     solver%substep_tol = 0.0_dp
     if (rng_uniform(rng) < 0.3_dp) solver%substep_tol = rng_log_uniform(rng, 1.0e-5_dp, 1.0e-2_dp)
   end subroutine random_material
