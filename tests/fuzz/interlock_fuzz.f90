@@ -419,7 +419,8 @@ contains
     integer, intent(in) :: ntens
     outputs_same = all(same_bits(a%ddsdde(1:ntens**2), b%ddsdde(1:ntens**2))) .and. &
       all(same_bits([a%sse, a%spd, a%scd, a%rpl, a%drpldt], &
-                    [b%sse, b%spd, b%scd, b%rpl, b%drpldt])) .and. all(same_bits(a%ddsddt(1:ntens), b%ddsddt(1:ntens))) .and. &
+                    [b%sse, b%spd, b%scd, b%rpl, b%drpldt])) .and. &
+      all(same_bits(a%ddsddt(1:ntens), b%ddsddt(1:ntens))) .and. &
       all(same_bits(a%drplde(1:ntens), b%drplde(1:ntens)))
   end function outputs_same
 
