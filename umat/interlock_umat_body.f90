@@ -212,6 +212,19 @@ contains
       call reject_start_separation(STRAN(1:2), NOEL, NPT, KINC, CMNAME, PNEWDT)
       return
     end if
+    ok = key_in_range(STRESS(1), -1 - state_bits, state_bits) .and. &
+         key_in_range(STRESS(2), -1 - state_bits, state_bits)
+    if (.not. ok) then
+      call reject_argument(bad_stress, 0, STRESS(1:2), NOEL, NPT, KINC, CMNAME, PNEWDT)
+      return
+    end if
+    bad = statev_bad_index(STATEV(1:umat_nstatv), mat)
+    if (bad /= 0) then
+      call reject_statev(STATEV(1:umat_nstatv), bad, mat, NOEL, NPT, KINC, CMNAME, PNEWDT)
+      return
+    end if
+    ! (last: every bad input above wins over a diverged iteration, so that a host is stopped,
+    ! not sent into cutbacks, by input that no cutback repairs)
     ok = key_in_range(DSTRAN(1), -1 - increment_bits, increment_bits) .and. &
          key_in_range(DSTRAN(2), -1 - increment_bits, increment_bits)
     if (ok) then
@@ -223,17 +236,6 @@ contains
                   format_real(DSTRAN(2)) // ') mm', '|s_N|, |s_T| <= ' // &
                   format_real(separation_bound) // ' mm'), pnewdt_diverged, said_diverged, &
                   NOEL, NPT, KINC, CMNAME, PNEWDT)
-      return
-    end if
-    ok = key_in_range(STRESS(1), -1 - state_bits, state_bits) .and. &
-         key_in_range(STRESS(2), -1 - state_bits, state_bits)
-    if (.not. ok) then
-      call reject_argument(bad_stress, 0, STRESS(1:2), NOEL, NPT, KINC, CMNAME, PNEWDT)
-      return
-    end if
-    bad = statev_bad_index(STATEV(1:umat_nstatv), mat)
-    if (bad /= 0) then
-      call reject_statev(STATEV(1:umat_nstatv), bad, mat, NOEL, NPT, KINC, CMNAME, PNEWDT)
       return
     end if
 

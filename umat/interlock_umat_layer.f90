@@ -351,8 +351,26 @@ contains
     end subroutine check_axes
 
     !> A diverged global iteration: component i of DSTRAN, or of the end strain, out of range.
+    !> Bad input wins (no cutback repairs it): the law first checks its own arguments (PROPS,
+    !> STATEV, the start) at a zero increment, on copies; its rejection is the answer.
     subroutine diverged(i)
       integer, intent(in) :: i
+      real(dp) :: statev_copy(NSTATV), t_copy(2), d_copy(2, 2), e(4), p_law, no_increment(2)
+      t_copy = STRESS(comp)
+      statev_copy = STATEV
+      d_copy = untouched
+      e = 0.0_dp
+      p_law = pnewdt_none
+      no_increment = 0.0_dp
+      call interlock_umat_cohesive(t_copy, statev_copy, d_copy, e(1), e(2), e(3), e(4), &
+        ddsddt2, drplde2, drpldt2, h * STRAN(comp), no_increment, TIME, DTIME, TEMP, DTEMP, &
+        PREDEF, DPRED, CMNAME, 1, 1, 2, NSTATV, PROPS(layer_nprops_head + 1:NPROPS), &
+        NPROPS - layer_nprops_head, COORDS, DROT, p_law, CELENT, DFGRD0, DFGRD1, NOEL, NPT, &
+        LAYER, KSPT, JSTEP, KINC, layer_props_offset=layer_nprops_head)
+      if (p_law <= 0.0_dp) then
+        call request(0.0_dp, .true.)
+        return
+      end if
       call umat_say(CMNAME, said_diverged, 'interlock UMAT (layer): element ' // &
         format_integer(NOEL) // ', point ' // format_integer(NPT) // " (material '" // &
         trim(CMNAME) // "', increment " // format_integer(KINC) // '): ' // &
