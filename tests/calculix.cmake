@@ -1,4 +1,4 @@
-# The CalculiX area (issue 14): only when a ccx binary with interlock's umat is given,
+# The CalculiX area: only when a ccx binary with interlock's umat is given,
 # -DINTERLOCK_CCX=<path> (scripts/build_calculix.sh prints it; scripts/test.sh passes it to the
 # Release build). Label `calculix`.
 #  - direct shear in C3D8, CPE4 and CAX4: ccx's layer tractions and state per increment equal
