@@ -169,8 +169,10 @@ contains
     integer :: comp(2), normal, slip, i
     integer(int64) :: strain_bits, increment_bits
     real(dp) :: h, e_other, t(2), s0(2), ds(2), d2(2, 2), sse2, spd2, scd2, rpl2, drpldt2, &
-                ddsddt2(2), drplde2(2), p2, strain(NTENS), elastic, strain_bound
-    logical :: interface_component(NTENS)
+                ddsddt2(2), drplde2(2), p2, elastic, strain_bound
+    ! (fixed size: NTENS is checked to be 4 or 6 first; no automatic array, no heap per call)
+    real(dp) :: strain(6)
+    logical :: interface_component(6)
     character(len=message_len) :: message
 
     ! --- The host's arguments and the layer's own PROPS, each by name and range (on the
