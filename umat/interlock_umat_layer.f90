@@ -19,13 +19,14 @@
 !> and the tangent back after it).
 !>
 !> **PROPS** (`layer_nprops_head` = 4 values, then the 2D law's PROPS 1 .. 9 to 1 .. 20):
-!>   1 h [mm] > 0, 2 e_other [MPa] > 0, 3 normal_axis 1..3, 4 slip_axis 1..3 (/= normal_axis),
+!>   1 h [mm] in [1e-12, 1e12], 2 e_other [MPa] in (0, 1e30), 3 normal_axis 1, 2 or 3,
+!>   4 slip_axis 1, 2 or 3 (/= normal_axis),
 !>   5 .. the interlock PROPS (interlock-query --props). NPROPS from 13 to 24.
 !> **STATEV**: the 2D law's 22 (NSTATV >= 22); with NSTATV >= 26 (`*DEPVAR` 26) also 23, 24 the
 !> separation (normal, slip) [mm] and 25, 26 the traction (normal, slip) [MPa] at the end of the
 !> increment, in the interface's axes (for output: hosts print S in their global axes).
-!> **Energies** per unit volume: the law's SSE and SCD
-!> (per unit area) / h, plus the elastic energy of the other components in SSE; SPD = 0.
+!> **Energies** per unit volume: the law's SSE and SCD (per unit area) / h, plus the elastic
+!> energy of the other components in SSE; SPD = 0 (nothing is read from them on entry).
 !>
 !> **Strains.** Every component's |h x strain| must stay within the admissible separation
 !> 1e6 mm (tested on the bits: no comparison of a NaN, no product that overflows): STRAN, the
@@ -115,7 +116,7 @@ contains
   !> first increment of a step whose prescribed displacements change (nonlingeo.c, ilin = 1),
   !> where ccx wants the tangent at the end of the previous increment and throws the stress
   !> away. There calctotstrain.f passes, whatever NLGEOM says, the Green-Lagrange strain of
-  !> the old displacements, E = H + H^T/2 + H^T H / 2 with H = DFGRD0 - I, so that
+  !> the old displacements, E = (H + H^T) / 2 + H^T H / 2 with H = DFGRD0 - I, so that
   !> DSTRAN = E - STRAN = H^T H / 2: not a displacement increment but the quadratic term of
   !> the old field. In an FE model's bulk that is of the order of the squared strains and
   !> harmless; in a thin layer the normal "strain" is s_N / h (-3.2 for the granite joint at
