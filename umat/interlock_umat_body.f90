@@ -90,8 +90,10 @@
 !> interlock-bench measures the UMAT call against its update, and docs/bench.md (section 1b)
 !> gives the figures and where the instructions go.
 !>
-!> **Threads.** No SAVE'd, module or COMMON state is written; the procedure is `recursive` so
-!> that every local lives on the stack: safe to call from many threads at once.
+!> **Threads.** No SAVE'd, module or COMMON state is written but the table of the messages
+!> already written (umat/interlock_umat_messages.f90: only when a message is due, under a
+!> lock); the procedure is `recursive` so that every local lives on the stack: safe to call
+!> from many threads at once.
 module interlock_umat_body
   use, intrinsic :: iso_fortran_env, only: int64
   use interlock_material_table, only: key_in_range

@@ -12,7 +12,8 @@
 !> tangent at the start of the increment: that call is recognised
 !> (interlock_umat_layer:calculix_linear_iteration) and answered with a zero increment.
 !>
-!> **Threads.** ccx calls it from several threads at once: no state is kept; `recursive`.
+!> **Threads.** ccx calls it from several threads at once: no state is kept but the messages'
+!> table (umat/interlock_umat_messages.f90, under its lock); `recursive`.
 recursive subroutine umat(STRESS, STATEV, DDSDDE, SSE, SPD, SCD, RPL, DDSDDT, DRPLDE, DRPLDT, &
                           STRAN, DSTRAN, TIME, DTIME, TEMP, DTEMP, PREDEF, DPRED, CMNAME, NDI, &
                           NSHR, NTENS, NSTATV, PROPS, NPROPS, COORDS, DROT, PNEWDT, CELENT, &
