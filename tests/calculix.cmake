@@ -1,4 +1,4 @@
-# The CalculiX area (issue 14): only when a ccx binary with interlock's umat is given,
+# The CalculiX area: only when a ccx binary with interlock's umat is given,
 # -DINTERLOCK_CCX=<path> (scripts/build_calculix.sh prints it; scripts/test.sh passes it to the
 # Release build). Label `calculix`.
 #  - direct shear in C3D8, CPE4 and CAX4: ccx's layer tractions and state per increment equal
@@ -48,4 +48,40 @@ if(INTERLOCK_CCX AND TARGET interlock-history)
       PASS_REGULAR_EXPRESSION "step 2 reached step time 1 of 1.*agrees with interlock-history to 1e-05"
       FAIL_REGULAR_EXPRESSION "FAIL|Traceback")
   endforeach()
+  # Decks from outside reviews (tests/data/calculix, C3D8 direct shear, layer h = 0.01 mm):
+  #  - gr_x: the granite joint under 2 MPa, then slip (ccx's linear first iteration of the slip
+  #    step passes a Green-Lagrange strain that opened the layer: recognised, a zero increment);
+  #  - big_t2_bounds: Table 1, 1.5 mm of slip as one automatic increment, accuracy bounds on
+  #    (a diverged global iteration is a cutback, not bad input);
+  #  - grbig_bounds: the granite joint, one big automatic increment, bounds on (no request that
+  #    shaves a few per cent, no futile request);
+  #  - neg_hn, neg_hn_two: a bad property is one line per material (two threads), ccx stops;
+  #  - axis_wrong: normal 1, slip 3 on a layer thin along z: one warning, the run goes on.
+  set(calculix_decks ${INTERLOCK_TEST_DATA}/calculix)
+  set(calculix_deck_runner /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/test_calculix_decks.py
+      ${INTERLOCK_CCX})
+  set(umat_line "^interlock UMAT")
+  add_test(NAME calculix_deck_gr_x COMMAND ${calculix_deck_runner} ${calculix_decks}/gr_x.inp
+    ${calculix_work}/decks --complete --normal-traction 2.0 --count ${umat_line} 0)
+  add_test(NAME calculix_deck_big_t2_bounds COMMAND ${calculix_deck_runner}
+    ${calculix_decks}/big_t2_bounds.inp ${calculix_work}/decks --complete
+    --count "diverged global iteration: DSTRAN\\([0-9]\\) = .*cut back \\(PNEWDT 0.25\\)" 1
+    --count "^interlock UMAT.*inadmissible" 0)
+  add_test(NAME calculix_deck_grbig_bounds COMMAND ${calculix_deck_runner}
+    ${calculix_decks}/grbig_bounds.inp ${calculix_work}/decks --complete)
+  add_test(NAME calculix_deck_neg_hn COMMAND ${calculix_deck_runner}
+    ${calculix_decks}/neg_hn.inp ${calculix_work}/decks --stops --threads 2
+    --count ${umat_line} 1 --count "material 'LAYER'.*'h_n' = -0.5 is inadmissible" 1)
+  add_test(NAME calculix_deck_neg_hn_two COMMAND ${calculix_deck_runner}
+    ${calculix_decks}/neg_hn_two.inp ${calculix_work}/decks --stops --threads 2
+    --count ${umat_line} 2 --count "material 'LAYER'.*'h_n' = -0.5 is inadmissible" 1
+    --count "material 'SECOND'.*'eta' = 1.5 is inadmissible" 1)
+  add_test(NAME calculix_deck_axis_wrong COMMAND ${calculix_deck_runner}
+    ${calculix_decks}/axis_wrong.inp ${calculix_work}/decks --complete
+    --count "^interlock UMAT \\(layer\\): warning: .*does not involve normal_axis = 1" 1
+    --count ${umat_line} 1)
+  set_tests_properties(calculix_deck_gr_x calculix_deck_big_t2_bounds calculix_deck_grbig_bounds
+    calculix_deck_neg_hn calculix_deck_neg_hn_two calculix_deck_axis_wrong PROPERTIES
+    LABELS calculix TIMEOUT 600 FIXTURES_REQUIRED calculix_binary
+    FAIL_REGULAR_EXPRESSION "FAIL|Traceback")
 endif()

@@ -5,8 +5,10 @@
 !> own name so that a host which brings a `umat` of its own (CalculiX's stub) or another entry
 !> (the thin layer for hosts without cohesive elements) can call the same law.
 !>
-!> **Threads.** No SAVE'd, module or COMMON state is written; the procedure is `recursive` so
-!> that every local lives on the stack: safe to call from many threads at once.
+!> **Threads.** No SAVE'd, module or COMMON state is written but the table of the messages
+!> already written (umat/interlock_umat_messages.f90: only when a message is due, under a
+!> lock); the procedure is `recursive` so that every local lives on the stack: safe to call
+!> from many threads at once.
 recursive subroutine UMAT(STRESS, STATEV, DDSDDE, SSE, SPD, SCD, RPL, DDSDDT, DRPLDE, DRPLDT, &
                           STRAN, DSTRAN, TIME, DTIME, TEMP, DTEMP, PREDEF, DPRED, CMNAME, NDI, &
                           NSHR, NTENS, NSTATV, PROPS, NPROPS, COORDS, DROT, PNEWDT, CELENT, &

@@ -21,35 +21,43 @@
 !> **Energies.** SSE = stored (free) energy, SCD = total dissipation (damage + friction; the split
 !> is in STATEV 20 and 21), SPD = 0. All per unit area [N/mm].
 !>
-!> **PNEWDT.** PNEWDT is only ever lowered, never raised:
+!> **PNEWDT.** PNEWDT is only ever lowered, never raised (a NaN on entry is replaced):
 !>  - bad input (precision of the reals < 15, NTENS /= 2, NSTATV < 22, NPROPS or a property out
 !>    of its range, NaN; a STATEV slot out of its range: damage outside [0, 1], negative beta
 !>    or zeta, theta outside [theta_f, theta_0] of its plane, the flag STATEV(22) not 0 or 1,
 !>    a slip, work or friction traction beyond 1e150 or not finite; STRESS on entry not finite
-!>    or beyond 1e150 MPa; |STRAN| or |STRAN + DSTRAN| beyond the admissible 1e6 mm): one line
-!>    `interlock UMAT: element E, point P (...): <why>` on the output unit naming the value
-!>    (STATEV by index) and its admissible range, PNEWDT = -1 (repeating the increment cannot
-!>    help: stop the analysis);
-!>  - local integration failure (or a non-finite separation from a diverged global iteration):
-!>    one line as above, PNEWDT = min(PNEWDT, 0.5);
-!>  in both cases STRESS, STATEV, DDSDDE, SSE, SPD, SCD are left untouched.
+!>    or beyond 1e150 MPa; STRAN, the separation at the start of the increment, which the host
+!>    converged, not finite or beyond the admissible 1e6 mm): PNEWDT = -1 (repeating the
+!>    increment cannot help: stop the analysis);
+!>  - a diverged global iteration (DSTRAN not finite or beyond 2e6 mm, or STRAN + DSTRAN
+!>    beyond 1e6 mm: the host's Newton iterate went astray, the start is fine): PNEWDT =
+!>    min(PNEWDT, 0.25), the cut a host makes for a diverged iteration of its own;
+!>  - local integration failure: PNEWDT = min(PNEWDT, 0.5);
+!>  in these cases STRESS, STATEV, DDSDDE, SSE, SPD, SCD are left untouched, and one line
+!>  `interlock UMAT: element E, point P (...): <why>` names the value (STATEV by index) and
+!>  its admissible range, once per material and kind of message in the process
+!>  (umat/interlock_umat_messages.f90: a bad property is one line, not one per point and call).
 !>  - accuracy control: when one increment raises a damage variable by more than the property
-!>    max_damage_increment, or turns a microplane by more than max_angle_increment_deg, PNEWDT
-!>    is set to min(PNEWDT, f) with f the first-order estimate of the fraction of the increment
-!>    that meets the bound, clamped to [0.1, 1] (a bound exceeded by less than a relative 1e-6
-!>    counts as met, so that a retried increment is not cut again for round-off). The scaling
-!>    is linear in the variable that drives the bounded one: the history variable beta for the
-!>    damage D = (beta-1)/(eta beta), the frictional work zeta for the angle theta(zeta). Both
-!>    drivers are convex along a straight separation path (beta: a norm of an affine function;
-!>    zeta: zero while sticking, then growing linearly), so the retried increment
-!>    f * DSTRAN meets the bound (scaling D or theta themselves, which are concave in their
-!>    drivers, would overshoot). With wear on and the explicit scheme, the interpolation starts
-!>    from the state a zero increment gives (the angle stored at the end of the previous
+!>    max_damage_increment, or turns a microplane by more than max_angle_increment_deg, f is
+!>    the first-order estimate of the fraction of the increment that meets the bound. The
+!>    scaling is linear in the variable that drives the bounded one: the history variable beta
+!>    for the damage D = (beta-1)/(eta beta), the frictional work zeta for the angle
+!>    theta(zeta). Both drivers are convex along a straight separation path (beta: a norm of an
+!>    affine function; zeta: zero while sticking, then growing linearly), so the retried
+!>    increment f * DSTRAN meets the bound (scaling D or theta themselves, which are concave in
+!>    their drivers, would overshoot). With wear on and the explicit scheme, the interpolation
+!>    starts from the state a zero increment gives (the angle stored at the end of the previous
 !>    increment already turns the local frame, so a zero increment slips and wears a little);
 !>    this costs one more update, only when a bound is exceeded (the implicit and trapezoidal
-!>    schemes are consistent at a zero increment, SPEC D10: no extra update). When no cut can meet the
-!>    bound, the smallest factor 0.1 is proposed. The results of the increment are returned
-!>    all the same (the host discards them when it cuts back).
+!>    schemes are consistent at a zero increment, SPEC D10: no extra update).
+!>    A request discards the host's attempt (CalculiX acts on it at every global iteration,
+!>    converged or not), so it is made only where it pays: PNEWDT = min(PNEWDT, max(0.01, f))
+!>    when f < 0.8; a bound exceeded by less (f >= 0.8: the cut would shave less than a fifth
+!>    of the increment) is accepted, and so is an increment no cut can bring within the bound
+!>    (the state a zero increment gives is already beyond it, or the damage jumps: a retry
+!>    would fail the same way).
+!>    The results of the increment are returned all the same (the host discards them when it
+!>    cuts back).
 !>
 !> **Arguments.** The argument list is the one of the current Abaqus manual, with
 !> `JSTEP(4)` (step number, procedure type, NLGEOM flag, linear perturbation flag) where older
@@ -79,24 +87,32 @@
 !> exceeded (bounds_met, one test per plane, first). This file is compiled for link-time
 !> optimisation with the UMAT's path (umat/CMakeLists.txt), so that the STATEV checks and
 !> copies inline here. Messages are built only on failure, in the procedures after the body.
-!> interlock-bench measures the UMAT call against its update, and docs/bench.md (section 1b)
-!> gives the figures and where the instructions go.
+!> interlock-bench measures the UMAT call against its update (docs/bench.md).
 !>
-!> **Threads.** No SAVE'd, module or COMMON state is written; the procedure is `recursive` so
-!> that every local lives on the stack: safe to call from many threads at once.
+!> **Threads.** No SAVE'd, module or COMMON state is written but the table of the messages
+!> already written (umat/interlock_umat_messages.f90: only when a message is due, under a
+!> lock); the procedure is `recursive` so that every local lives on the stack: safe to call
+!> from many threads at once.
 module interlock_umat_body
   use, intrinsic :: iso_fortran_env, only: int64
   use interlock_numbers, only: key_in_range
+  use interlock_umat_messages, only: umat_say, said_argument, said_property, said_statev, &
+      said_stress, said_start_strain, said_diverged, said_local_failure, said_replay
   use interlock, only: dp, separation_bound, state_bound, interlock_material_t, &
       interlock_solver_t, interlock_state_t, interlock_info_t, interlock_update, umat_controls_t, &
       status_ok, status_local_failure, scheme_explicit
   implicit none
   private
-  public :: interlock_umat_cohesive
+  public :: interlock_umat_cohesive, diverged_iteration_message, pnewdt_diverged
 
   real(dp), parameter :: pnewdt_bad_input = -1.0_dp
   real(dp), parameter :: pnewdt_local_failure = 0.5_dp
-  real(dp), parameter :: pnewdt_min_factor = 0.1_dp
+  !> A diverged global iteration: the cut hosts make for their own diverged iterations.
+  real(dp), parameter :: pnewdt_diverged = 0.25_dp
+  !> The accuracy bounds: no request for a fraction f >= keep_fraction (the cut would shave
+  !> too little to pay for the discarded attempt); requests no smaller than pnewdt_min_factor.
+  real(dp), parameter :: keep_fraction = 0.8_dp
+  real(dp), parameter :: pnewdt_min_factor = 0.01_dp
   !> A damage or angle bound exceeded by less (relative) is met (step_factor).
   real(dp), parameter :: slack = 1.0e-6_dp
   !> The bounds of STRAN, DSTRAN and STRESS on entry as ordered keys (key_in_range: the
@@ -106,8 +122,7 @@ module interlock_umat_body
     state_bits = transfer(state_bound, 0_int64)
 
   !> What reject_argument reports.
-  integer, parameter :: bad_precision = 1, bad_ntens = 2, bad_nstatv = 3, bad_stran = 4, &
-                        bad_separation = 5, bad_stress = 6, non_finite_separation = 7
+  integer, parameter :: bad_precision = 1, bad_ntens = 2, bad_nstatv = 3, bad_stress = 4
 
 contains
 
@@ -117,7 +132,7 @@ contains
                             DFGRD0, DFGRD1, NOEL, NPT, LAYER, KSPT, JSTEP, KINC, &
                             layer_props_offset)
     use interlock, only: props_n_to_material, statev_to_state, state_to_statev, umat_nstatv, &
-        message_len, statev_bad_index, prop_tangent, tangent_symmetric, &
+        message_len, statev_bad_index, format_real, prop_tangent, tangent_symmetric, &
         interlock_symmetric_tangent
     implicit none
     integer, intent(in) :: NDI                 !< direct components (1 for a 2D cohesive element)
@@ -166,7 +181,8 @@ contains
     end associate
 
     ! --- Bad input: the host's arguments, every property by its range, the separations, the
-    ! traction and the state on entry. Plain comparisons; the messages only on failure.
+    ! traction and the state on entry (every value that may be garbage tested on its bits, see
+    ! "Cost"); the messages only on failure.
     if (precision(STRESS) < 15 .or. precision(PROPS) < 15 .or. precision(PNEWDT) < 15) then
       call reject_argument(bad_precision, min(precision(STRESS), precision(PROPS), &
                            precision(PNEWDT)), [0.0_dp, 0.0_dp], NOEL, NPT, KINC, CMNAME, PNEWDT)
@@ -182,22 +198,19 @@ contains
     end if
     call props_n_to_material(NPROPS, PROPS, mat, solver, controls, stat, message)
     if (stat /= status_ok) then
+      bad = property_index(message)
       if (present(layer_props_offset)) call name_layer_property(message, layer_props_offset, NPROPS)
-      call report(message, pnewdt_bad_input, NOEL, NPT, KINC, CMNAME, PNEWDT)
+      call report(message, pnewdt_bad_input, said_property + bad, NOEL, NPT, KINC, CMNAME, PNEWDT)
       return
     end if
     ! |x| <= bound on the magnitude's bits (key_in_range): false for NaN and the infinities,
-    ! no comparison of a NaN (a trap), then the sum of values now known finite.
+    ! no comparison of a NaN (a trap), then the sum of values now known finite. STRAN is the
+    ! converged start (out of range: bad input); DSTRAN the host's iterate (out of range, or
+    ! its end beyond the bound: a diverged global iteration, cut back).
     ok = key_in_range(STRAN(1), -1 - separation_bits, separation_bits) .and. &
-         key_in_range(STRAN(2), -1 - separation_bits, separation_bits) .and. &
-         key_in_range(DSTRAN(1), -1 - increment_bits, increment_bits) .and. &
-         key_in_range(DSTRAN(2), -1 - increment_bits, increment_bits)
-    if (ok) then
-      s = STRAN(1:2) + DSTRAN(1:2)
-      ok = abs(s(1)) <= separation_bound .and. abs(s(2)) <= separation_bound
-    end if
+         key_in_range(STRAN(2), -1 - separation_bits, separation_bits)
     if (.not. ok) then
-      call reject_separation(STRAN(1:2), DSTRAN(1:2), NOEL, NPT, KINC, CMNAME, PNEWDT)
+      call reject_start_separation(STRAN(1:2), NOEL, NPT, KINC, CMNAME, PNEWDT)
       return
     end if
     ok = key_in_range(STRESS(1), -1 - state_bits, state_bits) .and. &
@@ -211,6 +224,21 @@ contains
       call reject_statev(STATEV(1:umat_nstatv), bad, mat, NOEL, NPT, KINC, CMNAME, PNEWDT)
       return
     end if
+    ! (last: every bad input above wins over a diverged iteration, so that a host is stopped,
+    ! not sent into cutbacks, by input that no cutback repairs)
+    ok = key_in_range(DSTRAN(1), -1 - increment_bits, increment_bits) .and. &
+         key_in_range(DSTRAN(2), -1 - increment_bits, increment_bits)
+    if (ok) then
+      s = STRAN(1:2) + DSTRAN(1:2)
+      ok = abs(s(1)) <= separation_bound .and. abs(s(2)) <= separation_bound
+    end if
+    if (.not. ok) then
+      call report(diverged_iteration_message('DSTRAN = (' // format_real(DSTRAN(1)) // ', ' // &
+                  format_real(DSTRAN(2)) // ') mm', '|s_N|, |s_T| <= ' // &
+                  format_real(separation_bound) // ' mm'), pnewdt_diverged, said_diverged, &
+                  NOEL, NPT, KINC, CMNAME, PNEWDT)
+      return
+    end if
 
     ! --- The update: state at the start from STATEV, STRAN and STRESS.
     call statev_to_state(STATEV(1:umat_nstatv), mat, old)
@@ -218,10 +246,15 @@ contains
     old%sigma = STRESS(1:2)
     call interlock_update(mat, solver, s, old, new, sigma, tangent, info)
     if (info%status /= status_ok) then
-      call report(info%message, merge(pnewdt_local_failure, pnewdt_bad_input, &
-                  info%status == status_local_failure), NOEL, NPT, KINC, CMNAME, PNEWDT)
+      if (info%status == status_local_failure) then
+        call report(info%message, pnewdt_local_failure, said_local_failure, NOEL, NPT, KINC, &
+                    CMNAME, PNEWDT)
+      else
+        call report(info%message, pnewdt_bad_input, said_argument, NOEL, NPT, KINC, CMNAME, &
+                    PNEWDT)
+      end if
       if (info%status == status_local_failure) &
-        call write_replay(info%message, mat, solver, old, s, NOEL, NPT, KINC)
+        call write_replay(info%message, mat, solver, old, s, NOEL, NPT, KINC, CMNAME)
       return
     end if
 
@@ -248,9 +281,9 @@ contains
     factor = step_factor(mat, controls, old, old, new)
     ! (in the implicit and trapezoidal schemes a zero increment is a no-op, SPEC D10: `old`
     ! is the anchor already)
-    if (factor < 1.0_dp .and. mat%use_wear .and. solver%scheme == scheme_explicit) &
+    if (factor < keep_fraction .and. mat%use_wear .and. solver%scheme == scheme_explicit) &
       factor = step_factor_from_zero(mat, solver, controls, old, new, factor)
-    if (factor < 1.0_dp) call lower_pnewdt(PNEWDT, max(pnewdt_min_factor, factor))
+    if (factor < keep_fraction) call lower_pnewdt(PNEWDT, max(pnewdt_min_factor, factor))
   end subroutine interlock_umat_cohesive
 
   !> Every plane's damage and angle increments within their bounds (the slack of step_factor
@@ -311,12 +344,11 @@ contains
         ! D = (beta - 1) / (eta beta)  <=>  beta = 1 / (1 - eta D)
         d_target = old%damage(k) + controls%max_damage_increment
         beta_target = 1.0_dp / (1.0_dp - mat%eta * d_target)
+        ! (no cut helps when the zero increment is already beyond the target: no request)
         if (new%beta(k) > zero%beta(k) .and. beta_target > zero%beta(k)) then
           ! (the quotient only when below f <= 1: no overflow on a tiny denominator)
           if (beta_target - zero%beta(k) < f * (new%beta(k) - zero%beta(k))) &
             f = (beta_target - zero%beta(k)) / (new%beta(k) - zero%beta(k))
-        else
-          f = 0.0_dp   ! a jump (separation beyond H_N) or no cut helps: as small as allowed
         end if
       end if
       if (mat%plane_wears(k) .and. abs(new%theta(k) - old%theta(k)) > &
@@ -333,18 +365,22 @@ contains
         if (new%zeta(k) > zero%zeta(k) .and. dzeta_target > dzeta_zero) then
           if (dzeta_target - dzeta_zero < f * (new%zeta(k) - zero%zeta(k))) &
             f = (dzeta_target - dzeta_zero) / (new%zeta(k) - zero%zeta(k))
-        else
-          f = 0.0_dp
         end if
       end if
     end do
   end function step_factor
 
-  !> PNEWDT = min(PNEWDT, proposal); a NaN on entry is replaced.
+  !> PNEWDT = min(PNEWDT, proposal); a NaN on entry is replaced (tested on its bits: an
+  !> ordered comparison of a NaN raises the invalid flag, a trap in hosts that run with traps).
   subroutine lower_pnewdt(pnewdt, proposal)
+    use interlock, only: is_finite_bits
     real(dp), intent(inout) :: pnewdt
     real(dp), intent(in) :: proposal
-    if (.not. (pnewdt <= proposal)) pnewdt = proposal
+    if (.not. is_finite_bits(pnewdt)) then
+      pnewdt = proposal
+    else if (proposal < pnewdt) then
+      pnewdt = proposal
+    end if
   end subroutine lower_pnewdt
 
   !> Write one line naming the point, lower PNEWDT; STRESS and STATEV stay as they came.
@@ -354,12 +390,9 @@ contains
     use interlock, only: format_integer
     character(len=*), intent(inout) :: message
     integer, intent(in) :: offset, nprops
-    integer :: close_bracket, index_2d, ios
-    close_bracket = index(message, ')')
-    ios = 1
-    if (index(message, 'PROPS(') == 1 .and. close_bracket > 7) &
-      read (message(7:close_bracket - 1), *, iostat=ios) index_2d
-    if (ios == 0) then
+    integer :: index_2d
+    index_2d = property_index(message)
+    if (index_2d > 0) then
       message = 'layer PROPS(' // format_integer(index_2d + offset) // ') = interlock ' // &
                 trim(message)
     else
@@ -368,18 +401,31 @@ contains
     end if
   end subroutine name_layer_property
 
-  subroutine report(why, proposal, noel, npt, kinc, cmname, pnewdt)
-    use, intrinsic :: iso_fortran_env, only: output_unit
+  !> One line naming the point (once per material and `kind`, umat_say); PNEWDT lowered to
+  !> `proposal`.
+  subroutine report(why, proposal, kind, noel, npt, kinc, cmname, pnewdt)
     use interlock, only: format_integer
     character(len=*), intent(in) :: why, cmname
     real(dp), intent(in) :: proposal
-    integer, intent(in) :: noel, npt, kinc
+    integer, intent(in) :: kind, noel, npt, kinc
     real(dp), intent(inout) :: pnewdt
-    write (output_unit, '(a)') 'interlock UMAT: element ' // format_integer(noel) // &
+    call umat_say(cmname, kind, 'interlock UMAT: element ' // format_integer(noel) // &
       ', point ' // format_integer(npt) // " (material '" // trim(cmname) // "', increment " // &
-      format_integer(kinc) // '): ' // trim(why)
+      format_integer(kinc) // '): ' // trim(why))
     call lower_pnewdt(pnewdt, proposal)
   end subroutine report
+
+  !> The index i of a message "PROPS(i): ..." (0 when it names none).
+  integer function property_index(message) result(i)
+    character(len=*), intent(in) :: message
+    integer :: close_bracket, ios
+    i = 0
+    close_bracket = index(message, ')')
+    if (index(message, 'PROPS(') == 1 .and. close_bracket > 7) then
+      read (message(7:close_bracket - 1), *, iostat=ios) i
+      if (ios /= 0) i = 0
+    end if
+  end function property_index
 
   !> Reject a bad argument of the host (`what`: bad_*), naming the value.
   subroutine reject_argument(what, n, x, noel, npt, kinc, cmname, pnewdt)
@@ -393,15 +439,15 @@ contains
     case (bad_precision)
       call report('the real arguments have ' // format_integer(n) // ' significant digits, ' // &
                   'fewer than 15: compile the host and the UMAT in double precision', &
-                  pnewdt_bad_input, noel, npt, kinc, cmname, pnewdt)
+                  pnewdt_bad_input, said_argument + what, noel, npt, kinc, cmname, pnewdt)
     case (bad_ntens)
       call report('NTENS = ' // format_integer(n) // ' is inadmissible: admissible NTENS = 2 ' // &
-                  '(2D cohesive element: 1 normal, 2 shear)', pnewdt_bad_input, noel, npt, kinc, &
-                  cmname, pnewdt)
+                  '(2D cohesive element: 1 normal, 2 shear)', pnewdt_bad_input, &
+                  said_argument + what, noel, npt, kinc, cmname, pnewdt)
     case (bad_nstatv)
       call report('NSTATV = ' // format_integer(n) // ' is inadmissible: admissible NSTATV >= ' &
                   // format_integer(umat_nstatv) // ' (*DEPVAR; see interlock-query --statev)', &
-                  pnewdt_bad_input, noel, npt, kinc, cmname, pnewdt)
+                  pnewdt_bad_input, said_argument + what, noel, npt, kinc, cmname, pnewdt)
     case (bad_stress)
       i = 2
       if (.not. is_finite_bits(x(1))) then
@@ -412,31 +458,37 @@ contains
       call report('STRESS(' // format_integer(i) // ') = ' // format_real(x(i)) // ' on entry ' // &
                   'is inadmissible: admissible |STRESS| <= ' // format_real(state_bound) // &
                   ' MPa (the traction this UMAT returned for the last increment)', &
-                  pnewdt_bad_input, noel, npt, kinc, cmname, pnewdt)
+                  pnewdt_bad_input, said_stress + i, noel, npt, kinc, cmname, pnewdt)
     end select
   end subroutine reject_argument
 
-  !> Reject a separation: not finite (a diverged global iteration: retry with a smaller
-  !> increment) or beyond the admissible bound (bad input).
-  subroutine reject_separation(stran, dstran, noel, npt, kinc, cmname, pnewdt)
-    use interlock, only: format_real, is_finite_bits
-    real(dp), intent(in) :: stran(2), dstran(2)
+  !> Reject the separation at the start of the increment (the host's converged STRAN): not
+  !> finite or beyond the admissible bound is bad input.
+  subroutine reject_start_separation(stran, noel, npt, kinc, cmname, pnewdt)
+    use interlock, only: format_real
+    real(dp), intent(in) :: stran(2)
     integer, intent(in) :: noel, npt, kinc
     character(len=*), intent(in) :: cmname
     real(dp), intent(inout) :: pnewdt
-    if (.not. all(is_finite_bits([stran, dstran]))) then
-      call report('the separation STRAN + DSTRAN is not finite (diverged global iteration?): ' &
-                  // 'retry with a smaller increment', pnewdt_local_failure, noel, npt, kinc, &
-                  cmname, pnewdt)
-    else
-      call report('the separation STRAN = (' // format_real(stran(1)) // ', ' // &
-                  format_real(stran(2)) // ') mm, DSTRAN = (' // format_real(dstran(1)) // &
-                  ', ' // format_real(dstran(2)) // ') mm is inadmissible: admissible |s_N|, ' // &
-                  '|s_T| <= ' // format_real(separation_bound) // ' mm for STRAN and STRAN + ' // &
-                  'DSTRAN (separations, in mm: constitutive thickness 1)', pnewdt_bad_input, &
-                  noel, npt, kinc, cmname, pnewdt)
-    end if
-  end subroutine reject_separation
+    call report('the separation at the start of the increment STRAN = (' // &
+                format_real(stran(1)) // ', ' // format_real(stran(2)) // ') mm is ' // &
+                'inadmissible: admissible |s_N|, |s_T| <= ' // format_real(separation_bound) // &
+                ' mm (separations in mm: constitutive thickness 1)', pnewdt_bad_input, &
+                said_start_strain, noel, npt, kinc, cmname, pnewdt)
+  end subroutine reject_start_separation
+
+  !> The message of a diverged global iteration: `what` ("DSTRAN = (x, y) mm") is not finite
+  !> or takes the end of the increment beyond `bound` ("|s| <= 1e6 mm"): the host's iterate
+  !> went astray from a sound start, and the increment is cut back.
+  pure function diverged_iteration_message(what, bound) result(message)
+    use interlock, only: format_real, message_len
+    character(len=*), intent(in) :: what, bound
+    character(len=message_len) :: message
+    message = 'diverged global iteration: ' // what // ' is not finite or takes the end of ' // &
+              'the increment beyond ' // bound // ' (the start is sound: the host''s Newton ' // &
+              'iterate went astray): the increment is cut back (PNEWDT ' // &
+              format_real(pnewdt_diverged) // ')'
+  end function diverged_iteration_message
 
   !> Reject STATEV(bad), naming index, variable, value and range.
   subroutine reject_statev(statev, bad, mat, noel, npt, kinc, cmname, pnewdt)
@@ -448,14 +500,13 @@ contains
     real(dp), intent(inout) :: pnewdt
     character(len=message_len) :: message
     call statev_message(statev, bad, mat, message)
-    call report(message, pnewdt_bad_input, noel, npt, kinc, cmname, pnewdt)
+    call report(message, pnewdt_bad_input, said_statev + bad, noel, npt, kinc, cmname, pnewdt)
   end subroutine reject_statev
 
   !> The replay deck of a failed increment, when INTERLOCK_REPLAY_DIR asks for it.
-  subroutine write_replay(why, mat, solver, old, s, noel, npt, kinc)
-    use, intrinsic :: iso_fortran_env, only: output_unit
+  subroutine write_replay(why, mat, solver, old, s, noel, npt, kinc, cmname)
     use interlock, only: interlock_write_replay_deck, format_integer
-    character(len=*), intent(in) :: why
+    character(len=*), intent(in) :: why, cmname
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     type(interlock_state_t), intent(in) :: old
@@ -471,8 +522,8 @@ contains
     call interlock_write_replay_deck(trim(dir) // '/' // name, mat, solver, old, s, &
       'UMAT element ' // format_integer(noel) // ', point ' // format_integer(npt) // &
       ', increment ' // format_integer(kinc) // ': ' // why, ios)
-    if (ios /= 0) write (output_unit, '(a)') 'interlock UMAT: could not write the replay deck ' &
-      // trim(dir) // '/' // name
+    if (ios /= 0) call umat_say(cmname, said_replay, 'interlock UMAT: could not write the ' // &
+      'replay deck ' // trim(dir) // '/' // name)
   end subroutine write_replay
 
 end module interlock_umat_body

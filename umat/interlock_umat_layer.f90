@@ -19,37 +19,59 @@
 !> and the tangent back after it).
 !>
 !> **PROPS** (`layer_nprops_head` = 4 values, then the 2D law's PROPS 1 .. 9 to 1 .. 20):
-!>   1 h [mm] > 0, 2 e_other [MPa] > 0, 3 normal_axis 1..3, 4 slip_axis 1..3 (/= normal_axis),
+!>   1 h [mm] in [1e-12, 1e12], 2 e_other [MPa] in (0, 1e30), 3 normal_axis 1, 2 or 3,
+!>   4 slip_axis 1, 2 or 3 (/= normal_axis),
 !>   5 .. the interlock PROPS (interlock-query --props). NPROPS from 13 to 24.
 !> **STATEV**: the 2D law's 22 (NSTATV >= 22); with NSTATV >= 26 (`*DEPVAR` 26) also 23, 24 the
 !> separation (normal, slip) [mm] and 25, 26 the traction (normal, slip) [MPa] at the end of the
 !> increment, in the interface's axes (for output: hosts print S in their global axes).
-!> **Energies** per unit volume: the law's SSE and SCD
-!> (per unit area) / h, plus the elastic energy of the other components in SSE; SPD = 0.
+!> **Energies** per unit volume: the law's SSE and SCD (per unit area) / h, plus the elastic
+!> energy of the other components in SSE; SPD = 0 (nothing is read from them on entry).
+!>
+!> **Strains.** Every component's |h x strain| must stay within the admissible separation
+!> 1e6 mm (tested on the bits: no comparison of a NaN, no product that overflows): STRAN, the
+!> converged start, out of it is bad input; DSTRAN out of it (or not finite), or the end of the
+!> increment beyond it, is a diverged global iteration of the host (a cutback; the start is
+!> sound). So the other components never carry garbage on into STRESS or the energies.
 !>
 !> **PNEWDT** (`host`):
-!>  - `host_abaqus`: as the 2D law (only lowered: -1 for bad input, 0.5 for a local failure,
-!>    the accuracy bounds' fraction in [0.1, 1)).
+!>  - `host_abaqus`: as the 2D law (only lowered: -1 for bad input, 0.25 for a diverged global
+!>    iteration, 0.5 for a local failure, the accuracy bounds' fraction).
 !>  - `host_calculix`: ccx passes PNEWDT = -1 meaning "no request", and carries it from point to
 !>    point within one thread (resultsmech.f); ANY positive value returned makes ccx discard the
 !>    iteration and cut the increment by that factor (checkconvergence.c), at every iteration.
 !>    So: a positive request is only ever lowered (a positive value that arrives is another
 !>    point's request); bad input returns `pnewdt_calculix_stop` (1e-6: the increment falls
-!>    below the minimum and ccx stops, or stops at once with fixed increments); a local
-!>    failure 0.5 and the accuracy bounds their fraction. -1 is left alone when all is well.
+!>    below the minimum and ccx stops, or stops at once with fixed increments); a diverged
+!>    iteration 0.25, a local failure 0.5 and the accuracy bounds their fraction. -1 is left
+!>    alone when all is well.
+!>  A NaN PNEWDT on entry is replaced when a request is due (tested on its bits), else left.
 !>  On bad input or a failure, STRESS, STATEV, DDSDDE and the energies are left as they came.
 !>
-!> **Threads.** No SAVE'd, module or COMMON state is written; `recursive`: every local on the
-!> stack.
+!> **Messages**: one line per material and kind (umat/interlock_umat_messages.f90), naming the
+!> point and the value. **Axes**: a layer whose declared normal is not its thin direction runs
+!> (every value admissible) with the wrong components: the large strains of the thin direction
+!> then land in the other components. When, at the end of an increment, a component that does
+!> not involve the normal axis (an in-plane direct strain or the in-plane shear) exceeds
+!> `axes_suspect_strain` and every interface component, one warning line says so (the
+!> analysis goes on: PNEWDT untouched).
+!>
+!> **Threads.** No SAVE'd, module or COMMON state is written but the messages' table (under
+!> its lock); `recursive`: every local on the stack.
 module interlock_umat_layer
-  use interlock, only: dp, message_len, format_integer, format_real, is_nan_value, &
-      same_value, umat_nstatv, n_required_properties, n_properties
-  use interlock_umat_body, only: interlock_umat_cohesive
+  use, intrinsic :: iso_fortran_env, only: int64
+  use interlock, only: dp, message_len, format_integer, format_real, umat_nstatv, &
+      n_required_properties, n_properties, separation_bound, is_finite_bits
+  use interlock_material_table, only: key_in_range
+  use interlock_umat_body, only: interlock_umat_cohesive, diverged_iteration_message, &
+      pnewdt_diverged
+  use interlock_umat_messages, only: umat_say, said_argument, said_start_strain, &
+      said_diverged, said_layer_axes
   implicit none
   private
   public :: interlock_umat_layer_point, host_abaqus, host_calculix, layer_nprops_head, &
-            layer_nstatv_extra, &
-            pnewdt_calculix_stop, layer_components
+            layer_nstatv_extra, pnewdt_calculix_stop, layer_components, layer_h_min, &
+            layer_h_max, axes_suspect_strain, calculix_linear_iteration
 
   integer, parameter :: host_abaqus = 1    !< PNEWDT starts at >= 1 and is only lowered
   integer, parameter :: host_calculix = 2  !< PNEWDT starts at -1 ("no request")
@@ -59,6 +81,17 @@ module interlock_umat_layer
   integer, parameter :: layer_nstatv_extra = 4
   !> The cutback factor that makes CalculiX stop on bad input (below any sensible minimum).
   real(dp), parameter :: pnewdt_calculix_stop = 1.0e-6_dp
+  !> The admissible layer thickness [mm]: within it, strain bounds (1e6 mm / h), energies per
+  !> volume (per area / h) and stresses (e_other x strain) stay far from overflow.
+  real(dp), parameter :: layer_h_min = 1.0e-12_dp, layer_h_max = 1.0e12_dp
+  !> An in-plane strain beyond this (and beyond the interface's) suggests the wrong normal
+  !> axis: in-plane strains are the neighbouring bulk's, small in a small-strain analysis.
+  real(dp), parameter :: axes_suspect_strain = 0.1_dp
+  !> Exact bit patterns of the admissible axis values 1, 2, 3.
+  integer(int64), parameter :: axis_bits(3) = transfer([1.0_dp, 2.0_dp, 3.0_dp], 0_int64, 3)
+  integer(int64), parameter :: h_low_bits = transfer(layer_h_min, 0_int64), &
+    h_high_bits = transfer(layer_h_max, 0_int64), &
+    e_other_high_bits = transfer(1.0e30_dp, 0_int64) - 1_int64
 
 contains
 
@@ -79,11 +112,49 @@ contains
     end if
   end function layer_components
 
+  !> Whether ccx calls for the tangent of its "linear iteration": the first iteration of the
+  !> first increment of a step whose prescribed displacements change (nonlingeo.c, ilin = 1),
+  !> where ccx wants the tangent at the end of the previous increment and throws the stress
+  !> away. There calctotstrain.f passes, whatever NLGEOM says, the Green-Lagrange strain of
+  !> the old displacements, E = (H + H^T) / 2 + H^T H / 2 with H = DFGRD0 - I, so that
+  !> DSTRAN = E - STRAN = H^T H / 2: not a displacement increment but the quadratic term of
+  !> the old field. In an FE model's bulk that is of the order of the squared strains and
+  !> harmless; in a thin layer the normal "strain" is s_N / h (-3.2 for the granite joint at
+  !> 2 MPa in a 0.01 mm layer), and H^T H / 2 (+5.1 there) turns a closed interface into an
+  !> open one: the law answers with an open interface's tangent, ccx's predictor diverges.
+  !> Detected by traces, which a rotation into the local axes keeps: in every other call
+  !> without NLGEOM (JSTEP(3) = 0) ccx's DSTRAN is the small-strain increment, so
+  !> tr DSTRAN = tr(DFGRD1 - DFGRD0) to round-off; here tr DSTRAN = |H|^2 / 2 instead.
+  !> Values that are not finite and moderate (|x| <= 1e100) never count as that call.
+  pure logical function calculix_linear_iteration(ntens, dstran, dfgrd0, dfgrd1, jstep) &
+      result(linear)
+    integer, intent(in) :: ntens, jstep(4)
+    real(dp), intent(in) :: dstran(ntens), dfgrd0(3, 3), dfgrd1(3, 3)
+    integer(int64), parameter :: moderate_bits = transfer(1.0e100_dp, 0_int64)
+    real(dp), parameter :: round_off = 1.0e-12_dp
+    real(dp) :: trace_strain, trace_gradient, quadratic, scale
+    integer :: i
+    linear = .false.
+    if (ntens < 3 .or. jstep(3) /= 0) return
+    if (.not. all(key_in_range(dstran(1:3), -1_int64 - moderate_bits, moderate_bits))) return
+    if (.not. all(key_in_range(dfgrd0, -1_int64 - moderate_bits, moderate_bits))) return
+    if (.not. all(key_in_range(dfgrd1, -1_int64 - moderate_bits, moderate_bits))) return
+    trace_strain = dstran(1) + dstran(2) + dstran(3)
+    trace_gradient = 0.0_dp
+    do i = 1, 3
+      trace_gradient = trace_gradient + (dfgrd1(i, i) - dfgrd0(i, i))
+    end do
+    quadratic = 0.5_dp * (sum(dfgrd0**2) - 2.0_dp * (dfgrd0(1, 1) + dfgrd0(2, 2) + &
+                dfgrd0(3, 3)) + 3.0_dp)      ! |DFGRD0 - I|^2 / 2
+    scale = 1.0_dp + maxval(abs(dfgrd0)) + maxval(abs(dfgrd1)) + abs(trace_strain)
+    linear = abs(trace_strain - trace_gradient) > round_off * scale .and. &
+             abs(trace_strain - quadratic) <= round_off * scale * (1.0_dp + quadratic)
+  end function calculix_linear_iteration
+
   recursive subroutine interlock_umat_layer_point(STRESS, STATEV, DDSDDE, SSE, SPD, SCD, RPL, &
       DDSDDT, DRPLDE, DRPLDT, STRAN, DSTRAN, TIME, DTIME, TEMP, DTEMP, PREDEF, DPRED, CMNAME, &
       NDI, NSHR, NTENS, NSTATV, PROPS, NPROPS, COORDS, DROT, PNEWDT, CELENT, DFGRD0, DFGRD1, &
       NOEL, NPT, LAYER, KSPT, JSTEP, KINC, host)
-    use, intrinsic :: iso_fortran_env, only: output_unit
     integer, intent(in) :: NDI, NSHR, NTENS, NSTATV, NPROPS, NOEL, NPT, LAYER, KSPT, JSTEP(4), KINC
     character(len=*), intent(in) :: CMNAME
     real(dp), intent(inout) :: STRESS(NTENS), STATEV(NSTATV), DDSDDE(NTENS, NTENS)
@@ -97,15 +168,19 @@ contains
     real(dp), parameter :: pnewdt_none = 1.0_dp
     real(dp), parameter :: untouched = -huge(1.0_dp)
     integer :: comp(2), normal, slip, i
+    integer(int64) :: strain_bits, increment_bits
     real(dp) :: h, e_other, t(2), s0(2), ds(2), d2(2, 2), sse2, spd2, scd2, rpl2, drpldt2, &
-                ddsddt2(2), drplde2(2), p2, strain, elastic
-    logical :: interface_component(NTENS)
+                ddsddt2(2), drplde2(2), p2, elastic, strain_bound
+    ! (fixed size: NTENS is checked to be 4 or 6 first; no automatic array, no heap per call)
+    real(dp) :: strain(6)
+    logical :: interface_component(6)
     character(len=message_len) :: message
 
-    ! --- The host's arguments and the layer's own PROPS, each by name and range.
+    ! --- The host's arguments and the layer's own PROPS, each by name and range (on the
+    ! bits: no comparison of a NaN, signalling or quiet).
     if (NTENS /= 4 .and. NTENS /= 6) then
       call fail('NTENS = ' // format_integer(NTENS) // ' is inadmissible: admissible NTENS = ' &
-                // '6 (11, 22, 33, 12, 13, 23) or 4 (11, 22, 33, 12)', .true.)
+                // '6 (11, 22, 33, 12, 13, 23) or 4 (11, 22, 33, 12)', said_argument + 1)
       return
     end if
     if (NPROPS < layer_nprops_head + n_required_properties .or. &
@@ -113,28 +188,29 @@ contains
       call fail('NPROPS = ' // format_integer(NPROPS) // ' is inadmissible: admissible ' // &
                 format_integer(layer_nprops_head + n_required_properties) // ' <= NPROPS <= ' // &
                 format_integer(layer_nprops_head + n_properties) // ' (h, e_other, normal_axis, ' // &
-                'slip_axis, then the interlock PROPS)', .true.)
+                'slip_axis, then the interlock PROPS)', said_argument + 2)
+      return
+    end if
+    if (.not. key_in_range(PROPS(1), h_low_bits, h_high_bits)) then
+      call fail("layer PROPS(1): 'h' = " // format_real(PROPS(1)) // ' is inadmissible: ' // &
+                'admissible ' // format_real(layer_h_min) // ' <= h <= ' // &
+                format_real(layer_h_max) // ' [mm] (the layer thickness)', said_argument + 3)
+      return
+    end if
+    if (.not. key_in_range(PROPS(2), 1_int64, e_other_high_bits)) then
+      call fail("layer PROPS(2): 'e_other' = " // format_real(PROPS(2)) // ' is inadmissible: ' &
+                // 'admissible 0 < e_other < 1e30 [MPa] (the modulus of the other components)', &
+                said_argument + 4)
       return
     end if
     h = PROPS(1)
     e_other = PROPS(2)
-    if (.not. inside(h, 0.0_dp, 1.0e30_dp)) then
-      call fail("layer PROPS(1): 'h' = " // format_real(h) // ' is inadmissible: admissible ' &
-                // '0 < h < 1e30 [mm] (the layer thickness)', .true.)
-      return
-    end if
-    if (.not. inside(e_other, 0.0_dp, 1.0e30_dp)) then
-      call fail("layer PROPS(2): 'e_other' = " // format_real(e_other) // ' is inadmissible: ' &
-                // 'admissible 0 < e_other < 1e30 [MPa] (the modulus of the other components)', &
-                .true.)
-      return
-    end if
     do i = 3, 4
-      if (.not. axis_value(PROPS(i))) then
+      if (.not. any(transfer(PROPS(i), 0_int64) == axis_bits)) then
         call fail('layer PROPS(' // format_integer(i) // "): '" // &
                   trim(merge('normal_axis', 'slip_axis  ', i == 3)) // "' = " // &
                   format_real(PROPS(i)) // ' is inadmissible: admissible 1, 2 or 3 (a local ' // &
-                  'axis)', .true.)
+                  'axis)', said_argument + 2 + i)
         return
       end if
     end do
@@ -151,16 +227,42 @@ contains
                   // ', ' // format_integer(slip) // ' is inadmissible with NTENS = 4: ' // &
                   'admissible the axes 1 and 2 (the only shear component is 12)'
       end if
-      call fail(message, .true.)
+      call fail(message, said_argument + merge(7, 8, normal == slip))
       return
     end if
-    ! --- The 2D law on the interface pair (separation = h * strain).
+    ! --- Every strain component: |h strain| within the admissible separation, on the bits
+    ! (the bound's bits order as the magnitudes do; NaN and Inf lie beyond).
+    strain_bound = separation_bound / h
+    strain_bits = transfer(strain_bound, 0_int64)
+    increment_bits = transfer(2.0_dp * strain_bound, 0_int64)
+    do i = 1, NTENS
+      if (.not. key_in_range(STRAN(i), -1_int64 - strain_bits, strain_bits)) then
+        call fail('the strain at the start of the increment STRAN(' // format_integer(i) // &
+                  ') = ' // format_real(STRAN(i)) // ' is inadmissible: admissible |h STRAN| ' &
+                  // '<= ' // format_real(separation_bound) // ' mm (|STRAN| <= ' // &
+                  format_real(strain_bound) // ' with h = ' // format_real(h) // ' mm)', &
+                  said_start_strain + i)
+        return
+      end if
+    end do
+    do i = 1, NTENS
+      if (.not. key_in_range(DSTRAN(i), -1_int64 - increment_bits, increment_bits)) exit
+      strain(i) = STRAN(i) + DSTRAN(i)
+      if (abs(strain(i)) > strain_bound) exit
+    end do
+    if (i <= NTENS) then
+      call diverged(i)
+      return
+    end if
+
+    ! --- The 2D law on the interface pair (separation = h * strain; the law sets its energies
+    ! per area: none is read from SSE, SCD on entry).
     t = STRESS(comp)
     s0 = h * STRAN(comp)
     ds = h * DSTRAN(comp)
-    sse2 = SSE * h
+    sse2 = 0.0_dp
     spd2 = 0.0_dp
-    scd2 = SCD * h
+    scd2 = 0.0_dp
     rpl2 = 0.0_dp
     drpldt2 = 0.0_dp
     ddsddt2 = 0.0_dp
@@ -172,7 +274,7 @@ contains
       PROPS(layer_nprops_head + 1:NPROPS), NPROPS - layer_nprops_head, COORDS, DROT, p2, &
       CELENT, DFGRD0, DFGRD1, NOEL, NPT, LAYER, KSPT, JSTEP, KINC, &
       layer_props_offset=layer_nprops_head)   ! (the law checks its PROPS, named by both indices)
-    if (same_value(d2(1, 1), untouched)) then
+    if (transfer(d2(1, 1), 0_int64) == transfer(untouched, 0_int64)) then
       ! The law failed (it wrote its line and left its arguments alone): so does the layer.
       call request(max(p2, 0.0_dp), p2 <= 0.0_dp)
       return
@@ -185,10 +287,9 @@ contains
     elastic = 0.0_dp
     do i = 1, NTENS
       if (interface_component(i)) cycle
-      strain = STRAN(i) + DSTRAN(i)
-      STRESS(i) = e_other * strain
+      STRESS(i) = e_other * strain(i)
       DDSDDE(i, i) = e_other
-      elastic = elastic + 0.5_dp * e_other * strain**2
+      elastic = elastic + 0.5_dp * e_other * strain(i)**2
     end do
     STRESS(comp) = t
     DDSDDE(comp, comp) = h * d2
@@ -204,34 +305,92 @@ contains
       STATEV(umat_nstatv + 3:umat_nstatv + 4) = t
     end if
     if (p2 < pnewdt_none) call request(p2, .false.)
+    if (in_plane_strain() > axes_suspect_strain) call check_axes()
     associate (unused_1 => NDI, unused_2 => NSHR)
     end associate
 
   contains
 
-    !> lower < x < upper, false for NaN (tested first: no comparison with a NaN).
-    pure logical function inside(x, lower, upper)
-      real(dp), intent(in) :: x, lower, upper
-      inside = .false.
-      if (.not. is_nan_value(x)) inside = x > lower .and. x < upper
-    end function inside
+    !> The largest |strain| at the end of the increment among the components that do not
+    !> involve the normal axis (in a thin layer: the neighbouring bulk's, small).
+    pure real(dp) function in_plane_strain() result(e)
+      integer :: j
+      e = 0.0_dp
+      do j = 1, NTENS
+        if (.not. involves_normal(j)) e = max(e, abs(strain(j)))
+      end do
+    end function in_plane_strain
 
-    !> 1, 2 or 3.
-    pure logical function axis_value(x)
-      real(dp), intent(in) :: x
-      axis_value = inside(x, 0.5_dp, 3.5_dp)
-      if (axis_value) axis_value = same_value(x, anint(x))
-    end function axis_value
+    !> Component j (11, 22, 33, 12, 13, 23) involves the normal axis.
+    pure logical function involves_normal(j)
+      integer, intent(in) :: j
+      integer, parameter :: first_axis(6) = [1, 2, 3, 1, 1, 2], second_axis(6) = [1, 2, 3, 2, 3, 3]
+      involves_normal = first_axis(j) == normal .or. second_axis(j) == normal
+    end function involves_normal
 
-    !> One line naming the point; PNEWDT per the host's convention.
-    subroutine fail(why, bad_input)
+    !> An in-plane strain beyond the interface's: warn (once per material) that the declared
+    !> normal is probably not the layer's thin direction.
+    subroutine check_axes()
+      integer :: j, worst
+      worst = 0
+      do j = 1, NTENS
+        if (involves_normal(j)) cycle
+        if (worst == 0) then
+          worst = j
+        else if (abs(strain(j)) > abs(strain(worst))) then
+          worst = j
+        end if
+      end do
+      if (abs(strain(worst)) <= maxval(abs(strain(comp)))) return
+      call umat_say(CMNAME, said_layer_axes, 'interlock UMAT (layer): warning: element ' // &
+        format_integer(NOEL) // ', point ' // format_integer(NPT) // " (material '" // &
+        trim(CMNAME) // "', increment " // format_integer(KINC) // '): the strain of ' // &
+        'component ' // format_integer(worst) // ' = ' // format_real(strain(worst)) // &
+        ', which does not involve normal_axis = ' // format_integer(normal) // ', exceeds ' // &
+        format_real(axes_suspect_strain) // ' and the interface strains (' // &
+        format_real(strain(comp(1))) // ', ' // format_real(strain(comp(2))) // '): in a ' // &
+        'thin layer only the components of its normal are large; is normal_axis the ' // &
+        "layer's thin direction in the element's local axes (*ORIENTATION)?")
+    end subroutine check_axes
+
+    !> A diverged global iteration: component i of DSTRAN, or of the end strain, out of range.
+    !> Bad input wins (no cutback repairs it): the law first checks its own arguments (PROPS,
+    !> STATEV, the start) at a zero increment, on copies; its rejection is the answer.
+    subroutine diverged(i)
+      integer, intent(in) :: i
+      real(dp) :: statev_copy(NSTATV), t_copy(2), d_copy(2, 2), e(4), p_law, no_increment(2)
+      t_copy = STRESS(comp)
+      statev_copy = STATEV
+      d_copy = untouched
+      e = 0.0_dp
+      p_law = pnewdt_none
+      no_increment = 0.0_dp
+      call interlock_umat_cohesive(t_copy, statev_copy, d_copy, e(1), e(2), e(3), e(4), &
+        ddsddt2, drplde2, drpldt2, h * STRAN(comp), no_increment, TIME, DTIME, TEMP, DTEMP, &
+        PREDEF, DPRED, CMNAME, 1, 1, 2, NSTATV, PROPS(layer_nprops_head + 1:NPROPS), &
+        NPROPS - layer_nprops_head, COORDS, DROT, p_law, CELENT, DFGRD0, DFGRD1, NOEL, NPT, &
+        LAYER, KSPT, JSTEP, KINC, layer_props_offset=layer_nprops_head)
+      if (p_law <= 0.0_dp) then
+        call request(0.0_dp, .true.)
+        return
+      end if
+      call umat_say(CMNAME, said_diverged, 'interlock UMAT (layer): element ' // &
+        format_integer(NOEL) // ', point ' // format_integer(NPT) // " (material '" // &
+        trim(CMNAME) // "', increment " // format_integer(KINC) // '): ' // &
+        trim(diverged_iteration_message('DSTRAN(' // format_integer(i) // ') = ' // &
+        format_real(DSTRAN(i)), '|h strain| <= ' // format_real(separation_bound) // ' mm (h = ' &
+        // format_real(h) // ' mm)')))
+      call request(pnewdt_diverged, .false.)
+    end subroutine diverged
+
+    !> One line naming the point (once per material and `kind`); bad input for the host.
+    subroutine fail(why, kind)
       character(len=*), intent(in) :: why
-      logical, intent(in) :: bad_input
-      character(len=64) :: where
-      write (where, '(a,i0,a,i0)') 'element ', NOEL, ', point ', NPT
-      write (output_unit, '(a)') 'interlock UMAT (layer): ' // trim(where) // " (material '" &
-        // trim(CMNAME) // "', increment " // format_integer(KINC) // '): ' // trim(why)
-      call request(-1.0_dp, bad_input)
+      integer, intent(in) :: kind
+      call umat_say(CMNAME, kind, 'interlock UMAT (layer): element ' // format_integer(NOEL) &
+        // ', point ' // format_integer(NPT) // " (material '" // trim(CMNAME) // &
+        "', increment " // format_integer(KINC) // '): ' // trim(why))
+      call request(-1.0_dp, .true.)
     end subroutine fail
 
     !> Ask the host for a shorter increment: `factor` in (0, 1), or a stop (bad input).
@@ -242,14 +401,20 @@ contains
       select case (host)
       case (host_calculix)
         wanted = merge(pnewdt_calculix_stop, factor, stop_analysis)
-        if (is_nan_value(PNEWDT) .or. PNEWDT <= 0.0_dp) then
-          PNEWDT = wanted          ! -1 (no request yet) or garbage
+        if (.not. is_finite_bits(PNEWDT)) then
+          PNEWDT = wanted          ! garbage
+        else if (PNEWDT <= 0.0_dp) then
+          PNEWDT = wanted          ! -1: no request yet
         else
           PNEWDT = min(PNEWDT, wanted)
         end if
       case default
         wanted = merge(-1.0_dp, factor, stop_analysis)
-        if (is_nan_value(PNEWDT) .or. wanted < PNEWDT) PNEWDT = wanted
+        if (.not. is_finite_bits(PNEWDT)) then
+          PNEWDT = wanted
+        else if (wanted < PNEWDT) then
+          PNEWDT = wanted
+        end if
       end select
     end subroutine request
 

@@ -9,11 +9,12 @@
 !>   interlock-fuzz [--updates N] [--seed S] [--fd-every K] [--deck-dir DIR] [--max-decks M]
 !>   interlock-fuzz --garbage N [--seed S]
 !>
-!> With --garbage, N calls of the external UMAT with garbage mixed into valid input instead:
-!> NaN (quiet and signalling), +-Inf, denormals, huge and out-of-range values in PROPS, STATEV,
-!> STRESS, STRAN and DSTRAN. Every call must either be rejected (PNEWDT < 1, STRESS, STATEV,
-!> DDSDDE, SSE and SCD untouched, one message line) or return finite outputs; in the Debug
-!> build (FP traps on invalid, zero, overflow) any trap ends the run.
+!> With --garbage, N calls of the UMAT entries (the external 2D UMAT; the thin layer with
+!> NTENS = 6 and 4, in Abaqus' and CalculiX's PNEWDT conventions) with garbage mixed into valid
+!> input instead: NaN (quiet and signalling), +-Inf, denormals, huge and out-of-range values in
+!> every argument the host passes (garbage_calls). Every call must either leave its outputs
+!> untouched or return them finite, and PNEWDT as it came or as a request of its convention;
+!> in the Debug build (FP traps on invalid, zero, overflow) any trap ends the run.
 !>
 !> Exit status 0 when no invariant, tangent or status failure was found; 2 on a usage error (the
 !> usage on stderr).
@@ -26,7 +27,9 @@ program interlock_fuzz
   use interlock_material, only: n_schemes
   use interlock_replay, only: interlock_write_replay_deck
   use test_stability_tools
-  use test_umat_interface, only: umat_point_t, call_umat
+  use test_umat_interface, only: UMAT
+  use interlock_umat_layer, only: interlock_umat_layer_point, host_abaqus, host_calculix, &
+      layer_nstatv_extra
   implicit none
 
   integer(int64) :: n_updates = 100000_int64, done = 0_int64, n_fd = 0_int64, n_fd_skip = 0_int64
@@ -36,6 +39,17 @@ program interlock_fuzz
   type(rng_t) :: rng
   real(dp) :: t0, t1
   integer(int64) :: n_garbage = 0_int64
+
+  !> The arguments of a UMAT call besides the material point's STRESS, STATEV, STRAN, DSTRAN
+  !> and PROPS (the sizes NTENS, NSTATV, NPROPS are drawn with them).
+  type :: host_arguments_t
+    !> (DDSDDE as the UMAT sees it: its first NTENS**2 values are the NTENS x NTENS matrix)
+    real(dp) :: ddsdde(36), sse, spd, scd, rpl, ddsddt(6), drplde(6), drpldt, pnewdt
+    real(dp) :: time(2), dtime, temp, dtemp, predef(4), dpred(4), coords(3), drot(3, 3), &
+                celent, dfgrd0(3, 3), dfgrd1(3, 3)
+    integer :: ndi, nshr, noel, npt, layer, kspt, jstep(4), kinc
+    character(len=12) :: cmname
+  end type host_arguments_t
 
 
   call parse_arguments()
@@ -169,93 +183,274 @@ contains
     end select
   end function garble
 
-  !> --garbage: UMAT calls with garbage in every input; each call rejected with its outputs
-  !> untouched, or finite.
+  !> --garbage: calls of the three entries a host uses (the external 2D UMAT, Abaqus'
+  !> convention; the thin layer with NTENS = 6 and 4 in Abaqus' and CalculiX's conventions)
+  !> with garbage now and then in every argument the host passes: PROPS, STATEV, STRESS,
+  !> STRAN, DSTRAN, SSE, SPD, SCD, RPL, DDSDDT, DRPLDE, DRPLDT, PNEWDT on entry, the sizes
+  !> (NTENS, NSTATV, NPROPS, NDI, NSHR), TIME, DTIME, TEMP, DTEMP, PREDEF, DPRED, COORDS,
+  !> DROT, CELENT, DFGRD0, DFGRD1, NOEL, NPT, LAYER, KSPT, JSTEP, KINC and CMNAME. Each call
+  !> must leave its outputs (STRESS, the STATEV it owns, DDSDDE, SSE, SPD, SCD, RPL, DDSDDT,
+  !> DRPLDE, DRPLDT) untouched or return them all finite, and return PNEWDT as it came or as a
+  !> request of its convention (Abaqus: finite, < 1; CalculiX: in (0, 1)); any trap of the
+  !> Debug build ends the run.
   subroutine garbage_calls()
+    integer, parameter :: entry_umat = 1, entry_layer = 2, entry_ntens(4) = [2, 6, 6, 4]
     real(dp), parameter :: props_base(14) = [3.0_dp, 3.0_dp, 0.3_dp, 0.9_dp, 0.5_dp, 2.0_dp, &
       30.0_dp, 7.0_dp, 1.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, 0.25_dp, 1.0_dp]
-    type(umat_point_t) :: pt, before
-    real(dp) :: props(n_properties), stran(2), dstran(2), p
-    integer :: n_props, k, n_rejected, n_bad
-    integer(int64) :: call_no
-    allocate (pt%stress(2), pt%statev(umat_nstatv), pt%ddsdde(2, 2))
+    !> One point of each entry kind (host side): what the host keeps between calls.
+    type :: garbage_point_t
+      real(dp) :: stress(6) = 0.0_dp, statev(30) = 0.0_dp, stran(6) = 0.0_dp
+    end type garbage_point_t
+    type(garbage_point_t) :: points(4), pt, before
+    type(host_arguments_t) :: args, args_in
+    real(dp) :: props(n_properties + 4), dstran(6), p, h
+    integer :: n_props, k, which, entry, host, ntens, nstatv, owned
+    integer(int64) :: call_no, n_rejected(2), n_bad, n_calls(2)
+    logical :: touched
     n_rejected = 0
+    n_calls = 0
     n_bad = 0
-    pt%stress = 0.0_dp
-    pt%statev = 0.0_dp
-    pt%ddsdde = 0.0_dp
-    stran = 0.0_dp
     do call_no = 1, n_garbage
       p = merge(0.005_dp, 0.1_dp, rng_uniform(rng) < 0.5_dp)
-      n_props = rng_int(rng, 9, n_properties)
-      props = properties%default
-      props(1:14) = props_base
-      props(10) = merge(1.0_dp, 0.0_dp, rng_uniform(rng) < 0.2_dp)
-      props(11) = real(rng_int(rng, 1, n_schemes), dp)
-      props(12) = merge(1.0e-3_dp, 0.0_dp, rng_uniform(rng) < 0.2_dp)
-      do k = 1, n_props
+      which = rng_int(rng, 1, 4)          ! 2D UMAT; layer NTENS 6 Abaqus, 6 ccx, 4 either
+      entry = merge(entry_umat, entry_layer, which == 1)
+      host = host_abaqus
+      if (which == 3) host = host_calculix
+      if (rng_uniform(rng) < 0.5_dp .and. which == 4) host = host_calculix
+      ntens = entry_ntens(which)
+      if (rng_uniform(rng) < p / 8.0_dp) ntens = rng_int(rng, 1, 6)
+      nstatv = merge(umat_nstatv, umat_nstatv + 4, rng_uniform(rng) < 0.5_dp)
+      if (rng_uniform(rng) < p / 8.0_dp) nstatv = rng_int(rng, 1, 30)
+      ! PROPS: the interlock ones after the layer's head (h, e_other, normal, slip).
+      n_props = rng_int(rng, n_required_properties, n_properties)
+      props = 0.0_dp
+      props(5:4 + n_properties) = properties%default
+      props(5:18) = props_base
+      props(14) = merge(1.0_dp, 0.0_dp, rng_uniform(rng) < 0.2_dp)
+      props(15) = real(rng_int(rng, 1, n_schemes), dp)
+      props(16) = merge(1.0e-3_dp, 0.0_dp, rng_uniform(rng) < 0.2_dp)
+      h = 10.0_dp**(rng_uniform(rng) * 4.0_dp - 3.0_dp)
+      if (ntens == 4) then
+        k = rng_int(rng, 1, 2)
+        props(1:4) = [h, 0.01_dp, real(k, dp), real(3 - k, dp)]
+      else
+        k = rng_int(rng, 1, 3)
+        props(1:4) = [h, 0.01_dp, real(k, dp), real(1 + mod(k + rng_int(rng, 0, 1), 3), dp)]
+      end if
+      do k = 1, 4 + n_props
         props(k) = garble(props(k), p / 4.0_dp)
       end do
-      if (rng_uniform(rng) < 0.05_dp) then          ! a fresh point
-        pt%statev = 0.0_dp
-        pt%stress = 0.0_dp
-        stran = 0.0_dp
-      end if
-      do k = 1, umat_nstatv
+      ! The point: carried on from its last accepted call, with garbage now and then.
+      pt = points(which)
+      if (rng_uniform(rng) < 0.05_dp) pt = garbage_point_t()       ! a fresh point
+      do k = 1, 30
         pt%statev(k) = garble(pt%statev(k), p / 8.0_dp)
       end do
-      pt%stress = [garble(pt%stress(1), p / 8.0_dp), garble(pt%stress(2), p / 8.0_dp)]
-      stran = [garble(stran(1), p / 8.0_dp), garble(stran(2), p / 8.0_dp)]
-      dstran = [0.02_dp * (rng_uniform(rng) - 0.5_dp), 0.05_dp * (rng_uniform(rng) - 0.5_dp)]
-      dstran = [garble(dstran(1), p / 4.0_dp), garble(dstran(2), p / 4.0_dp)]
+      do k = 1, 6
+        pt%stress(k) = garble(pt%stress(k), p / 8.0_dp)
+        pt%stran(k) = garble(pt%stran(k), p / 8.0_dp)
+        dstran(k) = garble(0.1_dp * (rng_uniform(rng) - 0.5_dp) * &
+                           merge(0.2_dp, 1.0_dp / h * 0.05_dp, entry == entry_umat), p / 4.0_dp)
+      end do
+      call garbage_host_arguments(args, ntens, host, p)
+      args_in = args
       before = pt
-      pt%pnewdt = 1.0_dp
-      call call_umat(pt, props(1:n_props), stran, dstran, 1, 1, int(min(call_no, 2000000000_int64)))
-      if (pt%pnewdt < 0.0_dp) then
-        n_rejected = n_rejected + 1
-        if (changed(before, pt)) then
-          n_bad = n_bad + 1
-          write (output_unit, '(a,i0,a)') 'FAIL garbage call ', call_no, &
-            ': rejected but outputs changed'
-        end if
-      else if (.not. changed(before, pt)) then
-        ! untouched: a local failure (PNEWDT 0.5) or a zero increment
-        if (pt%pnewdt < 1.0_dp) n_rejected = n_rejected + 1
-      else if (.not. (all(is_finite_bits(pt%stress)) .and. all(is_finite_bits(pt%ddsdde)) .and. &
-                      all(is_finite_bits(pt%statev)) .and. is_finite_bits(pt%sse) .and. &
-                      is_finite_bits(pt%scd))) then
+      select case (entry)
+      case (entry_umat)
+        call UMAT(pt%stress, pt%statev, args%ddsdde, args%sse, args%spd, args%scd, args%rpl, &
+                  args%ddsddt, args%drplde, args%drpldt, pt%stran, dstran, args%time, &
+                  args%dtime, args%temp, args%dtemp, args%predef, args%dpred, &
+                  trim(args%cmname), args%ndi, args%nshr, ntens, nstatv, props(5:4 + n_props), &
+                  n_props, args%coords, args%drot, args%pnewdt, args%celent, args%dfgrd0, &
+                  args%dfgrd1, args%noel, args%npt, args%layer, args%kspt, args%jstep, args%kinc)
+        owned = min(nstatv, umat_nstatv)
+      case default
+        call interlock_umat_layer_point(pt%stress, pt%statev, args%ddsdde, args%sse, args%spd, &
+          args%scd, args%rpl, args%ddsddt, args%drplde, args%drpldt, pt%stran, dstran, &
+          args%time, args%dtime, args%temp, args%dtemp, args%predef, args%dpred, &
+          trim(args%cmname), args%ndi, args%nshr, ntens, nstatv, props, 4 + n_props, &
+          args%coords, args%drot, args%pnewdt, args%celent, args%dfgrd0, args%dfgrd1, &
+          args%noel, args%npt, args%layer, args%kspt, args%jstep, args%kinc, host)
+        owned = min(nstatv, umat_nstatv)
+        if (nstatv >= umat_nstatv + layer_nstatv_extra) owned = umat_nstatv + layer_nstatv_extra
+      end select
+      n_calls(entry) = n_calls(entry) + 1
+      touched = .not. (all(same_bits(pt%stress(1:ntens), before%stress(1:ntens))) .and. &
+                       all(same_bits(pt%statev(1:owned), before%statev(1:owned))) .and. &
+                       outputs_same(args, args_in, ntens))
+      if (.not. pnewdt_admissible(args_in%pnewdt, args%pnewdt, host)) then
         n_bad = n_bad + 1
-        write (output_unit, '(a,i0,a)') 'FAIL garbage call ', call_no, ': accepted, not finite'
-        write (output_unit, '(a,19es10.2)') '  PROPS ', props(1:n_props)
-        write (output_unit, '(a,22es10.2)') '  STATEV in ', before%statev
-        write (output_unit, '(a,6es10.2)') '  STRESS, STRAN, DSTRAN ', before%stress, stran, dstran
+        write (output_unit, '(a,i0,a,es12.4,a,es12.4)') 'FAIL garbage call ', call_no, &
+          ': PNEWDT in ', args_in%pnewdt, ', out ', args%pnewdt
+      end if
+      if (.not. touched) then
+        if (.not. same_bits(args%pnewdt, args_in%pnewdt)) n_rejected(entry) = n_rejected(entry) + 1
+      else if (.not. (all(is_finite_bits(pt%stress(1:ntens))) .and. &
+                      all(is_finite_bits(pt%statev(1:owned))) .and. &
+                      outputs_finite(args, ntens))) then
+        n_bad = n_bad + 1
+        write (output_unit, '(a,i0,a,i0,a,i0,a,i0)') 'FAIL garbage call ', call_no, &
+          ': accepted, not finite; entry ', entry, ', host ', host, ', NTENS ', ntens
+        write (output_unit, '(a,4l2)') '  not finite: STRESS, STATEV, the others ', &
+          .not. all(is_finite_bits(pt%stress(1:ntens))), &
+          .not. all(is_finite_bits(pt%statev(1:owned))), .not. outputs_finite(args, ntens)
+        write (output_unit, '(a,24es10.2)') '  PROPS ', props(1:4 + n_props)
+        write (output_unit, '(a,6es10.2)') '  STRAN ', pt%stran(1:ntens)
+        write (output_unit, '(a,6es10.2)') '  DSTRAN ', dstran(1:ntens)
+      else if (.not. same_bits(args%pnewdt, args_in%pnewdt) .and. host == host_calculix) then
+        continue            ! an accuracy request: the host discards the attempt
       else
         ! accepted: the host goes on from the end of the increment
-        stran = stran + dstran
+        pt%stran(1:ntens) = pt%stran(1:ntens) + dstran(1:ntens)
+        points(which) = pt
       end if
-      if (.not. all(is_finite_bits(stran))) then
-        stran = 0.0_dp
-      else if (.not. all(abs(stran) <= 1.0e3_dp)) then
-        stran = 0.0_dp
+      if (.not. all(is_finite_bits(points(which)%stran))) then
+        points(which)%stran = 0.0_dp
+      else if (.not. all(abs(points(which)%stran) <= 1.0e3_dp)) then
+        points(which)%stran = 0.0_dp
       end if
     end do
     write (output_unit, '(a,i0,a,i0,a,i0,a,i0)') 'interlock-fuzz --garbage: seed ', seed, ', ', &
-      n_garbage, ' UMAT calls, ', n_rejected, ' rejected, failures ', n_bad
+      n_calls(entry_umat), ' UMAT calls, ', n_rejected(entry_umat), ' rejected, failures ', n_bad
+    write (output_unit, '(a,i0,a,i0,a)') '  thin layer (NTENS 6 and 4, Abaqus and CalculiX): ', &
+      n_calls(entry_layer), ' calls, ', n_rejected(entry_layer), ' rejected'
     if (n_bad > 0) error stop 1
+
   end subroutine garbage_calls
 
-  !> Whether any output of the UMAT differs (bitwise; NaN equals NaN) between a and b.
-  logical function changed(a, b)
-    type(umat_point_t), intent(in) :: a, b
-    changed = .not. (all(same_bits(a%stress, b%stress)) .and. all(same_bits(a%statev, b%statev)) &
-                     .and. all(same_bits(a%ddsdde, b%ddsdde)) .and. same_bits(a%sse, b%sse) &
-                     .and. same_bits(a%scd, b%scd))
-  end function changed
-
+  !> a and b have the same bits (NaN equals NaN; no comparison of a NaN).
   elemental logical function same_bits(x, y)
     real(dp), intent(in) :: x, y
     same_bits = transfer(x, 1_int64) == transfer(y, 1_int64)
   end function same_bits
+
+  !> Every argument of a UMAT call that is not the material point's own (host side).
+  subroutine garbage_host_arguments(a, ntens, host, p)
+    type(host_arguments_t), intent(out) :: a
+    integer, intent(in) :: ntens, host
+    real(dp), intent(in) :: p
+    character(len=*), parameter :: names(5) = [character(len=12) :: 'FUZZ', 'FUZZ_B', '', &
+      'fuzz c', 'FUZZ' // achar(9) // 'D']
+    integer :: i, j
+    a%ddsdde = 7.5_dp
+    a%sse = rng_uniform(rng)
+    a%spd = 0.0_dp
+    a%scd = rng_uniform(rng)
+    a%rpl = 0.0_dp
+    a%ddsddt = 0.0_dp
+    a%drplde = 0.0_dp
+    a%drpldt = 0.0_dp
+    a%pnewdt = merge(-1.0_dp, 1.0_dp, host == host_calculix)
+    a%time = [rng_uniform(rng), 1.0_dp + rng_uniform(rng)]
+    a%dtime = 0.1_dp
+    a%temp = 20.0_dp
+    a%dtemp = 0.0_dp
+    a%predef = 0.0_dp
+    a%dpred = 0.0_dp
+    a%coords = [rng_uniform(rng), rng_uniform(rng), rng_uniform(rng)]
+    a%drot = 0.0_dp
+    do i = 1, 3
+      a%drot(i, i) = 1.0_dp
+    end do
+    a%celent = 1.0_dp
+    a%dfgrd0 = a%drot
+    a%dfgrd1 = a%drot
+    ! (the reals now and then garbage; what the host may leave uninitialised, as ccx does
+    ! with LAYER, KSPT, CELENT, PREDEF and DPRED, most often)
+    do j = 1, ntens
+      do i = 1, ntens
+        a%ddsdde(i + ntens * (j - 1)) = garble(a%ddsdde(i + ntens * (j - 1)), p)
+      end do
+      a%ddsddt(j) = garble(a%ddsddt(j), p)
+      a%drplde(j) = garble(a%drplde(j), p)
+    end do
+    a%sse = garble(a%sse, p)
+    a%spd = garble(a%spd, p)
+    a%scd = garble(a%scd, p)
+    a%rpl = garble(a%rpl, p)
+    a%drpldt = garble(a%drpldt, p)
+    a%pnewdt = garble(a%pnewdt, p / 2.0_dp)
+    a%time = [garble(a%time(1), p), garble(a%time(2), p)]
+    a%dtime = garble(a%dtime, p)
+    a%temp = garble(a%temp, p)
+    a%dtemp = garble(a%dtemp, p)
+    do i = 1, size(a%predef)
+      a%predef(i) = garble(a%predef(i), 5.0_dp * p)
+      a%dpred(i) = garble(a%dpred(i), 5.0_dp * p)
+    end do
+    do i = 1, 3
+      a%coords(i) = garble(a%coords(i), p)
+      do j = 1, 3
+        a%drot(i, j) = garble(a%drot(i, j), p)
+        a%dfgrd0(i, j) = garble(a%dfgrd0(i, j), p)
+        a%dfgrd1(i, j) = garble(a%dfgrd1(i, j), p)
+      end do
+    end do
+    a%celent = garble(a%celent, 5.0_dp * p)
+    a%ndi = garble_integer(3, p)
+    a%nshr = garble_integer(ntens - 3, p)
+    a%noel = garble_integer(rng_int(rng, 1, 100000), p)
+    a%npt = garble_integer(rng_int(rng, 1, 8), p)
+    a%layer = garble_integer(1, 5.0_dp * p)
+    a%kspt = garble_integer(1, 5.0_dp * p)
+    a%jstep = [garble_integer(1, p), garble_integer(1, p), garble_integer(0, p), &
+               garble_integer(0, p)]
+    a%kinc = garble_integer(rng_int(rng, 1, 1000), p)
+    a%cmname = names(1)
+    if (rng_uniform(rng) < p) a%cmname = names(rng_int(rng, 1, size(names)))
+  end subroutine garbage_host_arguments
+
+  !> An integer argument that held `n`: usually n, sometimes garbage.
+  integer function garble_integer(n, p) result(m)
+    integer, intent(in) :: n
+    real(dp), intent(in) :: p
+    m = n
+    if (rng_uniform(rng) >= p) return
+    select case (rng_int(rng, 1, 5))
+    case (1)
+      m = huge(0)
+    case (2)
+      m = -huge(0) - 1
+    case (3)
+      m = 0
+    case (4)
+      m = -1
+    case default
+      m = rng_int(rng, -1000000, 1000000)
+    end select
+  end function garble_integer
+
+  !> The outputs in `a` (DDSDDE, the energies, the thermal ones) bitwise those of `b`.
+  logical function outputs_same(a, b, ntens)
+    type(host_arguments_t), intent(in) :: a, b
+    integer, intent(in) :: ntens
+    outputs_same = all(same_bits(a%ddsdde(1:ntens**2), b%ddsdde(1:ntens**2))) .and. &
+      all(same_bits([a%sse, a%spd, a%scd, a%rpl, a%drpldt], &
+                    [b%sse, b%spd, b%scd, b%rpl, b%drpldt])) .and. &
+      all(same_bits(a%ddsddt(1:ntens), b%ddsddt(1:ntens))) .and. &
+      all(same_bits(a%drplde(1:ntens), b%drplde(1:ntens)))
+  end function outputs_same
+
+  logical function outputs_finite(a, ntens)
+    type(host_arguments_t), intent(in) :: a
+    integer, intent(in) :: ntens
+    outputs_finite = all(is_finite_bits(a%ddsdde(1:ntens**2))) .and. &
+      all(is_finite_bits([a%sse, a%spd, a%scd, a%rpl, a%drpldt])) .and. &
+      all(is_finite_bits(a%ddsddt(1:ntens))) .and. all(is_finite_bits(a%drplde(1:ntens)))
+  end function outputs_finite
+
+  !> PNEWDT on return is the value that came in, or a request of the host's convention.
+  logical function pnewdt_admissible(p_in, p_out, host)
+    real(dp), intent(in) :: p_in, p_out
+    integer, intent(in) :: host
+    pnewdt_admissible = same_bits(p_in, p_out)
+    if (pnewdt_admissible .or. .not. is_finite_bits(p_out)) return
+    if (host == host_calculix) then
+      pnewdt_admissible = p_out > 0.0_dp .and. p_out < 1.0_dp
+    else
+      pnewdt_admissible = p_out < 1.0_dp
+    end if
+  end function pnewdt_admissible
 
   !> A random admissible material and solver.
   subroutine random_material(mat, solver)

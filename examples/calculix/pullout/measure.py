@@ -7,7 +7,8 @@ prints one markdown table (convergence, forces, cost) and the force differences 
 Sets (each a list of runs of run.py; every run in DIR/<set>/<variant>):
   tangent   coarse and full mesh, the exact tangent (ccx keeps its symmetric part) against the
             symmetric option (layer PROPS 24 = interlock PROPS 20 = 2)
-  bounds    coarse mesh, the UMAT's accuracy bounds (PROPS 13, 14 = 0.25, 1 deg) on and off
+  bounds    coarse and full mesh, the UMAT's accuracy bounds (PROPS 13, 14 = 0.25, 1 deg) on
+            and off
   radius    coarse mesh, block radius 500 mm (the default) against 1000 mm and 250 mm
   layer     coarse mesh, the layer's e_other 0.01 MPa (the default) against 1 and 2621 MPa
   concrete  coarse mesh, Table 3's E_c = 2621 MPa against ten times that
@@ -40,6 +41,10 @@ SETS = {
                                              "--max-damage-increment", "0.25",
                                              "--max-angle-increment", "1"]),
         ("coarse, bounds off", ["--element", "10", "--tangent", "2"] + OFF),
+        ("full, bounds on (0.25, 1 deg)", ["--element", "5", "--tangent", "2",
+                                           "--max-damage-increment", "0.25",
+                                           "--max-angle-increment", "1"]),
+        ("full, bounds off", ["--element", "5", "--tangent", "2"] + OFF),
     ],
     "radius": [
         ("coarse, R = 500 mm", ["--element", "10", "--radius", "500"] + OFF),
