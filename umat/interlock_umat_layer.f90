@@ -62,7 +62,7 @@ module interlock_umat_layer
   use, intrinsic :: iso_fortran_env, only: int64
   use interlock, only: dp, message_len, format_integer, format_real, umat_nstatv, &
       n_required_properties, n_properties, separation_bound, is_finite_bits
-  use interlock_material_table, only: key_in_range
+  use interlock_numbers, only: key_in_range
   use interlock_umat_body, only: interlock_umat_cohesive, diverged_iteration_message, &
       pnewdt_diverged
   use interlock_umat_messages, only: umat_say, said_argument, said_start_strain, &

@@ -79,6 +79,7 @@ contains
     integer :: i, n, ios
     character(len=:), allocatable :: arg, val
     deck_dir = '.'
+    val = ''
     n = command_argument_count()
     i = 1
     do while (i <= n)
