@@ -22,13 +22,7 @@ foreach(stem tangent closed_forms limits invariants kinematics damage friction w
 endforeach()
 
 # The README's example, built and run (examples/).
-add_executable(core_readme_example ${PROJECT_SOURCE_DIR}/examples/readme_example.f90)
-target_link_libraries(core_readme_example PRIVATE interlock::interlock)
-target_compile_options(core_readme_example PRIVATE ${INTERLOCK_FFLAGS})
-set_target_properties(core_readme_example PROPERTIES
-  Fortran_MODULE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/mod_readme_example)
-add_test(NAME core_readme_example COMMAND core_readme_example)
-set_tests_properties(core_readme_example PROPERTIES LABELS core)
+interlock_add_suite(core_readme_example core ${PROJECT_SOURCE_DIR}/examples/readme_example.f90)
 
 # The bench (docs/bench.md), on a tiny setting: it does not time itself here. interlock-bench
 # exits non-zero when an update or the Newton iteration on s_N fails on a non-coarse step

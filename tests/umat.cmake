@@ -96,13 +96,7 @@ endif()
 # --- The symmetric tangent for hosts that symmetrize (PROPS 20 tangent = 2): the interface
 #     alone under traction control, Newton with the exact tangent, its symmetric part, the
 #     library's symmetric tangent and two other candidates (a measurement: docs/calculix.md).
-add_executable(umat_tangent_newton tangent_newton.f90)
-target_link_libraries(umat_tangent_newton PRIVATE interlock::interlock)
-target_compile_options(umat_tangent_newton PRIVATE ${INTERLOCK_FFLAGS})
-set_target_properties(umat_tangent_newton PROPERTIES
-  Fortran_MODULE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/mod_tangent_newton)
-add_test(NAME umat_tangent_newton COMMAND umat_tangent_newton)
-set_tests_properties(umat_tangent_newton PROPERTIES LABELS umat)
+interlock_add_suite(umat_tangent_newton umat tangent_newton.f90)
 
 # --- The thin-layer entry for hosts without cohesive elements (CalculiX).
 interlock_add_pfunit_suite(umat_layer LABEL umat TEST_SOURCES test_umat_layer.pf
