@@ -77,7 +77,7 @@ set_tests_properties(umat_install PROPERTIES TIMEOUT 300 LABELS umat)
 #     and stops with the same reason.
 interlock_add_suite(umat_replay umat test_umat_interface.f90 test_umat_replay.f90)
 target_link_libraries(umat_replay PRIVATE interlock_umat)
-set(umat_replay_dir ${CMAKE_CURRENT_BINARY_DIR}/umat_replay)
+set(umat_replay_dir ${CMAKE_CURRENT_BINARY_DIR}/umat_replay_decks)
 file(MAKE_DIRECTORY ${umat_replay_dir})
 set_tests_properties(umat_replay PROPERTIES
   ENVIRONMENT "INTERLOCK_REPLAY_DIR=${umat_replay_dir}"
