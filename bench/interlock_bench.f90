@@ -2,14 +2,15 @@
 !>
 !> 1. Cost per call of interlock_update (traction + tangent) for each effect set and scheme,
 !>    over precomputed separation histories, as the median of interleaved repetitions, and the
-!>    same as a ratio to a minimal bilinear cohesive law timed in the same run.
+!>    same as a ratio to a minimal bilinear cohesive law timed in the same run; the same
+!>    histories through the external UMAT against the update it wraps.
 !> 2. Work-precision of every scheme/tolerance on the paper's Fig. 11, Fig. 12 and granite
 !>    scenes at constant normal traction: error against a converged reference versus CPU time,
 !>    the observed order, and the CPU time each scheme needs for a given error.
 !>
 !> Usage: interlock-bench --out DIR [--quick] [--only cost|precision] [--target ERR]
-!> Writes DIR/cost.csv, DIR/work_precision.csv, DIR/reference.csv and DIR/wp_summary.csv (DIR
-!> is required: nothing is written into the working folder unasked). A usage error prints the
+!> Writes DIR/cost.csv, DIR/umat_cost.csv, DIR/work_precision.csv, DIR/reference.csv and
+!> DIR/wp_summary.csv (DIR is required: nothing is written into the working folder unasked). A usage error prints the
 !> usage on stderr and exits with status 2; --help prints it on stdout (status 0).
 program interlock_bench
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
@@ -181,13 +182,14 @@ contains
       '[--only cost|precision] [--target ERR]'
     write (unit, '(a)') '       interlock-bench --profile SET SCHEME PASSES [TOL]  ' // &
       '(one cost configuration only, for valgrind/gprof: SET 0 bilinear, 1..5 effect sets; ' // &
-      'SCHEME 1 explicit, 2 implicit; TOL substepping tolerance, default 0; 3 x 4000-point ' // &
+      'SCHEME 1 explicit, 2 implicit, 3 trapezoidal; TOL substepping tolerance, default 0; 3 x 4000-point ' // &
       'histories; see bench/profile_updates.py); with --umat: through the UMAT, ' // &
       'with --umat-floor: the floor of the UMAT''s overhead'
     write (unit, '(a)') '       interlock-bench --history SCENE SCHEME TOL N  ' // &
-      '(one run of a scene as CSV on stdout; SCENE fig11|fig12|granite, SCHEME explicit|implicit)'
+      '(one run of a scene as CSV on stdout; SCENE fig11|fig12|granite, ' // &
+      'SCHEME explicit|implicit|trapezoidal)'
     write (unit, '(a)') '       interlock-bench --help | --version'
-    write (unit, '(a)') '  writes DIR/cost.csv, DIR/work_precision.csv, ' // &
+    write (unit, '(a)') '  writes DIR/cost.csv, DIR/umat_cost.csv, DIR/work_precision.csv, ' // &
       'DIR/reference.csv, DIR/wp_summary.csv (DIR must exist)'
     write (unit, '(a)') '  exit status: 0 done, 1 a problem found (see the output), 2 a usage error'
     if (len_trim(message) > 0) call exit_program(2)
@@ -438,7 +440,7 @@ contains
       verdict(ns(2 * n_effect_sets - 1) / ns(0) <= 4.0_dp) // ' (' // &
       fmt_ratio(ns(2 * n_effect_sets - 1) / ns(0)) // '; its floor alone ' // &
       fmt_ratio(ns(floor_cfg) / ns(0)) // ')'
-    ! (issue 13) the full model's explicit update against its floor, in the same run
+    ! The full model's explicit update against its floor, in the same run.
     write (output_unit, '(a)') 'targets: full model explicit <= 1.5 x its floor: ' // &
       verdict(ns(2 * n_effect_sets - 1) / ns(floor_cfg) <= 1.5_dp) // ' (' // &
       fmt_ratio(ns(2 * n_effect_sets - 1) / ns(floor_cfg)) // ')'
@@ -512,7 +514,7 @@ contains
     end do
   end subroutine time_umat_rows
 
-  !> The UMAT table (stdout and DIR/umat_cost.csv) and the verdicts on the issue's targets:
+  !> The UMAT table (stdout and DIR/umat_cost.csv) and the verdicts on the cost targets:
   !> overhead (UMAT call - update) <= 5 bilinear calls for every row, full model's UMAT call
   !> <= 1.5 x its update.
   subroutine report_umat_rows(um, ns_bilinear, calls)

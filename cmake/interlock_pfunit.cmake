@@ -91,7 +91,7 @@ if(NOT PFUNIT_FOUND)
   set(pfunit_build_dir ${PROJECT_BINARY_DIR}/_deps/pfunit-build)
   set(pfunit_log ${PROJECT_BINARY_DIR}/_deps/pfunit-build.log)
   message(STATUS "pFUnit: configure, build and install into ${interlock_pfunit_prefix} "
-    "(once per build tree; 250 s of CPU time with gfortran 12; log ${pfunit_log})")
+    "(once per build tree, a few minutes; log ${pfunit_log})")
   string(TIMESTAMP pfunit_start "%s")
   execute_process(
     COMMAND ${CMAKE_COMMAND} -S ${pfunit_source_dir} -B ${pfunit_build_dir} -G ${CMAKE_GENERATOR}

@@ -38,12 +38,25 @@ def fmt_err(x):
 def markdown(d):
     """The tables of docs/bench.md from one run's CSV files."""
     cost = read_csv(os.path.join(d, "cost.csv"))
-    print("| effect set | scheme | substep tol | ns/call (median) | min..max | x bilinear |")
-    print("|---|---|---|---:|---:|---:|")
+    print("| effect set | scheme | substep tol | ns/call (median) | min..max | x bilinear "
+          "| sub-increments |")
+    print("|---|---|---|---:|---:|---:|---:|")
     for r in cost:
         print(f"| {r['effect_set']} | {r['scheme']} | {r['substep_tol']} | "
               f"{float(r['ns_per_call']):.1f} | {float(r['ns_min']):.1f}.."
-              f"{float(r['ns_max']):.1f} | {float(r['ratio_to_bilinear']):.2f} |")
+              f"{float(r['ns_max']):.1f} | {float(r['ratio_to_bilinear']):.2f} | "
+              f"{float(r['mean_substeps']):.2f} |")
+    umat = os.path.join(d, "umat_cost.csv")
+    if os.path.exists(umat):
+        print("\n| effect set | scheme | UMAT ns | update ns | overhead ns | x bilinear "
+              "| UMAT / update | floor ns | floor x bilinear | PNEWDT < 1 |")
+        print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+        for r in read_csv(umat):
+            print(f"| {r['effect_set']} | {r['scheme']} | {float(r['umat_ns']):.1f} | "
+                  f"{float(r['update_ns']):.1f} | {float(r['overhead_ns']):.1f} | "
+                  f"{float(r['overhead_bilinear_calls']):.2f} | "
+                  f"{float(r['umat_over_update']):.2f} | {float(r['floor_ns']):.1f} | "
+                  f"{float(r['floor_bilinear_calls']):.2f} | {r['pnewdt_cuts']} |")
     rows = read_csv(os.path.join(d, "work_precision.csv"))
     summ = read_csv(os.path.join(d, "wp_summary.csv"))
     scenes = []

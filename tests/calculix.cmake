@@ -1,6 +1,6 @@
-# The CalculiX area: only when a ccx binary with interlock's umat is given,
+# CalculiX (label calculix): only when a ccx binary with interlock's umat is given,
 # -DINTERLOCK_CCX=<path> (scripts/build_calculix.sh prints it; scripts/test.sh passes it to the
-# Release build). Label `calculix`.
+# Release build).
 #  - direct shear in C3D8, CPE4 and CAX4: ccx's layer tractions and state per increment equal
 #    interlock-history's replay of the same separations to 1e-5 (relative), for the exact
 #    tangent (1) and the symmetric one (2); the runs' iterations and residuals are written
@@ -13,15 +13,19 @@ if(INTERLOCK_CCX AND TARGET interlock-history)
   endif()
   set(calculix_work ${CMAKE_CURRENT_BINARY_DIR}/calculix)
   file(MAKE_DIRECTORY ${calculix_work})
-  # A binary made by scripts/build_calculix.sh is relinked first when our sources changed
-  # (seconds; nothing is installed or compiled from ccx again).
+  # A binary made by scripts/build_calculix.sh (its folder holds ccx_without_umat.a) is
+  # relinked first when our sources changed (seconds; nothing is installed or compiled from ccx
+  # again); another ccx is used as given.
   get_filename_component(calculix_build ${INTERLOCK_CCX} DIRECTORY)
   get_filename_component(calculix_build ${calculix_build} DIRECTORY)
   if(EXISTS ${calculix_build}/ccx_without_umat.a)
-    add_test(NAME calculix_relink
+    add_test(NAME calculix_build
       COMMAND bash ${PROJECT_SOURCE_DIR}/scripts/build_calculix.sh ${calculix_build})
-    set_tests_properties(calculix_relink PROPERTIES LABELS calculix TIMEOUT 600
+    set_tests_properties(calculix_build PROPERTIES LABELS calculix TIMEOUT 600
       FIXTURES_SETUP calculix_binary)
+  else()
+    message(STATUS "INTERLOCK_CCX = ${INTERLOCK_CCX} is not from scripts/build_calculix.sh: "
+      "it is used as given (not relinked with this tree's umat)")
   endif()
   foreach(element C3D8 CPE4 CAX4)
     foreach(tangent 1 2)

@@ -10,6 +10,6 @@ add_test(NAME calculix_pullout_coarse
           ${INTERLOCK_CCX} ${CMAKE_CURRENT_BINARY_DIR}/calculix_pullout_coarse)
 set_tests_properties(calculix_pullout_coarse PROPERTIES LABELS calculix TIMEOUT 900
   PROCESSORS 2)
-if(TEST calculix_relink)
+if(TEST calculix_build)
   set_tests_properties(calculix_pullout_coarse PROPERTIES FIXTURES_REQUIRED calculix_binary)
 endif()

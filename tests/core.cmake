@@ -1,5 +1,8 @@
-# Suites of the core library (issue "The interface law as a library", item 7), as pFUnit tests.
-# Shared helpers (materials of the paper, drivers, finite differences, a portable RNG).
+# The core library (label core): its pFUnit suites, one per .pf file (test_<module>.pf for a
+# mechanism's module), the README's example, and the bench's smoke runs.
+
+# Shared helpers of the suites (materials of the paper, drivers, finite differences, a portable
+# RNG).
 add_library(interlock_core_testlib STATIC test_core_support.f90)
 target_link_libraries(interlock_core_testlib PUBLIC interlock::interlock PFUNIT::funit)
 target_compile_options(interlock_core_testlib PRIVATE ${INTERLOCK_FFLAGS})
@@ -7,16 +10,47 @@ set_target_properties(interlock_core_testlib PROPERTIES
   Fortran_MODULE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/mod_core_testlib)
 target_include_directories(interlock_core_testlib PUBLIC ${CMAKE_CURRENT_BINARY_DIR}/mod_core_testlib)
 
-function(interlock_add_core_suite name)
-  interlock_add_pfunit_suite(${name} TEST_SOURCES ${ARGN}
-    LINK_LIBRARIES interlock_core_testlib LABELS core)
+# interlock_add_core_suite(stem): tests/test_<stem>.pf as the CTest core_<stem>.
+function(interlock_add_core_suite stem)
+  interlock_add_pfunit_suite(core_${stem} LABEL core TEST_SOURCES test_${stem}.pf
+    LINK_LIBRARIES interlock_core_testlib)
 endfunction()
 
-interlock_add_core_suite(core_tangent test_tangent.pf)
-interlock_add_core_suite(core_closed_forms test_closed_forms.pf)
-interlock_add_core_suite(core_limits test_limits.pf)
-interlock_add_core_suite(core_invariants test_invariants.pf)
-interlock_add_core_suite(core_mechanisms test_kinematics.pf test_damage.pf test_friction.pf
-  test_wear.pf test_geometry.pf)
-interlock_add_core_suite(core_kernels test_kernels.pf)
-interlock_add_core_suite(core_update_input test_update_input.pf)
+foreach(stem tangent closed_forms limits invariants kinematics damage friction wear geometry
+        kernels update_input)
+  interlock_add_core_suite(${stem})
+endforeach()
+
+# The layer check: every module uses only its own folder's and lower layers' modules, the
+# general update path not the kernels, and every source file is built (docs/architecture.md).
+add_test(NAME core_layers
+  COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_layers.py ${PROJECT_SOURCE_DIR})
+set_tests_properties(core_layers PROPERTIES LABELS core)
+
+# The README's example, built and run (examples/).
+interlock_add_suite(core_readme_example core ${PROJECT_SOURCE_DIR}/examples/readme_example.f90)
+
+# The bench (docs/bench.md), on a tiny setting: it does not time itself here. interlock-bench
+# exits non-zero when an update or the Newton iteration on s_N fails on a non-coarse step
+# count, when the bilinear baseline does not reproduce the damage-only set, or when the
+# work-precision reference is not converged. (bench/ is added after tests/: test the option,
+# not the target.)
+if(INTERLOCK_BUILD_BENCH)
+  set(bench_out ${CMAKE_CURRENT_BINARY_DIR}/bench_smoke)
+  file(MAKE_DIRECTORY ${bench_out})
+  add_test(NAME core_bench_smoke COMMAND interlock-bench --quick --out ${bench_out})
+  set_tests_properties(core_bench_smoke PROPERTIES TIMEOUT 120 LABELS core
+    FIXTURES_SETUP bench_smoke_csv)
+  # The profiler mode (bench/profile_updates.py runs it under callgrind), here with substepping
+  # (full model, implicit, substep_tol 1e-3, one pass = 12000 updates): no update may fail.
+  add_test(NAME core_bench_profile_substep COMMAND interlock-bench --profile 5 2 1 1e-3)
+  set_tests_properties(core_bench_profile_substep PROPERTIES TIMEOUT 120 LABELS core
+    PASS_REGULAR_EXPRESSION "calls: 12000; checksum [^;]+; failed updates: 0[\r\n]")
+  # The tables of docs/bench.md are printed from the CSV files by the plot script.
+  add_test(NAME core_plot_work_precision_markdown
+    COMMAND ${INTERLOCK_TEST_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/plot_work_precision.py
+            ${bench_out} --markdown)
+  set_tests_properties(core_plot_work_precision_markdown PROPERTIES TIMEOUT 60 LABELS core
+    FIXTURES_REQUIRED bench_smoke_csv
+    PASS_REGULAR_EXPRESSION "\\| \\+wear \\(full model\\) \\| implicit \\| none \\|.*\\*granite\\*.*Observed order")
+endif()

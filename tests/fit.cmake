@@ -2,24 +2,24 @@
 # interlock-history (granite and the Table 5 concrete-bar set; without noise to 1e-6, with 2 %
 # noise within two standard errors), the staged granite deck of inputs/fit (section 4.1.5's
 # order; data generated at test time), and the bad fit decks of tests/data/bad_fit_decks
-# (NAME.nml + NAME.expected, checked by the history's bad-deck runner); an optimum on the law's
+# (NAME.nml + NAME.expected, checked by tests/test_bad_decks.py); an optimum on the law's
 # limit theta_f = theta_0, inputs read as written, no file when the fitted deck cannot be
 # written, the discretization check of the staged deck, and the unit suites of the solver and
-# the CSV reader.
+# the CSV reader. Label fit. (Without INTERLOCK_BUILD_PROGRAMS there is no interlock-fit and
+# nothing to test here.)
 if(NOT TARGET interlock-fit)
   return()
 endif()
-set(INTERLOCK_FIT_PYTHON /usr/bin/python3)
 foreach(set granite table5)
   foreach(noise 0 0.02)
     add_test(NAME fit_recovery_${set}_noise_${noise}
-      COMMAND ${INTERLOCK_FIT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_fit.py
+      COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_fit.py
               $<TARGET_FILE:interlock-fit> $<TARGET_FILE:interlock-history> recovery ${set} ${noise})
     set_tests_properties(fit_recovery_${set}_noise_${noise} PROPERTIES LABELS fit TIMEOUT 300)
   endforeach()
 endforeach()
 add_test(NAME fit_staged_granite
-  COMMAND ${INTERLOCK_FIT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_fit.py
+  COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_fit.py
           $<TARGET_FILE:interlock-fit> $<TARGET_FILE:interlock-history> staged
           ${PROJECT_SOURCE_DIR}/inputs/fit/granite_staged.nml)
 set_tests_properties(fit_staged_granite PROPERTIES LABELS fit TIMEOUT 300)
@@ -30,17 +30,17 @@ add_test(NAME fit_discretization_granite
 set_tests_properties(fit_discretization_granite PROPERTIES LABELS fit TIMEOUT 600)
 foreach(mode files identifiability coupled inputs deckfail)
   add_test(NAME fit_${mode}
-    COMMAND ${INTERLOCK_FIT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_fit.py
+    COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_fit.py
             $<TARGET_FILE:interlock-fit> $<TARGET_FILE:interlock-history> ${mode})
   set_tests_properties(fit_${mode} PROPERTIES LABELS fit TIMEOUT 300)
 endforeach()
 file(GLOB fit_bad_decks CONFIGURE_DEPENDS ${INTERLOCK_TEST_DATA}/bad_fit_decks/*.expected)
 foreach(expected IN LISTS fit_bad_decks)
   get_filename_component(name ${expected} NAME_WE)
-  add_test(NAME fit_bad_deck_${name}
-    COMMAND ${INTERLOCK_FIT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_bad_decks.py
+  add_test(NAME fit_bad_decks_${name}
+    COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_bad_decks.py
             $<TARGET_FILE:interlock-fit> ${expected})
-  set_tests_properties(fit_bad_deck_${name} PROPERTIES LABELS fit TIMEOUT 120)
+  set_tests_properties(fit_bad_decks_${name} PROPERTIES LABELS fit TIMEOUT 120)
 endforeach()
 # The unit suites of the solver and of the CSV reader (pFUnit).
 interlock_add_pfunit_suite(fit_lm TEST_SOURCES test_lm.pf LINK_LIBRARIES interlock_fit_core

@@ -1,12 +1,12 @@
-# interlock-history (docs/history-output.md): every deck of inputs/ runs and its HDF5 file follows
-# the layout contract (fixture chain "program writes HDF5" -> "Python checks it"); the reference
-# curves of tests/data/reference are reproduced by both schemes; bad decks are rejected
-# (tests/data/bad_decks/NAME.nml + NAME.expected: add a pair, re-run cmake); the mixed-control
-# solver is unit-tested in Fortran.
+# interlock-history (label history; docs/history-output.md): every deck of inputs/ runs and its
+# HDF5 file follows the layout contract (fixture chain "program writes HDF5" -> "Python checks
+# it"); the reference curves of tests/data/reference are reproduced by the explicit and implicit
+# schemes that computed them; bad decks are rejected (tests/data/bad_decks/NAME.nml + NAME.expected: add a pair, re-run cmake); the
+# mixed-control solver is unit-tested in Fortran. (Without INTERLOCK_BUILD_PROGRAMS there is no
+# interlock-history and nothing to test here.)
 if(NOT TARGET interlock-history)
   return()
 endif()
-set(INTERLOCK_HISTORY_PYTHON /usr/bin/python3)
 set(history_out ${CMAKE_CURRENT_BINARY_DIR}/history_out)
 file(MAKE_DIRECTORY ${history_out})
 
@@ -17,16 +17,16 @@ foreach(deck IN LISTS history_decks)
     COMMAND interlock-history --output-dir ${history_out} ${deck})
   set_tests_properties(history_run_${name} PROPERTIES FIXTURES_SETUP history_${name}
     LABELS history)
-  add_test(NAME history_check_${name}
-    COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_history_h5.py
+  add_test(NAME history_h5_${name}
+    COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_history_h5.py
             ${history_out}/${name}.h5)
-  set_tests_properties(history_check_${name} PROPERTIES FIXTURES_REQUIRED history_${name}
+  set_tests_properties(history_h5_${name} PROPERTIES FIXTURES_REQUIRED history_${name}
     LABELS history)
 endforeach()
 
 foreach(figure fig5 fig6 fig7 fig8 fig8_long fig9 fig10 fig11)
   add_test(NAME history_reference_${figure}
-    COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_reference.py
+    COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_reference.py
             $<TARGET_FILE:interlock-history> ${INTERLOCK_TEST_DATA}/reference
             ${CMAKE_CURRENT_BINARY_DIR}/history_reference ${figure})
   set_tests_properties(history_reference_${figure} PROPERTIES LABELS history)
@@ -36,34 +36,35 @@ endforeach()
 # does not exist), and the decks too big or too binary for the source tree, written at configure
 # time by the same script (--generate). One test per deck.
 set(history_generated_decks ${CMAKE_CURRENT_BINARY_DIR}/bad_decks_generated)
-execute_process(COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_bad_decks.py
+execute_process(COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_bad_decks.py
                         --generate ${history_generated_decks}
                 RESULT_VARIABLE history_generate_rc)
 if(NOT history_generate_rc EQUAL 0)
-  message(WARNING "test_history_bad_decks.py --generate failed: the generated bad decks are not tested")
+  message(FATAL_ERROR "test_bad_decks.py --generate ${history_generated_decks} failed "
+    "(${history_generate_rc}): the generated bad decks cannot be tested")
 endif()
 set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
-             ${CMAKE_CURRENT_SOURCE_DIR}/test_history_bad_decks.py)
+             ${CMAKE_CURRENT_SOURCE_DIR}/test_bad_decks.py)
 file(GLOB history_bad_decks CONFIGURE_DEPENDS ${INTERLOCK_TEST_DATA}/bad_decks/*.expected)
 file(GLOB history_bad_decks_generated ${history_generated_decks}/*.expected)
 foreach(expected IN LISTS history_bad_decks history_bad_decks_generated)
   get_filename_component(name ${expected} NAME_WE)
-  add_test(NAME history_bad_deck_${name}
-    COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_bad_decks.py
+  add_test(NAME history_bad_decks_${name}
+    COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_bad_decks.py
             $<TARGET_FILE:interlock-history> ${expected})
-  set_tests_properties(history_bad_deck_${name} PROPERTIES LABELS history TIMEOUT 120)
+  set_tests_properties(history_bad_decks_${name} PROPERTIES LABELS history TIMEOUT 120)
 endforeach()
 
 # Windows line ends (CR LF) are accepted: the same results as the LF deck.
-add_test(NAME history_crlf_deck
-  COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_bad_decks.py --crlf
+add_test(NAME history_bad_decks_crlf
+  COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_bad_decks.py --crlf
           $<TARGET_FILE:interlock-history> ${PROJECT_SOURCE_DIR}/inputs/fig6.nml)
-set_tests_properties(history_crlf_deck PROPERTIES LABELS history)
+set_tests_properties(history_bad_decks_crlf PROPERTIES LABELS history)
 
 # Mixed control under stress: tiny H_N, eta -> 1, tiny zeta0, huge steps, both schemes, with and
 # without substepping, slip under constant sigma_N and both components traction-driven.
 add_test(NAME history_stress
-  COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_stress.py
+  COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_stress.py
           $<TARGET_FILE:interlock-history> ${CMAKE_CURRENT_BINARY_DIR}/history_stress)
 set_tests_properties(history_stress PROPERTIES LABELS history TIMEOUT 300)
 
@@ -75,7 +76,7 @@ set_tests_properties(history_stress PROPERTIES LABELS history TIMEOUT 300)
 # slide or wear is warned about.
 foreach(mode wear nowear stopped preload jumps)
   add_test(NAME history_extrapolate_${mode}
-    COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_extrapolate.py
+    COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_extrapolate.py
             $<TARGET_FILE:interlock-history> ${INTERLOCK_TEST_DATA}
             ${CMAKE_CURRENT_BINARY_DIR}/history_extrapolate_${mode} ${mode})
   set_tests_properties(history_extrapolate_${mode} PROPERTIES LABELS history TIMEOUT 300)
@@ -85,10 +86,10 @@ add_test(NAME history_run_fig12_extrapolated
           ${INTERLOCK_TEST_DATA}/history/fig12_extrapolated.nml)
 set_tests_properties(history_run_fig12_extrapolated PROPERTIES
   FIXTURES_SETUP history_fig12_extrapolated LABELS history)
-add_test(NAME history_check_fig12_extrapolated
-  COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_history_h5.py
+add_test(NAME history_h5_fig12_extrapolated
+  COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_history_h5.py
           ${history_out}/fig12_extrapolated.h5)
-set_tests_properties(history_check_fig12_extrapolated PROPERTIES
+set_tests_properties(history_h5_fig12_extrapolated PROPERTIES
   FIXTURES_REQUIRED history_fig12_extrapolated LABELS history)
 
 # --help documents the options and the exit status.
@@ -96,22 +97,21 @@ add_test(NAME history_help COMMAND interlock-history --help)
 set_tests_properties(history_help PROPERTIES LABELS history
   PASS_REGULAR_EXPRESSION "--output-dir DIR.*--version.*Exit status:.*0  every case.*1  a deck was rejected.*2  every file was written.*iterations <= newton_max_iterations.*extrapolate = .true.*2 u\\(2n\\) - u\\(n\\)")
 
-interlock_add_suite(test_history_mixed_control test_history_mixed_control.f90)
-target_link_libraries(test_history_mixed_control PRIVATE interlock_driver)
-set_tests_properties(test_history_mixed_control PROPERTIES LABELS history)
+interlock_add_suite(history_mixed_control history test_history_mixed_control.f90)
+target_link_libraries(history_mixed_control PRIVATE interlock_driver)
 
 # &output every and store (docs/deck-format.md): thinned rows and chosen datasets are the full
 # run's, bitwise (plain and extrapolated, a sweep, a case that stops); the bad values are in
 # tests/data/bad_decks (every_zero, every_wrong_type, store_nonsense, store_unknown_name).
 foreach(mode every list stopped)
   add_test(NAME history_output_${mode}
-    COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_output.py
+    COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_output.py
             $<TARGET_FILE:interlock-history> ${CMAKE_CURRENT_BINARY_DIR}/history_output_${mode}
             ${mode})
   set_tests_properties(history_output_${mode} PROPERTIES LABELS history TIMEOUT 120)
 endforeach()
 
-# Reliability (README "Reliability", issue 10): the output never replaces the deck or a file that
+# Reliability (README "Reliability"): the output never replaces the deck or a file that
 # is not an earlier result; a full disk (file-size limit; a 64 kB tmpfs where mounting is
 # allowed, else skipped) ends with exit 1 and a message, no crash, no file; every catchable
 # signal that ends the program (SIGPIPE of `| head -1` too) removes the temporary file (SIGKILL
@@ -119,31 +119,31 @@ endforeach()
 # memory below 64 MB (rows streamed to the file).
 foreach(mode overwrite fulldisk tmpfs signals pipe longname memory)
   add_test(NAME history_reliability_${mode}
-    COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_reliability.py
+    COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_reliability.py
             $<TARGET_FILE:interlock-history> ${PROJECT_SOURCE_DIR}/inputs/fig6.nml
             ${CMAKE_CURRENT_BINARY_DIR}/history_reliability_${mode} ${mode})
   set_tests_properties(history_reliability_${mode} PROPERTIES LABELS history TIMEOUT 600
     SKIP_RETURN_CODE 77)
 endforeach()
 
-# Usage errors of the programs (issue 10 item 11): message and usage on stderr, status 2
+# Usage errors of the programs: message and usage on stderr, status 2
 # (interlock-history: 1), no ERROR STOP or backtrace; --help and --version on stdout, status 0;
 # nothing written into the working folder (interlock-bench needs --out).
 # (interlock-fuzz is defined in stability.cmake, after this file: generator expressions resolve
 # it at generate time.)
 set(cli_programs history=$<TARGET_FILE:interlock-history> query=$<TARGET_FILE:interlock_query>
     fuzz=$<TARGET_FILE:interlock-fuzz>)
-if(INTERLOCK_BUILD_BENCH AND EXISTS ${PROJECT_SOURCE_DIR}/bench/CMakeLists.txt)
+if(INTERLOCK_BUILD_BENCH)
   list(APPEND cli_programs bench=$<TARGET_FILE:interlock-bench>)
 endif()
-add_test(NAME cli_usage
-  COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_usage.py
+add_test(NAME history_cli_usage
+  COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_cli_usage.py
           ${CMAKE_CURRENT_BINARY_DIR}/cli_usage ${cli_programs})
-set_tests_properties(cli_usage PROPERTIES LABELS history TIMEOUT 120)
+set_tests_properties(history_cli_usage PROPERTIES LABELS history TIMEOUT 120)
 
 # A UTF-8 byte order mark before the deck is accepted: the same results, the deck attribute is
 # the text without it.
-add_test(NAME history_bom_deck
-  COMMAND ${INTERLOCK_HISTORY_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_bad_decks.py --bom
+add_test(NAME history_bad_decks_bom
+  COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_bad_decks.py --bom
           $<TARGET_FILE:interlock-history> ${PROJECT_SOURCE_DIR}/inputs/fig6.nml)
-set_tests_properties(history_bom_deck PROPERTIES LABELS history)
+set_tests_properties(history_bad_decks_bom PROPERTIES LABELS history)

@@ -1,78 +1,70 @@
-# The UMAT area: the UMAT against the library (serial and threaded), bad input, PNEWDT,
-# the material table, the single-file bundle with a fixed-form legacy driver,
-# interlock-query and docs/material.md, and install + find_package from a consumer project.
+# The UMAT (label umat): the UMAT against the library (serial and threaded), bad input,
+# PNEWDT, the material table, the single-file bundle with a fixed-form legacy driver,
+# interlock-query and docs/material.md, install + find_package from a consumer project, the
+# replay deck of a local failure, the symmetric tangent and the thin-layer entry.
 
 # --- The UMAT against the library; bad input; PNEWDT.
-interlock_add_pfunit_suite(test_umat TEST_SOURCES test_umat.pf OTHER_SOURCES test_umat_interface.f90
-  LINK_LIBRARIES interlock_umat)
-target_include_directories(test_umat PRIVATE ${PROJECT_BINARY_DIR}/umat/mod_umat)
+interlock_add_pfunit_suite(umat LABEL umat TEST_SOURCES test_umat.pf
+  OTHER_SOURCES test_umat_interface.f90 LINK_LIBRARIES interlock_umat)
+target_include_directories(umat PRIVATE ${PROJECT_BINARY_DIR}/umat/mod_umat)
 # The rejections must also be reported: one line each, naming element, point and the property.
 # (A pass regular expression overrides the exit status: pFUnit's "OK" line must be there too.)
-set_tests_properties(test_umat PROPERTIES
-  PASS_REGULAR_EXPRESSION "interlock UMAT: element 7, point 3 \\(material 'TEST', increment 1\\): PROPS\\(4\\): property 'eta' = 0 is inadmissible: admissible 0 < +eta < +1.*NPROPS = 8 is inadmissible.*NSTATV = 21 is inadmissible.*NTENS = 3 is inadmissible.*diverged global iteration: DSTRAN = \\(NaN, 0\\) mm is not finite or takes the end of the increment beyond \\|s_N\\|, \\|s_T\\| <= 1000000 mm.*cut back \\(PNEWDT 0.25\\).*the separation at the start of the increment STRAN = \\(NaN, 0\\) mm is inadmissible: admissible \\|s_N\\|, \\|s_T\\| <= 1000000 mm.*STATEV\\(1\\) = -0.1 \\(damage of plane 1\\) is inadmissible: admissible 0 <= damage <= 1 \\[-\\].*STRESS\\(1\\) = NaN on entry is inadmissible.*OK\n \\(17 tests\\)"
+set_tests_properties(umat PROPERTIES
+  PASS_REGULAR_EXPRESSION "interlock UMAT: element 7, point 3 \\(material 'TEST', increment 1\\): PROPS\\(4\\): property 'eta' = 0 is inadmissible: admissible 0 < +eta < +1.*NPROPS = 8 is inadmissible.*NSTATV = 21 is inadmissible.*NTENS = 3 is inadmissible.*diverged global iteration: DSTRAN = \\(NaN, 0\\) mm is not finite or takes the end of the increment beyond \\|s_N\\|, \\|s_T\\| <= 1000000 mm.*cut back \\(PNEWDT 0.25\\).*the separation at the start of the increment STRAN = \\(NaN, 0\\) mm is inadmissible: admissible \\|s_N\\|, \\|s_T\\| <= 1000000 mm.*STATEV\\(1\\) = -0.1 \\(damage of plane 1\\) is inadmissible: admissible 0 <= damage <= 1 \\[-\\].*STRESS\\(1\\) = NaN on entry is inadmissible.*OK\n \\([0-9]+ tests?\\)"
   FAIL_REGULAR_EXPRESSION "FAIL|ERROR STOP|Encountered 1 or more failures")
 
 # --- The table tells the truth (defaults, PROPS slots, STATEV layout).
-interlock_add_pfunit_suite(test_umat_table TEST_SOURCES test_umat_table.pf)
+interlock_add_pfunit_suite(umat_table LABEL umat TEST_SOURCES test_umat_table.pf)
 
 # --- Many threads at once give the serial numbers.
-find_package(OpenMP COMPONENTS Fortran)
-if(OpenMP_Fortran_FOUND)
-  interlock_add_pfunit_suite(test_umat_omp TEST_SOURCES test_umat_omp.pf
-    OTHER_SOURCES test_umat_interface.f90 LINK_LIBRARIES interlock_umat OpenMP::OpenMP_Fortran)
-  set_tests_properties(test_umat_omp PROPERTIES ENVIRONMENT "OMP_THREAD_LIMIT=4")
-  # gfortran's -fcheck=recursion (part of -fcheck=all) keeps a static flag per procedure, so
-  # a Debug library aborts with "Recursive call to nonrecursive procedure" when two threads
-  # are inside it at once. Until the Debug flags say -fcheck=all,no-recursion, skip.
-  if(CMAKE_BUILD_TYPE STREQUAL "Debug" AND NOT INTERLOCK_FFLAGS MATCHES "no-recursion")
-    set_tests_properties(test_umat_omp PROPERTIES DISABLED TRUE)
-    message(STATUS "test_umat_omp disabled: Debug flags include -fcheck=recursion (not thread-safe)")
-  endif()
-endif()
+# (gfortran has OpenMP; the Debug flags leave out -fcheck=recursion, whose static flag per
+# procedure is not thread-safe: see CMakeLists.txt.)
+find_package(OpenMP REQUIRED COMPONENTS Fortran)
+interlock_add_pfunit_suite(umat_omp LABEL umat TEST_SOURCES test_umat_omp.pf
+  OTHER_SOURCES test_umat_interface.f90 LINK_LIBRARIES interlock_umat OpenMP::OpenMP_Fortran)
+set_tests_properties(umat_omp PROPERTIES ENVIRONMENT "OMP_THREAD_LIMIT=4")
 
-# --- The single-file bundle.
-if(TARGET interlock_umat_bundle)
-  # (a) built here with the project's flags, linked with the legacy driver and nothing else.
-  add_executable(test_umat_legacy_driver legacy_driver.f ${INTERLOCK_UMAT_BUNDLE})
-  add_dependencies(test_umat_legacy_driver interlock_umat_bundle)
-  set_target_properties(test_umat_legacy_driver PROPERTIES
-    Fortran_MODULE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/mod_test_umat_legacy_driver)
-  set_source_files_properties(${INTERLOCK_UMAT_BUNDLE} PROPERTIES
-    GENERATED TRUE COMPILE_OPTIONS "${INTERLOCK_FFLAGS}")
-  # F77-style host code: no -std=f2008 (old-style CHARACTER*80) and an implicit interface.
-  set_source_files_properties(legacy_driver.f PROPERTIES COMPILE_OPTIONS
-    "-Wall;-Wextra;$<$<CONFIG:Debug>:-fcheck=all;-ffpe-trap=invalid,zero,overflow;-finit-real=snan;-g>")
-  add_test(NAME test_umat_legacy_driver COMMAND test_umat_legacy_driver)
-  set_tests_properties(test_umat_legacy_driver PROPERTIES
-    PASS_REGULAR_EXPRESSION "legacy driver: all checks passed" FAIL_REGULAR_EXPRESSION "FAIL")
-  # (b) what a user does: gfortran on the bundle alone (warning-free, -Werror), then the driver.
-  add_test(NAME test_umat_bundle_standalone
-    COMMAND ${CMAKE_COMMAND}
-      -DFC=${CMAKE_Fortran_COMPILER} -DBUNDLE=${INTERLOCK_UMAT_BUNDLE}
-      -DDRIVER=${CMAKE_CURRENT_SOURCE_DIR}/legacy_driver.f
-      -DWORK=${CMAKE_CURRENT_BINARY_DIR}/bundle_standalone
-      -P ${CMAKE_CURRENT_SOURCE_DIR}/test_umat_bundle.cmake)
-  set_tests_properties(test_umat_bundle_standalone PROPERTIES TIMEOUT 120)
-endif()
+# --- The single-file bundle (umat/CMakeLists.txt writes it; the tests need Python, so it is
+#     there).
+# (a) built here with the project's flags, linked with the legacy driver and nothing else.
+add_executable(umat_legacy_driver legacy_driver.f ${INTERLOCK_UMAT_BUNDLE})
+add_dependencies(umat_legacy_driver interlock_umat_bundle)
+set_target_properties(umat_legacy_driver PROPERTIES
+  Fortran_MODULE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/mod_umat_legacy_driver)
+set_source_files_properties(${INTERLOCK_UMAT_BUNDLE} PROPERTIES
+  GENERATED TRUE COMPILE_OPTIONS "${INTERLOCK_FFLAGS}")
+# F77-style host code: no -std=f2008 (old-style CHARACTER*80) and an implicit interface.
+set_source_files_properties(legacy_driver.f PROPERTIES COMPILE_OPTIONS
+  "-Wall;-Wextra;$<$<CONFIG:Debug>:-fcheck=all;-ffpe-trap=invalid,zero,overflow;-finit-real=snan;-g>")
+add_test(NAME umat_legacy_driver COMMAND umat_legacy_driver)
+set_tests_properties(umat_legacy_driver PROPERTIES LABELS umat
+  PASS_REGULAR_EXPRESSION "legacy driver: all checks passed" FAIL_REGULAR_EXPRESSION "FAIL")
+# (b) what a user does: gfortran on the bundle alone (warning-free, -Werror), then the driver.
+add_test(NAME umat_bundle
+  COMMAND ${CMAKE_COMMAND}
+    -DFC=${CMAKE_Fortran_COMPILER} -DBUNDLE=${INTERLOCK_UMAT_BUNDLE}
+    -DDRIVER=${CMAKE_CURRENT_SOURCE_DIR}/legacy_driver.f
+    -DWORK=${CMAKE_CURRENT_BINARY_DIR}/bundle_standalone
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/test_umat_bundle.cmake)
+set_tests_properties(umat_bundle PROPERTIES TIMEOUT 120 LABELS umat)
 
 # --- interlock-query and docs/material.md.
-if(TARGET interlock_query)
-  add_test(NAME test_umat_query_doc
-    COMMAND ${CMAKE_COMMAND} -DQUERY=$<TARGET_FILE:interlock_query>
-      -DDOC=${PROJECT_SOURCE_DIR}/docs/material.md -DOUT=${CMAKE_CURRENT_BINARY_DIR}/material.md
-      -P ${CMAKE_CURRENT_SOURCE_DIR}/test_umat_doc.cmake)
-  add_test(NAME test_umat_query_props COMMAND interlock_query --props)
-  set_tests_properties(test_umat_query_props PROPERTIES PASS_REGULAR_EXPRESSION
-    "PROPS +name.*\n4 +eta +- +required +0 < +eta < +1.*\n19 +wear +- +1 .*\n20 +tangent +- +1 .*NPROPS from 9 to 20")
-  add_test(NAME test_umat_query_statev COMMAND interlock_query --statev)
-  set_tests_properties(test_umat_query_statev PROPERTIES PASS_REGULAR_EXPRESSION
-    "STATEV +name.*\n13 +theta +1 \\(-theta_0\\) +rad.*\n22 +initialized +- .*NSTATV >= 22")
-  add_test(NAME test_umat_query_bad_option COMMAND interlock_query --no-such-option)
-  set_tests_properties(test_umat_query_bad_option PROPERTIES WILL_FAIL TRUE)
-endif()
+add_test(NAME umat_doc
+  COMMAND ${CMAKE_COMMAND} -DQUERY=$<TARGET_FILE:interlock_query>
+    -DDOC=${PROJECT_SOURCE_DIR}/docs/material.md -DOUT=${CMAKE_CURRENT_BINARY_DIR}/material.md
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/test_umat_doc.cmake)
+set_tests_properties(umat_doc PROPERTIES LABELS umat)
+add_test(NAME umat_query_props COMMAND interlock_query --props)
+set_tests_properties(umat_query_props PROPERTIES LABELS umat PASS_REGULAR_EXPRESSION
+  "PROPS +name.*\n4 +eta +- +required +0 < +eta < +1.*\n19 +wear +- +1 .*\n20 +tangent +- +1 .*NPROPS from 9 to 20")
+add_test(NAME umat_query_statev COMMAND interlock_query --statev)
+set_tests_properties(umat_query_statev PROPERTIES LABELS umat PASS_REGULAR_EXPRESSION
+  "STATEV +name.*\n13 +theta +1 \\(-theta_0\\) +rad.*\n22 +initialized +- .*NSTATV >= 22")
+add_test(NAME umat_query_bad_option COMMAND interlock_query --no-such-option)
+set_tests_properties(umat_query_bad_option PROPERTIES LABELS umat WILL_FAIL TRUE)
 
 # --- cmake --install into a temporary prefix, then a consumer project with find_package.
-add_test(NAME test_umat_install_consumer
+add_test(NAME umat_install
   COMMAND ${CMAKE_COMMAND}
     -DBUILD_DIR=${PROJECT_BINARY_DIR} -DCONFIG=$<CONFIG>
     -DPREFIX=${CMAKE_CURRENT_BINARY_DIR}/install_test/prefix
@@ -80,23 +72,23 @@ add_test(NAME test_umat_install_consumer
     -DCONSUMER_BUILD=${CMAKE_CURRENT_BINARY_DIR}/install_test/consumer
     -DGENERATOR=${CMAKE_GENERATOR} -DFC=${CMAKE_Fortran_COMPILER}
     -P ${CMAKE_CURRENT_SOURCE_DIR}/test_umat_install.cmake)
-set_tests_properties(test_umat_install_consumer PROPERTIES TIMEOUT 300)
+set_tests_properties(umat_install PROPERTIES TIMEOUT 300 LABELS umat)
 
 # --- A local failure writes a replay deck (INTERLOCK_REPLAY_DIR); interlock-history replays it
 #     and stops with the same reason.
-interlock_add_suite(test_umat_replay test_umat_interface.f90 test_umat_replay.f90)
-target_link_libraries(test_umat_replay PRIVATE interlock_umat)
-set(umat_replay_dir ${CMAKE_CURRENT_BINARY_DIR}/umat_replay)
+interlock_add_suite(umat_replay umat test_umat_interface.f90 test_umat_replay.f90)
+target_link_libraries(umat_replay PRIVATE interlock_umat)
+set(umat_replay_dir ${CMAKE_CURRENT_BINARY_DIR}/umat_replay_decks)
 file(MAKE_DIRECTORY ${umat_replay_dir})
-set_tests_properties(test_umat_replay PROPERTIES
+set_tests_properties(umat_replay PROPERTIES
   ENVIRONMENT "INTERLOCK_REPLAY_DIR=${umat_replay_dir}"
   FIXTURES_SETUP umat_replay_deck
   PASS_REGULAR_EXPRESSION "unstable on small sub-increments.*test_umat_replay: [0-9]+ checks, 0 failed")
 if(TARGET interlock-history)
-  add_test(NAME test_umat_replay_history
+  add_test(NAME umat_history_replay
     COMMAND interlock-history --output-dir ${umat_replay_dir}
             ${umat_replay_dir}/interlock_replay_e5_p2_k3.nml)
-  set_tests_properties(test_umat_replay_history PROPERTIES
+  set_tests_properties(umat_history_replay PROPERTIES LABELS umat
     FIXTURES_REQUIRED umat_replay_deck
     PASS_REGULAR_EXPRESSION "unstable on small sub-increments"
     FAIL_REGULAR_EXPRESSION "completed")
@@ -105,17 +97,12 @@ endif()
 # --- The symmetric tangent for hosts that symmetrize (PROPS 20 tangent = 2): the interface
 #     alone under traction control, Newton with the exact tangent, its symmetric part, the
 #     library's symmetric tangent and two other candidates (a measurement: docs/calculix.md).
-add_executable(tangent_newton tangent_newton.f90)
-target_link_libraries(tangent_newton PRIVATE interlock::interlock)
-target_compile_options(tangent_newton PRIVATE ${INTERLOCK_FFLAGS})
-set_target_properties(tangent_newton PROPERTIES
-  Fortran_MODULE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/mod_tangent_newton)
-add_test(NAME tangent_newton COMMAND tangent_newton)
+interlock_add_suite(umat_tangent_newton umat tangent_newton.f90)
 
 # --- The thin-layer entry for hosts without cohesive elements (CalculiX).
-interlock_add_pfunit_suite(test_umat_layer TEST_SOURCES test_umat_layer.pf
+interlock_add_pfunit_suite(umat_layer LABEL umat TEST_SOURCES test_umat_layer.pf
   LINK_LIBRARIES interlock_umat)
-target_include_directories(test_umat_layer PRIVATE ${PROJECT_BINARY_DIR}/umat/mod_umat)
-set_tests_properties(test_umat_layer PROPERTIES
-  PASS_REGULAR_EXPRESSION "layer PROPS\\(1\\): 'h' = 0 is inadmissible: admissible 1e-12 <= h <= 1e\\+12.*layer PROPS\\(2\\): 'e_other' = -5 is inadmissible.*layer PROPS\\(3\\): 'normal_axis' = 4 is inadmissible: admissible 1, 2 or 3.*layer PROPS\\(4\\): 'slip_axis' = 3 is inadmissible.*layer PROPS\\(8\\) = interlock PROPS\\(4\\): property 'eta' = 1.5 is inadmissible.*layer PROPS\\(24\\) = interlock PROPS\\(20\\): property 'tangent' = 3 is inadmissible.*NPROPS = 12 is inadmissible: admissible 13 <= NPROPS <= 24.*inadmissible with NTENS = 4.*diverged global iteration: DSTRAN\\(3\\) = \\+?Inf.*warning: element 9, point 4 \\(material 'LAYER', increment 1\\): the strain of component 3 = -0.3, which does not involve normal_axis = 1.*OK\n \\(9 tests\\)"
+target_include_directories(umat_layer PRIVATE ${PROJECT_BINARY_DIR}/umat/mod_umat)
+set_tests_properties(umat_layer PROPERTIES
+  PASS_REGULAR_EXPRESSION "layer PROPS\\(1\\): 'h' = 0 is inadmissible: admissible 1e-12 <= h <= 1e\\+12.*layer PROPS\\(2\\): 'e_other' = -5 is inadmissible.*layer PROPS\\(3\\): 'normal_axis' = 4 is inadmissible: admissible 1, 2 or 3.*layer PROPS\\(4\\): 'slip_axis' = 3 is inadmissible.*layer PROPS\\(8\\) = interlock PROPS\\(4\\): property 'eta' = 1.5 is inadmissible.*layer PROPS\\(24\\) = interlock PROPS\\(20\\): property 'tangent' = 3 is inadmissible.*NPROPS = 12 is inadmissible: admissible 13 <= NPROPS <= 24.*inadmissible with NTENS = 4.*diverged global iteration: DSTRAN\\(3\\) = \\+?Inf.*warning: element 9, point 4 \\(material 'LAYER', increment 1\\): the strain of component 3 = -0.3, which does not involve normal_axis = 1.*OK\n \\([0-9]+ tests?\\)"
   FAIL_REGULAR_EXPRESSION "FAIL|ERROR STOP|Encountered 1 or more failures")

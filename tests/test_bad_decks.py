@@ -1,15 +1,16 @@
 #!/usr/bin/python3
-"""Bad decks must be rejected: interlock-history exits with status 1, its error output names the
-deck file and holds every fragment of NAME.expected (whitespace runs compare as one space), it
-prints no Fortran runtime error, it finishes within the time limit, and it leaves no result file
-and no temporary file behind (the output folder holds nothing new afterwards).
+"""Bad decks must be rejected (by interlock-history, or interlock-fit given as PROGRAM): the
+program exits with status 1, its error output names the deck file and holds every fragment of
+NAME.expected (whitespace runs compare as one space), it prints no Fortran runtime error, it
+finishes within the time limit, and it leaves no result file and no temporary file behind (the
+output folder holds nothing new afterwards).
 
-usage: test_history_bad_decks.py PROGRAM NAME.expected|NAME.nml [...]
-       test_history_bad_decks.py --generate DIR     write the generated decks into DIR
-       test_history_bad_decks.py --crlf PROGRAM DECK.nml
+usage: test_bad_decks.py PROGRAM NAME.expected|NAME.nml [...]
+       test_bad_decks.py --generate DIR     write the generated decks into DIR
+       test_bad_decks.py --crlf PROGRAM DECK.nml
                                   a copy of DECK with Windows (CR LF) line ends gives the same
                                   HDF5 datasets as DECK itself (CR LF decks are accepted)
-       test_history_bad_decks.py --bom PROGRAM DECK.nml
+       test_bad_decks.py --bom PROGRAM DECK.nml
                                   the same with a UTF-8 byte order mark before the text (the
                                   deck attribute is the text without it)
 
@@ -124,7 +125,7 @@ def write_pair(folder, name, deck_bytes, fragments, comment):
     with open(os.path.join(folder, name + ".nml"), "wb") as f:
         f.write(deck_bytes)
     with open(os.path.join(folder, name + ".expected"), "w") as f:
-        f.write(f"# {comment} (written by test_history_bad_decks.py --generate)\n")
+        f.write(f"# {comment} (written by test_bad_decks.py --generate)\n")
         f.write("\n".join(fragments) + "\n")
 
 
