@@ -62,30 +62,30 @@ if(INTERLOCK_CCX AND TARGET interlock-history)
   #  - neg_hn, neg_hn_two: a bad property is one line per material (two threads), ccx stops;
   #  - axis_wrong: normal 1, slip 3 on a layer thin along z: one warning, the run goes on.
   set(calculix_decks ${INTERLOCK_TEST_DATA}/calculix)
-  set(calculix_deck_runner /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/test_calculix_decks.py
+  set(calculix_decks_runner /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/test_calculix_decks.py
       ${INTERLOCK_CCX})
   set(umat_line "^interlock UMAT")
-  add_test(NAME calculix_deck_gr_x COMMAND ${calculix_deck_runner} ${calculix_decks}/gr_x.inp
+  add_test(NAME calculix_decks_gr_x COMMAND ${calculix_decks_runner} ${calculix_decks}/gr_x.inp
     ${calculix_work}/decks --complete --normal-traction 2.0 --count ${umat_line} 0)
-  add_test(NAME calculix_deck_big_t2_bounds COMMAND ${calculix_deck_runner}
+  add_test(NAME calculix_decks_big_t2_bounds COMMAND ${calculix_decks_runner}
     ${calculix_decks}/big_t2_bounds.inp ${calculix_work}/decks --complete
     --count "diverged global iteration: DSTRAN\\([0-9]\\) = .*cut back \\(PNEWDT 0.25\\)" 1
     --count "^interlock UMAT.*inadmissible" 0)
-  add_test(NAME calculix_deck_grbig_bounds COMMAND ${calculix_deck_runner}
+  add_test(NAME calculix_decks_grbig_bounds COMMAND ${calculix_decks_runner}
     ${calculix_decks}/grbig_bounds.inp ${calculix_work}/decks --complete)
-  add_test(NAME calculix_deck_neg_hn COMMAND ${calculix_deck_runner}
+  add_test(NAME calculix_decks_neg_hn COMMAND ${calculix_decks_runner}
     ${calculix_decks}/neg_hn.inp ${calculix_work}/decks --stops --threads 2
     --count ${umat_line} 1 --count "material 'LAYER'.*'h_n' = -0.5 is inadmissible" 1)
-  add_test(NAME calculix_deck_neg_hn_two COMMAND ${calculix_deck_runner}
+  add_test(NAME calculix_decks_neg_hn_two COMMAND ${calculix_decks_runner}
     ${calculix_decks}/neg_hn_two.inp ${calculix_work}/decks --stops --threads 2
     --count ${umat_line} 2 --count "material 'LAYER'.*'h_n' = -0.5 is inadmissible" 1
     --count "material 'SECOND'.*'eta' = 1.5 is inadmissible" 1)
-  add_test(NAME calculix_deck_axis_wrong COMMAND ${calculix_deck_runner}
+  add_test(NAME calculix_decks_axis_wrong COMMAND ${calculix_decks_runner}
     ${calculix_decks}/axis_wrong.inp ${calculix_work}/decks --complete
     --count "^interlock UMAT \\(layer\\): warning: .*does not involve normal_axis = 1" 1
     --count ${umat_line} 1)
-  set_tests_properties(calculix_deck_gr_x calculix_deck_big_t2_bounds calculix_deck_grbig_bounds
-    calculix_deck_neg_hn calculix_deck_neg_hn_two calculix_deck_axis_wrong PROPERTIES
+  set_tests_properties(calculix_decks_gr_x calculix_decks_big_t2_bounds calculix_decks_grbig_bounds
+    calculix_decks_neg_hn calculix_decks_neg_hn_two calculix_decks_axis_wrong PROPERTIES
     LABELS calculix TIMEOUT 600 FIXTURES_REQUIRED calculix_binary
     FAIL_REGULAR_EXPRESSION "FAIL|Traceback")
 endif()

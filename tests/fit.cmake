@@ -43,7 +43,7 @@ foreach(expected IN LISTS fit_bad_decks)
   set_tests_properties(fit_bad_decks_${name} PROPERTIES LABELS fit TIMEOUT 120)
 endforeach()
 # The unit suites of the solver and of the CSV reader (pFUnit).
-interlock_add_pfunit_suite(fit_lm TEST_SOURCES test_lm.pf LINK_LIBRARIES interlock_fit_core
-  LABELS fit)
-interlock_add_pfunit_suite(fit_csv TEST_SOURCES test_csv.pf LINK_LIBRARIES interlock_fit_core
-  LABELS fit)
+interlock_add_pfunit_suite(fit_lm LABEL fit TEST_SOURCES test_lm.pf
+  LINK_LIBRARIES interlock_fit_core)
+interlock_add_pfunit_suite(fit_csv LABEL fit TEST_SOURCES test_csv.pf
+  LINK_LIBRARIES interlock_fit_core)
