@@ -163,9 +163,11 @@ contains
     if (len_trim(dump_scene) == 0 .and. profile_set < 0 .and. len_trim(out_dir) == 0) &
       call usage('--out DIR is required: the existing folder for the CSV files')
     ! checked before any work: the CSV files are written only at the end of each study
-    if (len_trim(out_dir) > 0 .and. .not. folder_writable(trim(out_dir))) &
-      call usage('--out ' // trim(out_dir) // ': no such folder, or not writable (it must ' // &
-                 'exist and be writable)')
+    if (len_trim(out_dir) > 0) then
+      if (.not. folder_writable(trim(out_dir))) &
+        call usage('--out ' // trim(out_dir) // ': no such folder, or not writable (it must ' // &
+                   'exist and be writable)')
+    end if
   end subroutine parse_arguments
 
   !> Print the usage and end: on stdout with status 0 when `message` is empty (--help), else
