@@ -24,7 +24,7 @@ add_test(NAME fit_staged_granite
           ${PROJECT_SOURCE_DIR}/inputs/fit/granite_staged.nml)
 set_tests_properties(fit_staged_granite PROPERTIES LABELS fit TIMEOUT 300)
 add_test(NAME fit_discretization_granite
-  COMMAND ${INTERLOCK_FIT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_fit.py
+  COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_fit.py
           $<TARGET_FILE:interlock-fit> $<TARGET_FILE:interlock-history> discretization
           ${PROJECT_SOURCE_DIR}/inputs/fit/granite_staged.nml)
 set_tests_properties(fit_discretization_granite PROPERTIES LABELS fit TIMEOUT 600)
