@@ -255,10 +255,12 @@ contains
       'symmetric once friction or wear acts: declare `*USER MATERIAL, UNSYMM` (for a host', &
       'that symmetrizes, e.g. CalculiX, `tangent` = 2: docs/calculix.md). SSE is the', &
       'stored energy, SCD the total dissipation (damage + friction), SPD = 0. PNEWDT is only', &
-      'lowered: -1 on bad input (with a one-line message naming element and point), 0.5 on a', &
-      'local integration failure, and the first-order fraction of the increment (clamped to', &
-      '[0.1, 1]) that keeps the damage and angle increments within `max_damage_increment` and', &
-      '`max_angle_increment_deg`.', &
+      'lowered: -1 on bad input (with a one-line message naming element and point, once per', &
+      'material and kind of message), 0.25 on a diverged global iteration (DSTRAN not finite', &
+      'or huge, or the increment ending beyond 1e6 mm), 0.5 on a local integration failure;', &
+      'when an increment exceeds `max_damage_increment` or `max_angle_increment_deg`, f is the', &
+      'first-order fraction of the increment that meets them, and max(0.01, f) is requested', &
+      'only when f < 0.8 and a cut can meet the bound (docs/umat.md).', &
       '', &
       '### PROPS', &
       '', &
