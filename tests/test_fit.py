@@ -187,7 +187,7 @@ def staged(fit, history, deck_src):
         print(f"{name}: {value!r} paper {true} relative error {abs(value - true) / true:.2e}")
         if abs(value - true) > 1e-4 * true:
             bad.append(name)
-    print(f"staged fit: {cpu:.2f} s CPU, {wall:.2f} s wall (issue: under 30 s on one core)")
+    print(f"staged fit: {cpu:.2f} s CPU, {wall:.2f} s wall (target: under 30 s on one core)")
     assert "stage_parameters" in text
     if bad:
         sys.exit(f"FAIL: not recovered: {bad}")
