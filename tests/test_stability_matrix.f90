@@ -626,7 +626,7 @@ contains
       'plus ', size(design, 2) - n_pairwise, ' one-factor extremes around the Table 1 ' // &
       'baseline (H_N = 1 mm, eta = 0.9, sigma0 = 3 MPa, Gc_bar = 0.3 N/mm, theta_0 = 45 deg, ' // &
       'no wear, mu = 0.5, intact, paper RIA); x ', n_loadings, ' loadings x ', n_schemes, &
-      ' schemes (' // scheme_name_list() // ') x without and with substepping.'
+      ' schemes (every scheme of the library, below) x without and with substepping.'
     write (u, '(a,i0,a,i0,a)') '- Cells: ', n_cells, '; updates (including mixed-control ' // &
       'trials): ', total, '.'
     write (u, '(a,i0,a,i0,a,i0,a)') '- Worst iteration counts: core wear Newton ', worst_newton, &
@@ -699,21 +699,6 @@ contains
     end if
     close (u)
   end subroutine write_doc
-
-  !> "explicit, implicit and trapezoidal": the library's schemes by name.
-  function scheme_name_list() result(text)
-    character(len=:), allocatable :: text
-    integer :: i
-    text = ''
-    do i = 1, n_schemes
-      if (i == n_schemes .and. i > 1) then
-        text = text // ' and '
-      else if (i > 1) then
-        text = text // ', '
-      end if
-      text = text // trim(scheme_names(i))
-    end do
-  end function scheme_name_list
 
 end module test_stability_matrix_suite
 
