@@ -7,8 +7,8 @@
 !> method with the matrix K of one option:
 !>   exact      the law's algorithmic tangent D (unsymmetric)
 !>   sym        (D + D^T) / 2, what ccx keeps of any DDSDDE (umat_abaqus.f)
-!>   nocouple   diag(D) where the normal traction is compressive, else sym (the throw-away
-!>              adapter of issue 14)
+!>   nocouple   diag(D) where the normal traction is compressive, else sym (an adapter
+!>              that drops the coupling in compression)
 !>   clipped    sym with the off-diagonal clipped to |c| <= sqrt(D11 D22) (diagonal >= 0)
 !>   library    the library's symmetric tangent (PROPS 20 tangent = 2,
 !>              interlock_symmetric_tangent)

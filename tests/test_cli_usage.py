@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Usage errors of the command-line programs (issue 10 item 11).
+"""Usage errors of the command-line programs.
 
 usage: test_cli_usage.py WORK_DIR NAME=PROGRAM...   (NAME: history, query, bench, fuzz)
 

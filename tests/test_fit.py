@@ -13,7 +13,7 @@ usage: test_fit.py FIT HISTORY recovery SET NOISE   SET: granite | table5; NOISE
 The data are the curves of a history with known parameters (scripts/fit_make_data.py; noise:
 independent normal noise of 2 % of each curve's largest value, numpy default_rng(12), the same on
 every machine). Without noise every parameter must come back to 1e-6 relative (staged deck:
-1e-4, the issue's figure); with noise within two of its reported standard errors. The fit starts
+1e-4); with noise within two of its reported standard errors. The fit starts
 30-50 % off. The fit file's layout (values, std_error, correlation, curves/NAME/{x,y,model})
 and the fitted deck (an ordinary history deck that interlock-history runs) are checked too. The
 CPU time of the fit is printed (a measurement, not asserted here: docs/fit.md).
@@ -187,7 +187,7 @@ def staged(fit, history, deck_src):
         print(f"{name}: {value!r} paper {true} relative error {abs(value - true) / true:.2e}")
         if abs(value - true) > 1e-4 * true:
             bad.append(name)
-    print(f"staged fit: {cpu:.2f} s CPU, {wall:.2f} s wall (issue: under 30 s on one core)")
+    print(f"staged fit: {cpu:.2f} s CPU, {wall:.2f} s wall (target: under 30 s on one core)")
     assert "stage_parameters" in text
     if bad:
         sys.exit(f"FAIL: not recovered: {bad}")

@@ -18,7 +18,7 @@ usage: test_history_extrapolate.py PROGRAM DATA_DIR WORK_DIR MODE [K_REF K1 K2 .
                 step, they are those of the 2n run.
   preload       Fig. 12 (inputs/fig12.nml), extrapolated at 50, 100, 200 slip steps per mm
                 against 1600: the one-step preload is the same in both runs (its row is the
-                plain row bit for bit) and the error shrinks with the step (issue 10 item 9).
+                plain row bit for bit) and the error shrinks with the step.
                 `preload K_REF K1 K2 ...` prints the errors at K1, K2, ... steps per mm against
                 K_REF instead (no check; the table of docs/history-output.md: 12800 100 200
                 400 800; the environment variable INTERLOCK_REFERENCE_PROGRAM names another
@@ -285,8 +285,8 @@ def mode_preload(program, data, work, counts=()):
     """Fig. 12 (inputs/fig12.nml: a one-step preload to sigma_N = -2 MPa, then cyclic slip
     0 -> 10 -> -10 -> 10 mm with wear) at k = 50, 100, 200 slip steps per mm, extrapolated,
     against the extrapolation at 1600 steps per mm. The one-step preload is taken alike in both
-    runs (issue 10 item 9: it was doubled in the fine run, and the extrapolation converged to
-    another history: 4.3e-5 of max |sigma_T| at every k), so the preload row is the plain run's
+    runs (doubled in the fine run, the extrapolation would converge to another history: 4.3e-5
+    of max |sigma_T| at every k), so the preload row is the plain run's
     bit for bit and the error shrinks with the step."""
     with open(os.path.join(data, "..", "..", "inputs", "fig12.nml")) as f:
         base = f.read()

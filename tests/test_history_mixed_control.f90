@@ -163,7 +163,7 @@ contains
     call assert_true(index(message, 'separated') > 0, 'reason: ' // trim(message))
   end subroutine separated_interface_stops_history
 
-  !> Issue 10 item 10: a step that fails names the step's own target (not the target of its
+  !> A step that fails names the step's own target (not the target of its
   !> last halved sub-step, 0.01 MPa / 2**30 here) and why no solution exists: a fully damaged
   !> interface (infinite H_N) or one separated beyond H_N carries no tension.
   subroutine failed_step_names_its_target_and_place()
@@ -197,7 +197,7 @@ contains
   !> Richardson extrapolation on a wearing RIA (Table 2, theta_0 = 30, theta_f = 7 deg,
   !> zeta_0 = 1 N/mm, H_N = 1 mm; implicit; a one-step preload, then 20 slip steps): row i is
   !> built from row i of the run with the path's steps (n) and the row of the run with the slip
-  !> segment's steps doubled (2n; the one-step preload is not refined: issue 10 item 9) that ends
+  !> segment's steps doubled (2n; the one-step preload is not refined) that ends
   !> at the same point, each computed here by run_history: separation and traction
   !> 2 u(2n) - u(n), the 2n run's state variables and energies bit for bit, iterations and
   !> substeps summed over the steps; the preload row the same in both runs, so extrapolated it is

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""What interlock-history promises when things go wrong (README, "Reliability"; issue 10).
+"""What interlock-history promises when things go wrong (README, "Reliability").
 
 usage: test_history_reliability.py PROGRAM DECK WORK_DIR MODE
   DECK = inputs/fig6.nml (a short good deck: one slip history, 600 steps, completes).

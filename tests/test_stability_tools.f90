@@ -152,7 +152,7 @@ contains
     ! No check on the damage dissipation: its increment Y dD, with Y = c beta^2/2 -
     ! tau_f^2/(2 K_t), is negative when |tau_f| > K_t |s_kt| while damage grows (after a shear
     ! reversal), even accumulated over a history. That is a property of the law as SPEC section
-    ! 4 states it, reported on the issue with reproducers (tests/data/stability_negative_
+    ! 4 states it (decision D9; reproducer: tests/data/stability_negative_
     ! damage_dissipation.nml); SPEC section 8's non-negative claim is checked where it is made,
     ! on monotonic histories (core_closed_forms, core_invariants).
   end subroutine check_update

@@ -139,7 +139,7 @@ contains
     integer, intent(in) :: NSHR                !< shear components (1 for a 2D cohesive element)
     integer, intent(in) :: NTENS               !< must be 2
     integer, intent(in) :: NSTATV              !< >= 22
-    integer, intent(in) :: NPROPS              !< 9 .. 19
+    integer, intent(in) :: NPROPS              !< 9 .. 20 (later PROPS: defaults)
     integer, intent(in) :: NOEL, NPT           !< element and integration point (for messages)
     integer, intent(in) :: LAYER, KSPT         !< layer and section point (unused)
     integer, intent(in) :: JSTEP(4)            !< step information (unused; KSTEP in old manuals)

@@ -34,7 +34,7 @@ contains
   !> bits, interlock_kinds:is_finite_bits), else general_update. When the kernel does not apply
   !> or its result is not finite, general_update takes the increment again (and reports). A
   !> small procedure of its own: through general_update's checks and frame the full model's
-  !> update costs more (docs/bench.md, section 1).
+  !> update costs more (interlock-bench's cost rows, docs/bench.md).
   pure subroutine kernel_update(mat, solver, s, old, new, sigma, tangent, info)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
@@ -283,7 +283,7 @@ contains
   !> derivative exceeds this is reported (an explicit wear update on tiny sub-increments can
   !> amplify it exponentially). A NaN is not caught here (finite_response reports it). Plane
   !> by plane with fixed shapes and no maxval (its NaN handling and an assumed-shape section
-  !> cost 270 instructions per sub-increment).
+  !> would add work to every sub-increment).
   pure logical function bounded(jac, n)
     real(dp), intent(in) :: jac(4, 2, max_planes)
     integer, intent(in) :: n
