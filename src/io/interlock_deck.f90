@@ -32,7 +32,7 @@ module interlock_deck
 
   integer, parameter :: max_points = 10001        !< points of one loading block
   integer, parameter :: max_sweep_values = 1000   !< cases of one deck
-  integer, parameter :: max_total_steps = 2000000 !< steps of one case (cycles included)
+  integer, parameter :: max_total_steps = 2 * 10**6 !< steps of one case (cycles included)
   integer, parameter :: max_deck_bytes = 4 * 1024 * 1024
   integer, parameter :: max_cycles = 100000
   integer, parameter :: name_len = 64, path_len = 4096
