@@ -200,7 +200,7 @@ contains
   !> (columns beyond ncol: 0, as dthw's). The products written out: most of the chain of a
   !> sub-increment.
   pure function chain_row(g, c, sn, dsl_dth, dthw, ncol) result(row)
-    real(dp), intent(in) :: g(4), c, sn, dsl_dth(2), dthw(6)
+    real(dp), intent(in) :: g(:), c, sn, dsl_dth(2), dthw(6)   !< g(1:4); any stride (no copy of a row)
     integer, intent(in) :: ncol
     real(dp) :: row(6)
     row = (g(1) * dsl_dth(1) + g(2) * dsl_dth(2)) * dthw
