@@ -11,12 +11,14 @@ module interlock
   use interlock_numbers, only: key_in_range, keys_in_range, format_real, format_integer
   use interlock_material_table
   use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, &
-      interlock_material_prepare, interlock_paper_ria, scheme_explicit, scheme_implicit, &
+      max_azimuths, interlock_material_prepare, interlock_paper_ria, interlock_azimuthal_ria, scheme_explicit, scheme_implicit, &
       scheme_trapezoidal, scheme_name, effect_damage, effect_friction, effect_interlocking, &
       effect_finite_depth, effect_wear, effect_names, n_effects, kernel_general, kernel_flat, &
       kernel_inclined, kernel_cohesive
-  use interlock_state, only: interlock_state_t, interlock_state_init
+  use interlock_state, only: interlock_state_t, interlock_state_init, interlock_state_3d_t, &
+      interlock_state_3d_init
   use interlock_integrate, only: interlock_update
+  use interlock_integrate_3d, only: interlock_update_3d
   use interlock_props, only: props_to_material, props_n_to_material, statev_to_state, &
       state_to_statev, umat_controls_t, &
       statev_bounds, statev_bad_index, statev_message, state_bound

@@ -9,16 +9,19 @@ module interlock_material
   use interlock_status, only: status_ok, status_bad_input
   implicit none
   private
-  public :: interlock_material_t, interlock_solver_t, max_planes
-  public :: interlock_material_prepare, interlock_paper_ria, interlock_material_derive, &
-            interlock_paper_material_derive, derived_range_message
+  public :: interlock_material_t, interlock_solver_t, max_planes, max_azimuths
+  public :: interlock_material_prepare, interlock_paper_ria, interlock_azimuthal_ria, &
+            interlock_material_derive, interlock_paper_material_derive, derived_range_message
   public :: scheme_explicit, scheme_implicit, scheme_trapezoidal, scheme_name, n_schemes, &
             scheme_names, scheme_list
   public :: effect_damage, effect_friction, effect_interlocking, effect_finite_depth, effect_wear
   public :: effect_names, n_effects
   public :: kernel_general, kernel_flat, kernel_inclined, kernel_cohesive
 
-  integer, parameter :: max_planes = 8
+  !> Planes of a RIA: the `azimuthal` RIA of SPEC section 9 has 1 + 2 N_a planes, N_a <= 6.
+  integer, parameter :: max_planes = 13
+  !> The largest number of azimuths of interlock_azimuthal_ria.
+  integer, parameter :: max_azimuths = (max_planes - 1) / 2
   !> Integration schemes (SPEC section 5, D11): the paper's explicit one, backward Euler, and
   !> the trapezoidal rule on the wear equation (second order, consistent at a zero increment).
   integer, parameter :: scheme_explicit = 1, scheme_implicit = 2, scheme_trapezoidal = 3
@@ -56,6 +59,9 @@ module interlock_material
     real(dp) :: theta0(max_planes) = 0.0_dp     !< initial inclinations [rad]
     real(dp) :: thetaf(max_planes) = 0.0_dp     !< final inclinations [rad]
     real(dp) :: zeta0(max_planes) = huge(1.0_dp) !< wear energy scales [N/mm]
+    !> azimuths [rad] (SPEC section 9): plane k dips along cos(phi) t1 + sin(phi) t2; they
+    !> matter only to the three-dimensional update
+    real(dp) :: phi(max_planes) = 0.0_dp
     logical  :: effect(n_effects) = .true.       !< user switches, see effect_*
     ! --- derived by interlock_material_prepare (interlock_material_derive sets every one;
     ! no default value, so that a material declared on every call, the UMAT's, is not filled
@@ -80,6 +86,9 @@ module interlock_material
     real(dp) :: thetaf_eff(max_planes)
     real(dp) :: inv_zeta0(max_planes)
     real(dp) :: cos0(max_planes), sin0(max_planes)
+    real(dp) :: cos_phi(max_planes), sin_phi(max_planes)   !< of the azimuths
+    !> every azimuth 0: a three-dimensional update without strike components is the 2D one
+    logical  :: azimuths_zero
     !> Inverses for the kernels (a multiplication instead of a division on the hot path), and
     !> c/(2 eta) with c = K_n s_0n^2: decohesion energy per unit growth of beta.
     real(dp) :: inv_s0n, inv_s0t, inv_eta, inv_kt
@@ -142,7 +151,36 @@ contains
     mat%theta0(1:3) = [-theta0, 0.0_dp, theta0]
     mat%thetaf(1:3) = [-thetaf, 0.0_dp, thetaf]
     mat%zeta0(1:3) = [zeta0, huge(1.0_dp), zeta0]
+    mat%phi = 0.0_dp
   end subroutine interlock_paper_ria
+
+  !> The `azimuthal` RIA of SPEC section 9 with n_azimuths = N_a directions (1 <= N_a <=
+  !> max_azimuths; the caller checks): the planes (phi_0, -theta_0), flat, (phi_0, +theta_0),
+  !> then (phi_j, -theta_0), (phi_j, +theta_0) for j = 1..N_a-1, phi_j = pi j / N_a; the flat
+  !> plane 1/3, each inclined plane 1/(3 N_a). N_a = 1 is the paper's RIA, layout included.
+  !> Angles in radians.
+  pure subroutine interlock_azimuthal_ria(mat, n_azimuths, theta0, thetaf, zeta0)
+    type(interlock_material_t), intent(inout) :: mat
+    integer, intent(in) :: n_azimuths
+    real(dp), intent(in) :: theta0, thetaf, zeta0
+    integer :: j, k
+    real(dp) :: g
+    call interlock_paper_ria(mat, theta0, thetaf, zeta0)
+    if (n_azimuths <= 1) return
+    g = 1.0_dp / (3.0_dp * n_azimuths)
+    mat%gamma_hat(1) = g
+    mat%gamma_hat(3) = g
+    k = 3
+    do j = 1, n_azimuths - 1
+      mat%gamma_hat(k + 1:k + 2) = g
+      mat%theta0(k + 1:k + 2) = [-theta0, theta0]
+      mat%thetaf(k + 1:k + 2) = [-thetaf, thetaf]
+      mat%zeta0(k + 1:k + 2) = zeta0
+      mat%phi(k + 1:k + 2) = pi * j / n_azimuths
+      k = k + 2
+    end do
+    mat%n_planes = k
+  end subroutine interlock_azimuthal_ria
 
   !> Validate the given parameters and derive everything the update needs. On bad input
   !> `stat` = status_bad_input and `message` names the value and the admissible range.
@@ -165,7 +203,7 @@ contains
     call check_property(prop_h_n, mat%h_n, ok, message); if (.not. ok) return
     if (mat%n_planes < 1 .or. mat%n_planes > max_planes) then
       message = "n_planes = " // format_integer(mat%n_planes) // &
-                " is inadmissible: admissible 1 <= n_planes <= 8"
+                " is inadmissible: admissible 1 <= n_planes <= " // format_integer(max_planes)
       return
     end if
     gsum = 0.0_dp
@@ -200,6 +238,13 @@ contains
       call check_property(prop_zeta0, mat%zeta0(k), ok, message)
       if (.not. ok) then
         message = 'plane ' // format_integer(k) // ': ' // message
+        return
+      end if
+      ok = is_finite_bits(mat%phi(k))
+      if (ok) ok = abs(mat%phi(k)) <= 2.0_dp * pi
+      if (.not. ok) then
+        message = 'phi(' // format_integer(k) // ') = ' // format_real(mat%phi(k) / deg_to_rad) &
+                  // ' deg is inadmissible: admissible -360 <= phi <= 360 deg'
         return
       end if
     end do
@@ -262,6 +307,16 @@ contains
         end do
       end if
     end do
+    ! The azimuths: a dip direction along t1 (phi = 0) to the bit.
+    do k = 1, mat%n_planes
+      mat%cos_phi(k) = 1.0_dp
+      mat%sin_phi(k) = 0.0_dp
+      if (.not. equal(mat%phi(k), 0.0_dp)) then
+        mat%cos_phi(k) = cos(mat%phi(k))
+        mat%sin_phi(k) = sin(mat%phi(k))
+      end if
+    end do
+    mat%azimuths_zero = all(equal(mat%phi(1:mat%n_planes), 0.0_dp))
     call derive_flat_beyond(mat)
     mat%use_wear = any(mat%plane_wears(1:mat%n_planes))
     call derive_kernel(mat, all(equal(mat%theta_init(1:mat%n_planes), 0.0_dp)))
@@ -311,6 +366,9 @@ contains
       mat%cos0(3) = mat%cos0(1)
       mat%sin0(3) = sign(mat%sin0(1), mat%theta_init(3))
     end if
+    mat%cos_phi(1:3) = 1.0_dp
+    mat%sin_phi(1:3) = 0.0_dp
+    mat%azimuths_zero = .true.
     call derive_flat_beyond(mat)
     mat%use_wear = mat%plane_wears(1) .or. mat%plane_wears(3)
     call derive_kernel(mat, equal(mat%theta_init(1), 0.0_dp))
@@ -390,6 +448,8 @@ contains
     mat%inv_zeta0(mat%n_planes + 1:) = 0.0_dp
     mat%cos0(mat%n_planes + 1:) = 1.0_dp
     mat%sin0(mat%n_planes + 1:) = 0.0_dp
+    mat%cos_phi(mat%n_planes + 1:) = 1.0_dp
+    mat%sin_phi(mat%n_planes + 1:) = 0.0_dp
   end subroutine derive_flat_beyond
 
   !> The kernel for the effect set (use_wear and use_depth set; `flat_angles`: every plane's

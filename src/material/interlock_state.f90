@@ -6,7 +6,7 @@ module interlock_state
   use interlock_material, only: interlock_material_t, max_planes
   implicit none
   private
-  public :: interlock_state_t, interlock_state_init
+  public :: interlock_state_t, interlock_state_init, interlock_state_3d_t, interlock_state_3d_init
 
   !> The per-plane values have no default value (interlock_state_init sets every one, the
   !> update every one of the material's planes), so that a state declared on every call, the
@@ -27,6 +27,17 @@ module interlock_state
     real(dp) :: diss_friction = 0.0_dp   !< friction dissipation [N/mm]
   end type interlock_state_t
 
+  !> The state of a point of a three-dimensional interface (SPEC section 9): the components
+  !> of the 2D state are the normal and the first in-plane direction t1 (each plane's dip
+  !> components: sf and tauf along e_k), those below the strike components (along q_k) and the
+  !> second in-plane direction t2; the energies are the 2D state's, over all three.
+  type, extends(interlock_state_t) :: interlock_state_3d_t
+    real(dp), dimension(max_planes) :: sf_strike    !< frictional slip along the strike [mm]
+    real(dp), dimension(max_planes) :: tauf_strike  !< friction traction along the strike [MPa]
+    real(dp) :: s_t2 = 0.0_dp       !< relative displacement along t2 [mm]
+    real(dp) :: sigma_t2 = 0.0_dp   !< traction along t2 [MPa]
+  end type interlock_state_3d_t
+
 contains
 
   !> The virgin state (SPEC section 3); pre-fractured: D = 1, beta = 1/(1 - eta).
@@ -44,5 +55,14 @@ contains
       state%beta(1:mat%n_planes) = mat%beta_break
     end if
   end subroutine interlock_state_init
+
+  !> The virgin or pre-fractured state of a three-dimensional point (the strike components 0).
+  pure subroutine interlock_state_3d_init(mat, state)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_state_3d_t), intent(out) :: state
+    call interlock_state_init(mat, state%interlock_state_t)
+    state%sf_strike = 0.0_dp
+    state%tauf_strike = 0.0_dp
+  end subroutine interlock_state_3d_init
 
 end module interlock_state
