@@ -18,7 +18,8 @@ program interlock_bench
   use interlock, only: dp, max_planes, interlock_material_t, interlock_solver_t, interlock_state_t, &
       interlock_info_t, interlock_update, interlock_state_init, scheme_explicit, scheme_implicit, &
       scheme_trapezoidal, scheme_name, status_ok, interlock_version_string, n_properties, &
-      props_to_material, umat_controls_t
+      props_to_material, umat_controls_t, interlock_state_3d_t, interlock_state_3d_init, &
+      interlock_update_3d, interlock_azimuthal_ria, interlock_material_prepare, deg_to_rad
   use interlock_bench_bilinear, only: bilinear_t, bilinear_state_t, bilinear_setup, bilinear_update
   use interlock_bench_scenes, only: scene_t, make_scene, run_scene, slip_at, n_effect_sets, &
       effect_set_names, make_effect_set, make_histories
@@ -67,6 +68,7 @@ program interlock_bench
   write (output_unit, '(a)') 'interlock-bench (interlock ' // interlock_version_string // ')' // &
     merge(' --quick', '        ', quick)
   if (do_cost) call cost_study()
+  if (do_cost) call cost_study_3d()
   if (do_precision) call precision_study()
   if (problems > 0) then
     write (error_unit, '(a,i0,a)') 'interlock-bench: ', problems, ' problem(s), see above'
@@ -601,6 +603,138 @@ contains
     write (b, '(f8.2,"x")') x
     s = trim(adjustl(b))
   end function fmt_ratio
+
+  ! ------------------------------------------------------------------------------------------
+  ! 1b. Cost per call in three dimensions
+  ! ------------------------------------------------------------------------------------------
+
+  !> The three-dimensional update against the 2D one on the cost study's histories, interleaved
+  !> in one run, for the full model (effect set 5) and each scheme: the 2D update; the 3D update
+  !> of the same material with every azimuth 0 and no T2 loading (the histories in the (n, t1)
+  !> plane: target <= 1.5 x the 2D update); the same histories turned by 30 deg in the
+  !> interface plane (T2 loading, the general 3D path); and the `azimuthal` RIA with N_a = 3 on
+  !> the turned histories. Writes DIR/cost3d.csv.
+  subroutine cost_study_3d()
+    integer, parameter :: n_kinds = 4
+    integer, parameter :: n_schemes = 3   !< explicit, implicit, trapezoidal
+    character(len=32), parameter :: kind_names(n_kinds) = [character(len=32) :: '2D', &
+      '3D, in the (n, t1) plane', '3D, turned 30 deg', '3D azimuthal N_a = 3, turned']
+    type(interlock_material_t) :: mat, mat_az
+    type(interlock_solver_t) :: solver
+    integer :: npts, reps, rep, stat, u, fails, kind, scheme, k, inner(0:n_kinds)
+    real(dp) :: min_rep, t0, t1, calls, chk(0:n_kinds), ns(n_kinds, n_schemes), ang
+    real(dp), allocatable :: h(:, :, :), h3(:, :, :), h3t(:, :, :), times(:, :)
+    character(len=256) :: message
+
+    npts = merge(100, 2000, quick)
+    reps = merge(3, 11, quick)
+    min_rep = merge(0.0_dp, 0.004_dp, quick)
+    allocate (h(2, npts, 3), h3(3, npts, 3), h3t(3, npts, 3), times(reps, 0:n_kinds))
+    call make_histories(npts, h)
+    ang = 30.0_dp * deg_to_rad
+    h3(1:2, :, :) = h
+    h3(3, :, :) = 0.0_dp
+    h3t(1, :, :) = h(1, :, :)
+    h3t(2, :, :) = cos(ang) * h(2, :, :)
+    h3t(3, :, :) = sin(ang) * h(2, :, :)
+    calls = real(3 * npts, dp)
+    call make_effect_set(n_effect_sets, mat, stat, message)
+    mat_az = mat
+    call interlock_azimuthal_ria(mat_az, 3, 30.0_dp * deg_to_rad, 7.0_dp * deg_to_rad, 1.0_dp)
+    call interlock_material_prepare(mat_az, stat, message)
+    if (stat /= status_ok) then
+      write (error_unit, '(a)') 'azimuthal RIA: ' // trim(message)
+      error stop 2
+    end if
+    write (output_unit, '(/,a,i0,a,i0,a)') '== Cost per call in 3D: full model, 3 histories x ', &
+      npts, ' points, median of ', reps, ' interleaved repetitions (CPU time)'
+    call open_csv('cost3d.csv', u, 'scheme,update,ns_per_call,ratio_to_2d,calls_per_rep,reps')
+    fails = 0
+    do scheme = 1, n_schemes
+      solver%scheme = scheme
+      chk = 0.0_dp
+      inner = 1
+      do rep = 0, reps
+        call cpu_time(t0)
+        do k = 1, inner(1)
+          call time_interlock_2d_only(mat, solver, h, chk(1), fails)
+        end do
+        call cpu_time(t1)
+        call record_time(rep, 1, t1 - t0, min_rep, inner, times)
+        do kind = 2, n_kinds
+          call cpu_time(t0)
+          do k = 1, inner(kind)
+            if (kind == 2) then
+              call time_interlock_3d(mat, solver, h3, chk(kind), fails)
+            else if (kind == 3) then
+              call time_interlock_3d(mat, solver, h3t, chk(kind), fails)
+            else
+              call time_interlock_3d(mat_az, solver, h3t, chk(kind), fails)
+            end if
+          end do
+          call cpu_time(t1)
+          call record_time(rep, kind, t1 - t0, min_rep, inner, times)
+        end do
+      end do
+      do kind = 1, n_kinds
+        ns(kind, scheme) = 1.0e9_dp * median(times(:, kind)) / calls
+        write (u, '(a,",",a,",",es12.5,",",es12.5,",",i0,",",i0)') trim(scheme_name(scheme)), &
+          trim(kind_names(kind)), ns(kind, scheme), ns(kind, scheme) / ns(1, scheme), &
+          nint(calls), reps
+      end do
+    end do
+    close (u)
+    write (output_unit, '(a32,3(1x,a22))') 'update', (trim(scheme_name(scheme)) // &
+      ' ns (x 2D)', scheme = 1, n_schemes)
+    do kind = 1, n_kinds
+      write (output_unit, '(a32,3(1x,f12.1,1x,"(",f6.2,")",1x))') kind_names(kind), &
+        (ns(kind, scheme), ns(kind, scheme) / ns(1, scheme), scheme = 1, n_schemes)
+    end do
+    write (output_unit, '(a)') 'targets: 3D update in the (n, t1) plane <= 1.5 x 2D: ' // &
+      verdict(all(ns(2, :) / ns(1, :) <= 1.5_dp)) // ' (largest ' // &
+      fmt_ratio(maxval(ns(2, :) / ns(1, :))) // ')'
+    if (fails > 0) then
+      write (error_unit, '(a,i0,a)') 'cost study in 3D: ', fails, ' updates failed'
+      problems = problems + 1
+    end if
+  end subroutine cost_study_3d
+
+  !> time_interlock without the substep count (the 3D cost study's 2D row).
+  subroutine time_interlock_2d_only(mat, solver, h, chk, fails)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    real(dp), intent(in) :: h(:, :, :)
+    real(dp), intent(inout) :: chk
+    integer, intent(inout) :: fails
+    integer :: nsub
+    call time_interlock(mat, solver, h, chk, fails, nsub)
+  end subroutine time_interlock_2d_only
+
+  !> The 3D update along the histories h(3, :, :).
+  subroutine time_interlock_3d(mat, solver, h, chk, fails)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    real(dp), intent(in) :: h(:, :, :)
+    real(dp), intent(inout) :: chk
+    integer, intent(inout) :: fails
+    type(interlock_state_3d_t) :: st(2)
+    type(interlock_info_t) :: info
+    real(dp) :: sig(3), tangent(3, 3), acc
+    integer :: ih, i, cur
+    acc = 0.0_dp
+    do ih = 1, size(h, 3)
+      call interlock_state_3d_init(mat, st(1))
+      cur = 1
+      do i = 1, size(h, 2)
+        call interlock_update_3d(mat, solver, h(:, i, ih), st(cur), st(3 - cur), sig, tangent, &
+                                 info)
+        if (info%status /= status_ok) fails = fails + 1
+        acc = acc + sum(sig) + sum(tangent)
+        cur = 3 - cur
+      end do
+    end do
+    chk = chk + acc
+  end subroutine time_interlock_3d
 
   subroutine time_interlock(mat, solver, h, chk, fails, nsub)
     type(interlock_material_t), intent(in) :: mat

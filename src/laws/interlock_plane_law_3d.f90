@@ -12,11 +12,11 @@ module interlock_plane_law_3d
   use interlock_kinds, only: dp
   use interlock_dual, only: dual_t, constant, operator(+), operator(-), operator(*), &
       operator(/), sqrt, exp, cos, sin, abs, max, min
-  use interlock_material, only: interlock_material_t
+  use interlock_material, only: interlock_material_t, max_planes
   implicit none
   private
   public :: plane_dual_t, plane_response_3d_t, plane_law_3d, plane_angle_frame, worn_angle_3d, &
-            start_pressure_3d
+            start_pressure_3d, azimuths_t, azimuths_of
 
   !> One plane's state (SPEC section 9: D, beta, sf(2), zeta, theta, tauf(2); vectors in the
   !> plane's (e, q) frame), with its derivatives.
@@ -39,7 +39,27 @@ module interlock_plane_law_3d
     real(dp) :: psi     !< stored energy at the end of the step [N/mm]
   end type plane_response_3d_t
 
+  !> The dip directions of the planes: cos and sin of each azimuth (1 and 0 to the bit for
+  !> phi = 0), computed once per update.
+  type :: azimuths_t
+    real(dp) :: c(max_planes) = 1.0_dp, s(max_planes) = 0.0_dp
+    logical :: all_zero = .true.   !< every plane's azimuth is 0
+  end type azimuths_t
+
 contains
+
+  pure subroutine azimuths_of(mat, az)
+    type(interlock_material_t), intent(in) :: mat
+    type(azimuths_t), intent(out) :: az
+    integer :: k
+    do k = 1, mat%n_planes
+      if (mat%phi(k) < 0.0_dp .or. mat%phi(k) > 0.0_dp) then
+        az%c(k) = cos(mat%phi(k))
+        az%s(k) = sin(mat%phi(k))
+        az%all_zero = .false.
+      end if
+    end do
+  end subroutine azimuths_of
 
   !> cos and sin of plane k's inclination theta: while unworn (theta = theta_0 to the bit) the
   !> material's values, as the 2D law takes them.
@@ -68,26 +88,28 @@ contains
             mat%thetaf_eff(k)
   end function worn_angle_3d
 
-  !> mu p of the start state on plane k at its start angle (frame c, sn), s_o the start
+  !> mu p of the start state on a plane of azimuth frame (cp, sp) at its start angle (frame c,
+  !> sn), s_o the start
   !> separation; 0 when the start state is separated (decision D7): the trapezoidal scheme's
   !> start value.
-  pure type(dual_t) function start_pressure_3d(mat, k, c, sn, s_o) result(mu_p)
+  pure type(dual_t) function start_pressure_3d(mat, cp, sp, c, sn, s_o) result(mu_p)
     type(interlock_material_t), intent(in) :: mat
-    integer, intent(in) :: k
+    real(dp), intent(in) :: cp, sp
     type(dual_t), intent(in) :: c, sn, s_o(3)
     type(dual_t) :: dip
     mu_p = constant(0.0_dp)
     if (s_o(1)%v * mat%inv_h_n < 1.0_dp) then
-      dip = mat%cos_phi(k) * s_o(2) + mat%sin_phi(k) * s_o(3)
+      dip = cp * s_o(2) + sp * s_o(3)
       mu_p = mat%mu_eff * mat%kn * max(0.0_dp, -(c * s_o(1) + sn * dip))
     end if
   end function start_pressure_3d
 
-  !> Plane k at angle theta (frame c, sn) from the start state o to the macro separation s
-  !> (SPEC section 9, one step, points 2-6 and the energies).
-  pure subroutine plane_law_3d(mat, k, c, sn, s, o, p)
+  !> A plane of azimuth frame (cp, sp) = (cos, sin)(phi) at angle theta (frame c, sn) from the
+  !> start state o to the macro separation s (SPEC section 9, one step, points 2-6 and the
+  !> energies).
+  pure subroutine plane_law_3d(mat, cp, sp, c, sn, s, o, p)
     type(interlock_material_t), intent(in) :: mat
-    integer, intent(in) :: k
+    real(dp), intent(in) :: cp, sp
     type(dual_t), intent(in) :: c, sn, s(3)
     type(plane_dual_t), intent(in) :: o
     type(plane_response_3d_t), intent(out) :: p
@@ -98,10 +120,10 @@ contains
     ! Kinematics: the separation's component along the dip direction d = cos(phi) t1 +
     ! sin(phi) t2, then m = cos(theta) n + sin(theta) d, e = -sin(theta) n + cos(theta) d and
     ! the strike q = -sin(phi) t1 + cos(phi) t2.
-    dip = mat%cos_phi(k) * s(2) + mat%sin_phi(k) * s(3)
+    dip = cp * s(2) + sp * s(3)
     sl_n = c * s(1) + sn * dip
     sl_t(1) = -(sn * s(1)) + c * dip
-    sl_t(2) = -(mat%sin_phi(k) * s(2)) + mat%cos_phi(k) * s(3)
+    sl_t(2) = -(sp * s(2)) + cp * s(3)
 
     ! Damage, isotropic in the microplane: beta_eq from <s_kn>_+ and |s_kt|.
     pos = max(0.0_dp, sl_n)
@@ -169,8 +191,8 @@ contains
     sig_t(2) = (1.0_dp - p%dmg) * (mat%kt * sl_t(2)) + p%dmg * p%tauf(2)
     sig_dip = sn * sig_n + c * sig_t(1)
     p%sig(1) = c * sig_n - sn * sig_t(1)
-    p%sig(2) = mat%cos_phi(k) * sig_dip - mat%sin_phi(k) * sig_t(2)
-    p%sig(3) = mat%sin_phi(k) * sig_dip + mat%cos_phi(k) * sig_t(2)
+    p%sig(2) = cp * sig_dip - sp * sig_t(2)
+    p%sig(3) = sp * sig_dip + cp * sig_t(2)
 
     ! Energies, as the 2D law's (interlock_plane_law) with vectors: the frictional work on the
     ! damaged part, the damage dissipation Y dD (the elastic part exact, the friction part at

@@ -18,10 +18,11 @@ module interlock_material
   public :: effect_names, n_effects
   public :: kernel_general, kernel_flat, kernel_inclined, kernel_cohesive
 
-  !> Planes of a RIA: the `azimuthal` RIA of SPEC section 9 has 1 + 2 N_a planes, N_a <= 6.
-  integer, parameter :: max_planes = 13
-  !> The largest number of azimuths of interlock_azimuthal_ria.
-  integer, parameter :: max_azimuths = (max_planes - 1) / 2
+  !> Planes of a RIA (the `azimuthal` RIA of SPEC section 9 has 1 + 2 N_a planes). Every
+  !> point's material and state hold this many (the UMAT builds them on every call).
+  integer, parameter :: max_planes = 8
+  !> The largest number of azimuths of interlock_azimuthal_ria (1 + 2 N_a <= max_planes).
+  integer, parameter :: max_azimuths = 3
   !> Integration schemes (SPEC section 5, D11): the paper's explicit one, backward Euler, and
   !> the trapezoidal rule on the wear equation (second order, consistent at a zero increment).
   integer, parameter :: scheme_explicit = 1, scheme_implicit = 2, scheme_trapezoidal = 3
@@ -86,9 +87,6 @@ module interlock_material
     real(dp) :: thetaf_eff(max_planes)
     real(dp) :: inv_zeta0(max_planes)
     real(dp) :: cos0(max_planes), sin0(max_planes)
-    real(dp) :: cos_phi(max_planes), sin_phi(max_planes)   !< of the azimuths
-    !> every azimuth 0: a three-dimensional update without strike components is the 2D one
-    logical  :: azimuths_zero
     !> Inverses for the kernels (a multiplication instead of a division on the hot path), and
     !> c/(2 eta) with c = K_n s_0n^2: decohesion energy per unit growth of beta.
     real(dp) :: inv_s0n, inv_s0t, inv_eta, inv_kt
@@ -307,16 +305,6 @@ contains
         end do
       end if
     end do
-    ! The azimuths: a dip direction along t1 (phi = 0) to the bit.
-    do k = 1, mat%n_planes
-      mat%cos_phi(k) = 1.0_dp
-      mat%sin_phi(k) = 0.0_dp
-      if (.not. equal(mat%phi(k), 0.0_dp)) then
-        mat%cos_phi(k) = cos(mat%phi(k))
-        mat%sin_phi(k) = sin(mat%phi(k))
-      end if
-    end do
-    mat%azimuths_zero = all(equal(mat%phi(1:mat%n_planes), 0.0_dp))
     call derive_flat_beyond(mat)
     mat%use_wear = any(mat%plane_wears(1:mat%n_planes))
     call derive_kernel(mat, all(equal(mat%theta_init(1:mat%n_planes), 0.0_dp)))
@@ -366,9 +354,6 @@ contains
       mat%cos0(3) = mat%cos0(1)
       mat%sin0(3) = sign(mat%sin0(1), mat%theta_init(3))
     end if
-    mat%cos_phi(1:3) = 1.0_dp
-    mat%sin_phi(1:3) = 0.0_dp
-    mat%azimuths_zero = .true.
     call derive_flat_beyond(mat)
     mat%use_wear = mat%plane_wears(1) .or. mat%plane_wears(3)
     call derive_kernel(mat, equal(mat%theta_init(1), 0.0_dp))
@@ -448,8 +433,6 @@ contains
     mat%inv_zeta0(mat%n_planes + 1:) = 0.0_dp
     mat%cos0(mat%n_planes + 1:) = 1.0_dp
     mat%sin0(mat%n_planes + 1:) = 0.0_dp
-    mat%cos_phi(mat%n_planes + 1:) = 1.0_dp
-    mat%sin_phi(mat%n_planes + 1:) = 0.0_dp
   end subroutine derive_flat_beyond
 
   !> The kernel for the effect set (use_wear and use_depth set; `flat_angles`: every plane's

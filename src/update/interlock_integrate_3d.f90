@@ -21,7 +21,7 @@ module interlock_integrate_3d
   use interlock_wear, only: wear_root_t, wear_root_begin, wear_root_update, worn_angle_slope
   use interlock_plane_law, only: plane_frame, wear_angle_error, add_wear_error, wear_error_of
   use interlock_plane_law_3d, only: plane_dual_t, plane_response_3d_t, plane_law_3d, &
-      plane_angle_frame, worn_angle_3d, start_pressure_3d
+      plane_angle_frame, worn_angle_3d, start_pressure_3d, azimuths_t, azimuths_of
   use interlock_integrate, only: interlock_update
   implicit none
   private
@@ -65,8 +65,8 @@ contains
         tangent(1:2, 3) = 0.0_dp
         tangent(3, 3) = strike_stiffness(mat, solver%scheme, s, old, new)
         sigma(3) = 0.0_dp
-        new%sf_strike = old%sf_strike
-        new%tauf_strike = old%tauf_strike
+        new%sf_strike(1:mat%n_planes) = 0.0_dp
+        new%tauf_strike(1:mat%n_planes) = 0.0_dp
         new%s_t2 = s(3)
         new%sigma_t2 = 0.0_dp
         return
@@ -91,7 +91,9 @@ contains
     type(interlock_state_3d_t), intent(in) :: old
     integer :: k
     in_dip_planes = .false.
-    if (.not. mat%azimuths_zero) return
+    do k = 1, mat%n_planes
+      if (.not. zero_bits(mat%phi(k))) return
+    end do
     if (.not. (zero_bits(s(3)) .and. zero_bits(old%s_t2))) return
     do k = 1, mat%n_planes
       if (.not. (zero_bits(old%sf_strike(k)) .and. zero_bits(old%tauf_strike(k)))) return
@@ -156,6 +158,7 @@ contains
     type(interlock_state_3d_t), intent(inout) :: new
     real(dp), intent(out) :: sigma(3), tangent(3, 3)
     type(interlock_info_t), intent(inout) :: info
+    type(azimuths_t) :: az
     integer :: k
 
     if (.not. mat%prepared) then
@@ -177,14 +180,15 @@ contains
       return
     end if
 
+    call azimuths_of(mat, az)
     if (solver%substep_tol > 0.0_dp) then
-      call substep(mat, solver, s, old, new, tangent, info, solver%substep_tol, 1.0_dp)
+      call substep(mat, az, solver, s, old, new, tangent, info, solver%substep_tol, 1.0_dp)
     else
-      call substep(mat, solver, s, old, new, tangent, info, -1.0_dp, 1.0_dp)
+      call substep(mat, az, solver, s, old, new, tangent, info, -1.0_dp, 1.0_dp)
       if (info%status == status_local_failure) then
         ! The one-step solve failed: retry on sub-increments, split only as failures require.
         info%status = status_ok
-        call substep(mat, solver, s, old, new, tangent, info, huge(1.0_dp), 0.5_dp)
+        call substep(mat, az, solver, s, old, new, tangent, info, huge(1.0_dp), 0.5_dp)
       end if
     end if
     if (info%status /= status_ok) then
@@ -228,8 +232,9 @@ contains
   !> control on the embedded wear estimate; tol = huge, sizes split only as failures require.
   !> The planes' state carries its derivative with respect to the end of the increment from
   !> one sub-increment to the next, so that the tangent is the exact one of the chain.
-  pure subroutine substep(mat, solver, s, old, new, tangent, info, tol, h_first)
+  pure subroutine substep(mat, az, solver, s, old, new, tangent, info, tol, h_first)
     type(interlock_material_t), intent(in) :: mat
+    type(azimuths_t), intent(in) :: az
     type(interlock_solver_t), intent(in) :: solver
     real(dp), intent(in) :: s(3), tol, h_first
     type(interlock_state_3d_t), intent(in) :: old
@@ -279,7 +284,7 @@ contains
           ' sub-increments: retry with a smaller increment'
         return
       end if
-      call ria_step(mat, solver, s_end, s_start, cur, planes, trial, planes_trial, sig, it, &
+      call ria_step(mat, az, solver, s_end, s_start, cur, planes, trial, planes_trial, sig, it, &
                     solved, .not. single, err)
       info%newton_iterations = max(info%newton_iterations, it)
       if (single .and. .not. solved) then
@@ -389,9 +394,10 @@ contains
   !> Every plane of the RIA over one (sub-)increment from the state `old` (its planes `o`, with
   !> their derivatives) at separation s_start to s_end: the traction with its derivatives, the
   !> end state and its planes; `estimate`: the embedded error estimate of the wear (`err`).
-  pure subroutine ria_step(mat, solver, s_end, s_start, old, o, new, q, sig, iterations, ok, &
+  pure subroutine ria_step(mat, az, solver, s_end, s_start, old, o, new, q, sig, iterations, ok, &
                            estimate, err)
     type(interlock_material_t), intent(in) :: mat
+    type(azimuths_t), intent(in) :: az
     type(interlock_solver_t), intent(in) :: solver
     type(dual_t), intent(in) :: s_end(3), s_start(3)
     type(interlock_state_3d_t), intent(in) :: old
@@ -442,13 +448,13 @@ contains
         call store_plane(q(k), k, new)
       end do
     else
-      n_eval = merge(1, mat%n_planes, mat%flat .and. mat%azimuths_zero)
+      n_eval = merge(1, mat%n_planes, mat%flat .and. az%all_zero)
       do k = 1, n_eval
-        call plane_step(mat, solver, k, s_end, s_start, o(k), estimate, q(k), p, it, ok, e, &
-                        dsig_dtheta)
+        call plane_step(mat, az%c(k), az%s(k), solver, k, s_end, s_start, o(k), estimate, q(k), &
+                        p, it, ok, e, dsig_dtheta)
         if (.not. ok) return
         iterations = max(iterations, it)
-        gam = merge(1.0_dp, mat%gamma_hat(k), mat%flat .and. mat%azimuths_zero)
+        gam = merge(1.0_dp, mat%gamma_hat(k), mat%flat .and. az%all_zero)
         w = gam * area
         if (estimate) call add_wear_error(e, w%v, [dsig_dtheta(1), max(abs(dsig_dtheta(2)), &
                                           abs(dsig_dtheta(3)))], err_angle, err_traction)
@@ -484,9 +490,10 @@ contains
   !> differentiated implicitly at its root. Returns the end state q, the response p at the
   !> angle of the traction (its derivative column 4: d / d theta at fixed s), and with
   !> `estimate` the wear's embedded error estimate e [rad] and d sig / d theta.
-  pure subroutine plane_step(mat, solver, k, s, s_o, o, estimate, q, p, iterations, ok, e, &
-                             dsig_dtheta)
+  pure subroutine plane_step(mat, cp, sp, solver, k, s, s_o, o, estimate, q, p, iterations, &
+                             ok, e, dsig_dtheta)
     type(interlock_material_t), intent(in) :: mat
+    real(dp), intent(in) :: cp, sp   !< cos and sin of the plane's azimuth
     type(interlock_solver_t), intent(in) :: solver
     integer, intent(in) :: k
     type(dual_t), intent(in) :: s(3), s_o(3)
@@ -511,7 +518,7 @@ contains
     trapezoidal = solver%scheme == scheme_trapezoidal
     wears = mat%plane_wears(k)
     call plane_angle_frame(mat, k, o%theta, c_o, sn_o)
-    g_trap = (0.5_dp * o%dmg) * start_pressure_3d(mat, k, c_o, sn_o, s_o)
+    g_trap = (0.5_dp * o%dmg) * start_pressure_3d(mat, cp, sp, c_o, sn_o, s_o)
     if (.not. coupled) then
       a_end = 0.0_dp
       g_slip = o%dmg * abs(o%tauf(1))
@@ -529,7 +536,7 @@ contains
       ! d zeta); at zeta_o the stored angle and its slope, no exponential.
       thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), o%theta%v)
       theta%d(4) = thp
-      call evaluate(mat, k, theta, s, o, a_end, g_slip, trapezoidal, p, drv)
+      call evaluate(mat, cp, sp, k, theta, s, o, a_end, g_slip, trapezoidal, p, drv)
       fp = 1.0_dp - drv%d(4)
       zeta = o%zeta
       if (drv%v > 0.0_dp) then
@@ -538,7 +545,7 @@ contains
           z = constant(rt%x)
           z%d(4) = 1.0_dp
           theta = worn_angle_3d(mat, k, z)
-          call evaluate(mat, k, theta, s, o, a_end, g_slip, trapezoidal, p, drv)
+          call evaluate(mat, cp, sp, k, theta, s, o, a_end, g_slip, trapezoidal, p, drv)
           fp = 1.0_dp - drv%d(4)
           call wear_root_update(rt, rt%x - o%zeta%v - drv%v, fp, solver%newton_tol, &
                                 solver%newton_max_iterations)
@@ -559,7 +566,7 @@ contains
     end if
     ! The traction's angle with column 4 = d / d theta at fixed s (the error estimate's).
     theta%d(4) = 1.0_dp
-    call evaluate(mat, k, theta, s, o, a_end, g_slip, trapezoidal, p, drv)
+    call evaluate(mat, cp, sp, k, theta, s, o, a_end, g_slip, trapezoidal, p, drv)
     if (.not. (coupled .and. wears)) then
       zeta = o%zeta + drv
       if (.not. coupled .and. wears) then
@@ -593,8 +600,9 @@ contains
   !> The plane law at angle theta and the scheme's wear driver G = a_end D |tau_f,1| |d sf_1| +
   !> g_slip |d sf_1| (explicit, implicit), with the trapezoidal start value the dip component of
   !> D_o mu p_o n: g_slip |d sf_1| times the dip share of the step's slip direction n.
-  pure subroutine evaluate(mat, k, theta, s, o, a_end, g_slip, trapezoidal, p, drv)
+  pure subroutine evaluate(mat, cp, sp, k, theta, s, o, a_end, g_slip, trapezoidal, p, drv)
     type(interlock_material_t), intent(in) :: mat
+    real(dp), intent(in) :: cp, sp
     integer, intent(in) :: k
     type(dual_t), intent(in) :: theta, s(3), g_slip
     type(plane_dual_t), intent(in) :: o
@@ -604,7 +612,7 @@ contains
     type(dual_t), intent(out) :: drv
     type(dual_t) :: c, sn
     call plane_angle_frame(mat, k, theta, c, sn)
-    call plane_law_3d(mat, k, c, sn, s, o, p)
+    call plane_law_3d(mat, cp, sp, c, sn, s, o, p)
     if (trapezoidal) then
       drv = a_end * p%wfric_dip + g_slip * (p%slip_dip * p%dip_share)
     else
