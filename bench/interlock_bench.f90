@@ -9,7 +9,7 @@
 !>    the observed order, and the CPU time each scheme needs for a given error.
 !>
 !> Usage: interlock-bench --out DIR [--quick] [--only cost|precision] [--target ERR]
-!> Writes DIR/cost.csv, DIR/umat_cost.csv, DIR/work_precision.csv, DIR/reference.csv and
+!> Writes DIR/cost.csv, DIR/umat_cost.csv, DIR/cost3d.csv, DIR/work_precision.csv, DIR/reference.csv and
 !> DIR/wp_summary.csv (DIR is required: nothing is written into the working folder unasked). A usage error prints the
 !> usage on stderr and exits with status 2; --help prints it on stdout (status 0).
 program interlock_bench
@@ -193,7 +193,7 @@ contains
       '(one run of a scene as CSV on stdout; SCENE fig11|fig12|granite, ' // &
       'SCHEME explicit|implicit|trapezoidal)'
     write (unit, '(a)') '       interlock-bench --help | --version'
-    write (unit, '(a)') '  writes DIR/cost.csv, DIR/umat_cost.csv, DIR/work_precision.csv, ' // &
+    write (unit, '(a)') '  writes DIR/cost.csv, DIR/umat_cost.csv, DIR/cost3d.csv, DIR/work_precision.csv, ' // &
       'DIR/reference.csv, DIR/wp_summary.csv (DIR must exist)'
     write (unit, '(a)') '  exit status: 0 done, 1 a problem found (see the output), 2 a usage error'
     if (len_trim(message) > 0) call exit_program(2)

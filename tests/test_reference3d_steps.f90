@@ -141,7 +141,7 @@ contains
       end do
       worst_state = max(worst_state, err_state)
       k_ref = transpose(reshape(row(ncol - 8:ncol), [3, 3]))
-      k_scale = maxval(abs(k_ref))
+      k_scale = max(maxval(abs(k_ref)), tiny(1.0_dp))
       err_k = maxval(abs(tangent - k_ref)) / k_scale
       if (err_k > 1.0e-5_dp) then
         ! Straddling a kink, the library's tangent is one of its one-sided derivatives.
@@ -183,7 +183,7 @@ contains
     real(dp) :: sigma0(3), sigma(3), t(3, 3), sp(3), h, fwd(3), bwd(3), scale
     integer :: j
     call interlock_update_3d(mat, solver, s, old, new, sigma0, t, info)
-    scale = maxval(abs(tangent))
+    scale = max(maxval(abs(tangent)), tiny(1.0_dp))
     err = 0.0_dp
     do j = 1, 3
       h = 1.0e-9_dp * max(maxval(abs(s)), 1.0e-3_dp)
