@@ -4,8 +4,9 @@
 !> depth, no wear). The traction and the new state must agree to round-off (both compute the
 !> same scheme; the reference solves the wear equation to full precision by bracketing); the
 !> tangent, exact here, against the reference's central differences (relative step 1e-7, so
-!> about 1e-7 accurate away from kinks; a step whose differences straddle a kink is reported
-!> and skipped, the rest must agree to 1e-5 of the largest entry).
+!> about 1e-7 accurate away from kinks; a step whose differences straddle a kink is reported,
+!> and the library's tangent must there equal one of its own one-sided differences; the rest
+!> must agree to 1e-5 of the largest entry).
 program test_reference3d_steps
   use interlock
   use interlock_assert, only: assert_true, run_case, suite_summary
@@ -95,7 +96,7 @@ contains
     real(dp) :: s_old(3), s(3), sigma(3), tangent(3, 3), sig_ref(3), k_ref(3, 3), new_ref(8), &
                 err_sig, err_state, err_k, k_scale, sig_scale, state_scale(8), worst_sig, &
                 worst_state, worst_k
-    integer :: unit, ios, n, k, i, ncol, kinks
+    integer :: unit, ios, n, k, ncol, kinks, n_rows
     character(len=64) :: schemes(3) = [character(len=64) :: 'explicit', 'implicit', 'trapezoidal']
     character(len=256) :: path
 
@@ -114,9 +115,11 @@ contains
     worst_state = 0.0_dp
     worst_k = 0.0_dp
     kinks = 0
+    n_rows = 0
     do
       read (unit, *, iostat=ios) row
       if (ios /= 0) exit
+      n_rows = n_rows + 1
       s_old = row(2:4)
       s = row(5:7)
       call interlock_state_3d_init(mat, old)
@@ -166,8 +169,7 @@ contains
       worst_state, worst_k, '; tangents off by more than 1e-5: ', kinks
     call assert_true(worst_sig <= 1.0e-10_dp, 'traction to round-off')
     call assert_true(worst_state <= 1.0e-10_dp, 'state to round-off')
-    call assert_true(kinks <= 2, 'at most 2 of 40 steps straddle a kink')
-    i = 0
+    call assert_true(kinks <= max(2, n_rows / 20), 'at most 5 % of the steps straddle a kink')
   end subroutine check_file
 
   !> The smallest relative distance of `tangent` to the update's forward or backward
