@@ -15,9 +15,11 @@ module interlock_dual
 
   integer, parameter :: n_dual = 4
 
+  !> No default values: the law's many intermediate numbers are each set before use, and a
+  !> default would clear them all on every entry.
   type :: dual_t
-    real(dp) :: v = 0.0_dp           !< the value
-    real(dp) :: d(n_dual) = 0.0_dp   !< its derivatives
+    real(dp) :: v             !< the value
+    real(dp) :: d(n_dual)     !< its derivatives
   end type dual_t
 
   interface operator(+)

@@ -42,8 +42,8 @@ module interlock_plane_law_3d
   !> The dip directions of the planes: cos and sin of each azimuth (1 and 0 to the bit for
   !> phi = 0), computed once per update.
   type :: azimuths_t
-    real(dp) :: c(max_planes) = 1.0_dp, s(max_planes) = 0.0_dp
-    logical :: all_zero = .true.   !< every plane's azimuth is 0
+    real(dp) :: c(max_planes), s(max_planes)
+    logical :: all_zero   !< every plane's azimuth is 0
   end type azimuths_t
 
 contains
@@ -52,11 +52,15 @@ contains
     type(interlock_material_t), intent(in) :: mat
     type(azimuths_t), intent(out) :: az
     integer :: k
+    az%all_zero = .true.
     do k = 1, mat%n_planes
       if (mat%phi(k) < 0.0_dp .or. mat%phi(k) > 0.0_dp) then
         az%c(k) = cos(mat%phi(k))
         az%s(k) = sin(mat%phi(k))
         az%all_zero = .false.
+      else
+        az%c(k) = 1.0_dp
+        az%s(k) = 0.0_dp
       end if
     end do
   end subroutine azimuths_of

@@ -517,8 +517,12 @@ contains
     coupled = solver%scheme /= scheme_explicit
     trapezoidal = solver%scheme == scheme_trapezoidal
     wears = mat%plane_wears(k)
-    call plane_angle_frame(mat, k, o%theta, c_o, sn_o)
-    g_trap = (0.5_dp * o%dmg) * start_pressure_3d(mat, cp, sp, c_o, sn_o, s_o)
+    ! The trapezoidal start value D_o mu p_o / 2 (also the error estimate's reference).
+    g_trap = constant(0.0_dp)
+    if (trapezoidal .or. estimate) then
+      call plane_angle_frame(mat, k, o%theta, c_o, sn_o)
+      g_trap = (0.5_dp * o%dmg) * start_pressure_3d(mat, cp, sp, c_o, sn_o, s_o)
+    end if
     if (.not. coupled) then
       a_end = 0.0_dp
       g_slip = o%dmg * abs(o%tauf(1))
