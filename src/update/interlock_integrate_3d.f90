@@ -108,15 +108,19 @@ contains
   end function zero_bits
 
   !> d sigma_T2 / d s_T2 of a one-step update in the (n, t1) plane (azimuths 0): each plane's
-  !> d sigma_kt,2 / d s_kt,2 = (1 - D) K_t + D d tau_f,2 / d s_kt,2, with K_t sticking,
-  !> K_t mu p / |tau_tr| sliding (the radial return's transverse stiffness) and 0 where the
+  !> d sigma_kt,2 / d s_kt,2 = (1 - D) K_t + D k_f, k_f = d tau_f,2 / d s_kt,2: K_t sticking,
+  !> K_t mu p / |tau_tr| sliding (the radial return's transverse stiffness), 0 where the
   !> damaged part is free; the damage and the angle do not change to first order in s_T2.
+  !> Sliding, the trial traction is the friction traction plus K_t times the slip of the step
+  !> (both along the slip), so k_f = K_t |tau_f| / (|tau_f| + K_t |sf - sf_o|), which also
+  !> gives K_t while sticking: no frame is needed but where tau_f = 0 (a free plane, or a
+  !> closed one exactly at its trial traction 0).
   pure real(dp) function strike_stiffness(mat, scheme, s, old, new) result(k33)
     type(interlock_material_t), intent(in) :: mat
     integer, intent(in) :: scheme
     real(dp), intent(in) :: s(3)
     type(interlock_state_3d_t), intent(in) :: old, new
-    real(dp) :: area, darea, c, sn, sl_n, sl_t, mu_p, tr, k_f, gam
+    real(dp) :: area, darea, c, sn, sl_n, atau, k_f, gam
     integer :: k, n_eval
     k33 = 0.0_dp
     area = 1.0_dp
@@ -124,24 +128,20 @@ contains
     if (area <= 0.0_dp) return
     n_eval = merge(1, mat%n_planes, mat%flat)
     do k = 1, n_eval
-      ! the angle the traction was computed at: the start one in the explicit scheme
-      if (scheme == scheme_explicit) then
-        call plane_frame(mat, k, old%theta(k), c, sn)
+      atau = abs(new%tauf(k))
+      if (atau > 0.0_dp) then
+        k_f = mat%kt * (atau / (atau + mat%kt * abs(new%sf(k) - old%sf(k))))
       else
-        call plane_frame(mat, k, new%theta(k), c, sn)
-      end if
-      sl_n = c * s(1) + sn * s(2)
-      sl_t = -sn * s(1) + c * s(2)
-      k_f = 0.0_dp
-      mu_p = 0.0_dp
-      if (mat%use_friction) mu_p = -mat%mu_eff * mat%kn * min(0.0_dp, sl_n)
-      if (mu_p > 0.0_dp) then
-        tr = abs(mat%kt * (sl_t - old%sf(k)))
-        if (tr <= mu_p) then
-          k_f = mat%kt
+        ! closed (mu p > 0: sticking at a zero trial traction) or free; the angle the traction
+        ! was computed at: the start one in the explicit scheme
+        if (scheme == scheme_explicit) then
+          call plane_frame(mat, k, old%theta(k), c, sn)
         else
-          k_f = mat%kt * (mu_p / tr)
+          call plane_frame(mat, k, new%theta(k), c, sn)
         end if
+        sl_n = c * s(1) + sn * s(2)
+        k_f = 0.0_dp
+        if (mat%use_friction .and. sl_n < 0.0_dp) k_f = mat%kt
       end if
       gam = merge(1.0_dp, mat%gamma_hat(k), mat%flat)
       k33 = k33 + gam * area * ((1.0_dp - new%damage(k)) * mat%kt + new%damage(k) * k_f)
