@@ -49,8 +49,10 @@ add_test(NAME stability_fuzz_3d COMMAND interlock-fuzz --3d 50000 --seed 5)
 set_tests_properties(stability_fuzz_3d PROPERTIES TIMEOUT 600 LABELS stability
   PASS_REGULAR_EXPRESSION "--3d: seed 5, [0-9]+ materials .*failures 0;"
   FAIL_REGULAR_EXPRESSION "FAIL|ERROR STOP|Floating-point exception")
-# The same with garbage separations of any finite magnitude (beyond separation_bound too):
-# the update must refuse them or return finite values.
+# The same with garbage separations of any finite magnitude (beyond separation_bound too) and
+# garbage angles (theta0, phi): the update must refuse them or return finite values, the
+# material's
+# preparation must refuse them without a trap.
 add_test(NAME stability_fuzz_3d_beyond_bound
   COMMAND interlock-fuzz --3d 20000 --seed 6 --beyond-bound)
 set_tests_properties(stability_fuzz_3d_beyond_bound PROPERTIES TIMEOUT 600 LABELS stability

