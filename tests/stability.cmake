@@ -51,8 +51,7 @@ set_tests_properties(stability_fuzz_3d PROPERTIES TIMEOUT 600 LABELS stability
   FAIL_REGULAR_EXPRESSION "FAIL|ERROR STOP|Floating-point exception")
 # The same with garbage separations of any finite magnitude (beyond separation_bound too) and
 # garbage angles (theta0, phi): the update must refuse them or return finite values, the
-# material's
-# preparation must refuse them without a trap.
+# material's preparation must refuse them without a trap.
 add_test(NAME stability_fuzz_3d_beyond_bound
   COMMAND interlock-fuzz --3d 20000 --seed 6 --beyond-bound)
 set_tests_properties(stability_fuzz_3d_beyond_bound PROPERTIES TIMEOUT 600 LABELS stability
