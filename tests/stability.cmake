@@ -19,7 +19,7 @@ set_tests_properties(stability_matrix PROPERTIES
 # The fuzzer: CTest runs 1e5 updates with a fixed seed; a long run is
 # `interlock-fuzz --seed 7 --updates 10000000`. Failing inputs are written as replay decks in
 # the build tree.
-add_executable(interlock-fuzz test_umat_interface.f90 fuzz/interlock_fuzz.f90)
+add_executable(interlock-fuzz test_umat_interface.f90 fuzz/fuzz_3d.f90 fuzz/interlock_fuzz.f90)
 target_link_libraries(interlock-fuzz PRIVATE interlock_stability_tools interlock::interlock
   interlock_umat interlock_cli)
 target_compile_options(interlock-fuzz PRIVATE ${INTERLOCK_FFLAGS})
@@ -39,6 +39,23 @@ set_tests_properties(stability_fuzz PROPERTIES TIMEOUT 600 LABELS stability)
 add_test(NAME stability_fuzz_garbage COMMAND interlock-fuzz --garbage 20000 --seed 3)
 set_tests_properties(stability_fuzz_garbage PROPERTIES TIMEOUT 600 LABELS stability
   PASS_REGULAR_EXPRESSION "--garbage: seed 3, [0-9]+ UMAT calls, [0-9]+ rejected, failures 0\n  thin layer \\(NTENS 6 and 4, Abaqus and CalculiX\\): [0-9]+ calls"
+  FAIL_REGULAR_EXPRESSION "FAIL|ERROR STOP|Floating-point exception")
+
+# The three-dimensional update (interlock_update_3d): random materials with azimuths, random
+# 3D histories, garbage separations, garbled materials and scheme codes; status codes only,
+# never a NaN; the tangent against finite differences every 10 updates. In the Debug build any
+# FP trap fails the test.
+add_test(NAME stability_fuzz_3d COMMAND interlock-fuzz --3d 50000 --seed 5)
+set_tests_properties(stability_fuzz_3d PROPERTIES TIMEOUT 600 LABELS stability
+  PASS_REGULAR_EXPRESSION "--3d: seed 5, [0-9]+ materials .*failures 0;"
+  FAIL_REGULAR_EXPRESSION "FAIL|ERROR STOP|Floating-point exception")
+# The same with garbage separations of any finite magnitude (beyond separation_bound too) and
+# garbage angles (theta0, phi): the update must refuse them or return finite values, the
+# material's preparation must refuse them without a trap.
+add_test(NAME stability_fuzz_3d_beyond_bound
+  COMMAND interlock-fuzz --3d 20000 --seed 6 --beyond-bound)
+set_tests_properties(stability_fuzz_3d_beyond_bound PROPERTIES TIMEOUT 600 LABELS stability
+  PASS_REGULAR_EXPRESSION "--3d: seed 6, [0-9]+ materials .*failures 0;"
   FAIL_REGULAR_EXPRESSION "FAIL|ERROR STOP|Floating-point exception")
 
 # Replay decks: write one for a failing update, read it back, re-run it.

@@ -3,12 +3,15 @@
 !> finite-difference tangent, and a portable random-number generator for the random histories.
 module test_core_support
   use interlock
+  use interlock_integrate_3d, only: general_update_3d
   use funit, only: assertTrue
   implicit none
   private
   public :: table1_material, table2_material, flat_material, prepare_or_fail
   public :: drive_to, solve_sigma_n, fd_tangent, matrix_rel_error, slide_history
   public :: rng_t, rng_uniform, read_reference_row, nth_scheme
+  public :: granite_3d_material, table1_3d_material, state_3d_of, fd_tangent_3d, &
+            solve_sigma_n_3d, rotate_in_plane, rotate_tangent, general_3d
 
   !> xorshift64 (Marsaglia): identical sequences on every compiler and platform.
   type :: rng_t
@@ -227,6 +230,139 @@ contains
     call assertTrue(ios == 0, 'read reference ' // path)
     close (u)
   end subroutine read_reference_row
+
+  !> Granite (SPEC, Lee et al.: sigma0 = 0.025 MPa, Gc_bar = 5e-4 N/mm, eta = 0.99,
+  !> mu = tan(34.6 deg), H_N = 4 mm) on the `azimuthal` RIA with n_azimuths directions
+  !> (theta_0 = 30, theta_f = 9 deg, zeta_0 = 6.666 N/mm; n_azimuths = 1 is `paper`).
+  subroutine granite_3d_material(mat, n_azimuths)
+    type(interlock_material_t), intent(out) :: mat
+    integer, intent(in) :: n_azimuths
+    mat%sigma0_n = 0.025_dp
+    mat%sigma0_t = 0.025_dp
+    mat%gc = 0.0005_dp
+    mat%eta = 0.99_dp
+    mat%mu = tan(34.6_dp * deg_to_rad)
+    mat%h_n = 4.0_dp
+    call interlock_azimuthal_ria(mat, n_azimuths, 30.0_dp * deg_to_rad, 9.0_dp * deg_to_rad, &
+                                 6.666_dp)
+    call prepare_or_fail(mat)
+  end subroutine granite_3d_material
+
+  !> Table 1 (sigma0 = 3 MPa, Gc_bar = 0.3 N/mm, eta = 0.9, mu = 0.5, theta_0 = 25 deg,
+  !> H_N = 0.5 mm, no wear) on the `azimuthal` RIA with n_azimuths directions.
+  subroutine table1_3d_material(mat, n_azimuths)
+    type(interlock_material_t), intent(out) :: mat
+    integer, intent(in) :: n_azimuths
+    mat%sigma0_n = 3.0_dp
+    mat%sigma0_t = 3.0_dp
+    mat%gc = 0.3_dp
+    mat%eta = 0.9_dp
+    mat%mu = 0.5_dp
+    mat%h_n = 0.5_dp
+    call interlock_azimuthal_ria(mat, n_azimuths, 25.0_dp * deg_to_rad, 25.0_dp * deg_to_rad, &
+                                 huge(1.0_dp))
+    call prepare_or_fail(mat)
+  end subroutine table1_3d_material
+
+  !> The general three-dimensional path (never the 2D route) with its `info` reset as it
+  !> requires.
+  subroutine general_3d(mat, solver, s, old, new, sigma, tangent, info)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    real(dp), intent(in) :: s(3)
+    type(interlock_state_3d_t), intent(in) :: old
+    type(interlock_state_3d_t), intent(inout) :: new
+    real(dp), intent(out) :: sigma(3), tangent(3, 3)
+    type(interlock_info_t), intent(out) :: info
+    info%status = status_ok
+    info%newton_iterations = 0
+    info%substeps = 1
+    info%attempts = 1
+    info%max_angle_increment = 0.0_dp
+    info%max_damage_increment = 0.0_dp
+    call general_update_3d(mat, solver, s, old, new, sigma, tangent, info)
+  end subroutine general_3d
+
+  !> The 3D state of a 2D one: the strike components and s_T2, sigma_T2 zero.
+  pure function state_3d_of(state) result(st)
+    type(interlock_state_t), intent(in) :: state
+    type(interlock_state_3d_t) :: st
+    st%interlock_state_t = state
+    st%sf_strike = 0.0_dp
+    st%tauf_strike = 0.0_dp
+    st%s_t2 = 0.0_dp
+    st%sigma_t2 = 0.0_dp
+  end function state_3d_of
+
+  !> Central finite differences of the 3D traction at fixed `old`, step h in each component
+  !> (interlock_update_3d); `ok` false when a perturbed update fails.
+  subroutine fd_tangent_3d(mat, solver, old, s, h, kfd, ok)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    type(interlock_state_3d_t), intent(in) :: old
+    real(dp), intent(in) :: s(3), h
+    real(dp), intent(out) :: kfd(3, 3)
+    logical, intent(out) :: ok
+    type(interlock_state_3d_t) :: tmp
+    type(interlock_info_t) :: infop, infom
+    real(dp) :: sp(3), sm(3), sigp(3), sigm(3), ktmp(3, 3)
+    integer :: j
+    ok = .true.
+    do j = 1, 3
+      sp = s
+      sm = s
+      sp(j) = s(j) + h
+      sm(j) = s(j) - h
+      call interlock_update_3d(mat, solver, sp, old, tmp, sigp, ktmp, infop)
+      call interlock_update_3d(mat, solver, sm, old, tmp, sigm, ktmp, infom)
+      ok = ok .and. infop%status == status_ok .and. infom%status == status_ok
+      kfd(:, j) = (sigp - sigm) / (sp(j) - sm(j))
+    end do
+  end subroutine fd_tangent_3d
+
+  !> Find s_N such that sigma_N(s_N, s_T1, s_T2) = sig_n from `old` (Newton on tangent(1,1),
+  !> starting from old%s(1)); `new`, `sigma` and `tangent` are those of the converged update.
+  subroutine solve_sigma_n_3d(mat, solver, old, s_t, sig_n, new, sigma, tangent, ok)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    type(interlock_state_3d_t), intent(in) :: old
+    real(dp), intent(in) :: s_t(2), sig_n
+    type(interlock_state_3d_t), intent(out) :: new
+    real(dp), intent(out) :: sigma(3), tangent(3, 3)
+    logical, intent(out) :: ok
+    type(interlock_info_t) :: info
+    real(dp) :: s(3)
+    integer :: it
+    s = [old%s(1), s_t(1), s_t(2)]
+    ok = .false.
+    do it = 1, 60
+      call interlock_update_3d(mat, solver, s, old, new, sigma, tangent, info)
+      if (info%status /= status_ok) exit
+      if (abs(sigma(1) - sig_n) <= 1.0e-13_dp * max(abs(sig_n), 1.0e-3_dp)) then
+        ok = .true.
+        exit
+      end if
+      if (.not. (tangent(1, 1) > 0.0_dp)) exit
+      s(1) = s(1) - (sigma(1) - sig_n) / tangent(1, 1)
+    end do
+    call assertTrue(ok, 'solve_sigma_n_3d converged')
+  end subroutine solve_sigma_n_3d
+
+  !> (x_N, x_T1, x_T2) with its in-plane part rotated by the angle a about n.
+  pure function rotate_in_plane(x, a) result(y)
+    real(dp), intent(in) :: x(3), a
+    real(dp) :: y(3)
+    y = [x(1), cos(a) * x(2) - sin(a) * x(3), sin(a) * x(2) + cos(a) * x(3)]
+  end function rotate_in_plane
+
+  !> R K R^T with R the rotation by a about n.
+  pure function rotate_tangent(k, a) result(kr)
+    real(dp), intent(in) :: k(3, 3), a
+    real(dp) :: kr(3, 3), r(3, 3)
+    r = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, cos(a), sin(a), 0.0_dp, -sin(a), cos(a)], &
+                [3, 3])
+    kr = matmul(r, matmul(k, transpose(r)))
+  end function rotate_tangent
 
   !> A uniform number in [0, 1).
   real(dp) function rng_uniform(g) result(u)

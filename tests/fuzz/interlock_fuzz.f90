@@ -8,6 +8,7 @@
 !>
 !>   interlock-fuzz [--updates N] [--seed S] [--fd-every K] [--deck-dir DIR] [--max-decks M]
 !>   interlock-fuzz --garbage N [--seed S]
+!>   interlock-fuzz --3d N [--seed S] [--fd-every K] [--beyond-bound]
 !>
 !> With --garbage, N calls of the UMAT entries (the external 2D UMAT; the thin layer with
 !> NTENS = 6 and 4, in Abaqus' and CalculiX's PNEWDT conventions) with garbage mixed into valid
@@ -15,6 +16,10 @@
 !> every argument the host passes (garbage_calls). Every call must either leave its outputs
 !> untouched or return them finite, and PNEWDT as it came or as a request of its convention;
 !> in the Debug build (FP traps on invalid, zero, overflow) any trap ends the run.
+!>
+!> With --3d, N calls of the three-dimensional update with random materials (azimuths
+!> included), histories and garbage (fuzz_3d); --beyond-bound: garbage separations of any
+!> finite magnitude, beyond separation_bound included.
 !>
 !> Exit status 0 when no invariant, tangent or status failure was found; 2 on a usage error (the
 !> usage on stderr).
@@ -28,6 +33,7 @@ program interlock_fuzz
   use interlock_replay, only: interlock_write_replay_deck
   use test_stability_tools
   use test_umat_interface, only: UMAT
+  use fuzz_3d, only: fuzz_3d_counts_t, fuzz_3d_run
   use interlock_umat_layer, only: interlock_umat_layer_point, host_abaqus, host_calculix, &
       layer_nstatv_extra
   implicit none
@@ -38,7 +44,9 @@ program interlock_fuzz
   character(len=:), allocatable :: deck_dir
   type(rng_t) :: rng
   real(dp) :: t0, t1
-  integer(int64) :: n_garbage = 0_int64
+  integer(int64) :: n_garbage = 0_int64, n_3d = 0_int64
+  type(fuzz_3d_counts_t) :: counts_3d
+  logical :: beyond_bound = .false.
 
   !> The arguments of a UMAT call besides the material point's STRESS, STATEV, STRAN, DSTRAN
   !> and PROPS (the sizes NTENS, NSTATV, NPROPS are drawn with them).
@@ -56,6 +64,20 @@ program interlock_fuzz
   call rng_seed(rng, seed)
   if (n_garbage > 0) then
     call garbage_calls()
+    stop
+  end if
+  if (n_3d > 0) then
+    call cpu_time(t0)
+    call fuzz_3d_run(rng, n_3d, fd_every, beyond_bound, counts_3d)
+    call cpu_time(t1)
+    write (output_unit, '(a,i0,a,i0,a,i0,a,i0,a,i0,a,i0,a)') 'interlock-fuzz --3d: seed ', &
+      seed, ', ', counts_3d%materials, ' materials (', counts_3d%materials_refused, &
+      ' garbled ones refused), ', counts_3d%updates, ' updates (', counts_3d%garbage_s, &
+      ' with a garbage separation, ', counts_3d%refused, ' refused)'
+    write (output_unit, '(a,i0,a,i0,a,i0,a,i0,a,f8.2,a)') '  tangent checks ', &
+      counts_3d%fd_checks, ' (', counts_3d%fd_skipped, ' skipped at kinks), stated ' // &
+      'failures ', counts_3d%stated, ', failures ', counts_3d%failures, '; ', t1 - t0, ' s'
+    if (counts_3d%failures > 0) error stop 1
     stop
   end if
   call cpu_time(t0)
@@ -88,10 +110,13 @@ contains
       case ('-h', '--help')
         call usage(output_unit)
         call exit_program(0)
+      case ('--beyond-bound')
+        beyond_bound = .true.
       case ('--version')
         write (output_unit, '(a)') 'interlock-fuzz ' // interlock_version_string
         call exit_program(0)
-      case ('--updates', '--seed', '--fd-every', '--deck-dir', '--max-decks', '--garbage')
+      case ('--updates', '--seed', '--fd-every', '--deck-dir', '--max-decks', '--garbage', &
+            '--3d')
         if (i == n) call usage_error(arg // ' needs a value')
         val = command_argument(i + 1)
         ios = 0
@@ -117,9 +142,12 @@ contains
         case ('--garbage')
           read (val, *, iostat=ios) n_garbage
           if (ios == 0 .and. n_garbage < 1) ios = 1
+        case ('--3d')
+          read (val, *, iostat=ios) n_3d
+          if (ios == 0 .and. n_3d < 1) ios = 1
         end select
         if (ios /= 0) call usage_error(arg // ' ' // val // ': not an admissible ' // &
-          'value (--updates, --fd-every, --garbage: integers >= 1; --seed: an integer; ' // &
+          'value (--updates, --fd-every, --garbage, --3d: integers >= 1; --seed: an integer; ' // &
           '--max-decks >= 0)')
         i = i + 1
       case default
@@ -132,8 +160,8 @@ contains
   subroutine usage(unit)
     integer, intent(in) :: unit
     write (unit, '(a)') 'usage: interlock-fuzz [--updates N] [--seed S] ' // &
-      '[--fd-every K] [--deck-dir DIR] [--max-decks M] | --garbage N [--seed S] | --help | ' // &
-      '--version'
+      '[--fd-every K] [--deck-dir DIR] [--max-decks M] | --garbage N [--seed S] | ' // &
+      '--3d N [--seed S] [--fd-every K] [--beyond-bound] | --help | --version'
   end subroutine usage
 
   subroutine usage_error(message)
