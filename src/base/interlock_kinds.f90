@@ -3,7 +3,8 @@ module interlock_kinds
   use, intrinsic :: iso_fortran_env, only: real64, int64
   implicit none
   private
-  public :: dp, pi, deg_to_rad, rad_to_deg, infinite_threshold, separation_bound
+  public :: dp, pi, deg_to_rad, rad_to_deg, infinite_threshold, separation_bound, &
+            within_separation_bound
   public :: is_finite_bits, is_finite_value, is_infinite_value, is_nan_value, same_value, &
             exponent_bits
 
@@ -35,6 +36,15 @@ contains
     real(dp), intent(in) :: x
     is_finite_bits = iand(transfer(x, 0_int64), exponent_bits) /= exponent_bits
   end function is_finite_bits
+
+  !> |x| <= separation_bound, from its bits (false for a NaN or an infinity): the magnitude's
+  !> bits of non-negative doubles order as their values. For separations from outside the
+  !> library, as is_finite_bits.
+  elemental logical function within_separation_bound(x)
+    real(dp), intent(in) :: x
+    within_separation_bound = ibclr(transfer(x, 0_int64), 63) <= &
+                              transfer(separation_bound, 0_int64)
+  end function within_separation_bound
 
   !> x is finite (not NaN, not +-Inf), by one comparison: for values the library computed
   !> from finite input (a traction, a sum of them), where under traps a NaN or an overflow

@@ -219,8 +219,8 @@ contains
       if (ok) ok = abs(mat%theta0(k)) < 0.5_dp * pi
       if (.not. ok) then
         message = 'theta0(' // format_integer(k) // ') = ' // &
-                  format_real(mat%theta0(k) / deg_to_rad) // &
-                  ' deg is inadmissible: admissible -90 < theta0 < 90 deg'
+                  degrees_text(mat%theta0(k)) // &
+                  ' is inadmissible: admissible -90 < theta0 < 90 deg'
         return
       end if
       ok = is_finite_bits(mat%thetaf(k))
@@ -228,8 +228,8 @@ contains
                    mat%thetaf(k) * mat%theta0(k) >= 0.0_dp
       if (.not. ok) then
         message = 'thetaf(' // format_integer(k) // ') = ' // &
-                  format_real(mat%thetaf(k) / deg_to_rad) // &
-                  ' deg is inadmissible: admissible 0 <= |thetaf| <= |theta0| = ' // &
+                  degrees_text(mat%thetaf(k)) // &
+                  ' is inadmissible: admissible 0 <= |thetaf| <= |theta0| = ' // &
                   format_real(abs(mat%theta0(k)) / deg_to_rad) // ' deg, same sign as theta0'
         return
       end if
@@ -241,8 +241,8 @@ contains
       ok = is_finite_bits(mat%phi(k))
       if (ok) ok = abs(mat%phi(k)) <= 2.0_dp * pi
       if (.not. ok) then
-        message = 'phi(' // format_integer(k) // ') = ' // format_real(mat%phi(k) / deg_to_rad) &
-                  // ' deg is inadmissible: admissible -360 <= phi <= 360 deg'
+        message = 'phi(' // format_integer(k) // ') = ' // degrees_text(mat%phi(k)) // &
+                  ' is inadmissible: admissible -360 <= phi <= 360 deg'
         return
       end if
     end do
@@ -468,6 +468,22 @@ contains
               'or stiffnesses K = sigma0/s_0 outside 1e-90 .. 1e90 (mm, MPa/mm): not a ' // &
               'physical interface'
   end function derived_range_message
+
+  !> An angle given in radians, for a message: in degrees, or as given (in rad) where it is not
+  !> finite or so large that the conversion would overflow (tested on the bits first: a
+  !> signalling NaN traps in any comparison).
+  pure function degrees_text(x) result(text)
+    real(dp), intent(in) :: x
+    character(len=:), allocatable :: text
+    logical :: small
+    small = is_finite_bits(x)
+    if (small) small = abs(x) < 1.0e300_dp
+    if (small) then
+      text = format_real(x / deg_to_rad) // ' deg'
+    else
+      text = format_real(x) // ' rad'
+    end if
+  end function degrees_text
 
   !> same_value of interlock_kinds for derive, where a call into another module would cost more
   !> than the comparison (derive runs on every UMAT call; the angles are checked, not NaN).

@@ -9,7 +9,7 @@
 !> would make every call of the small laws pay for saving registers; the small kernel_update
 !> is inlined there.
 module interlock_general_update
-  use interlock_kinds, only: dp, is_finite_bits, is_finite_value
+  use interlock_kinds, only: dp, is_finite_value, within_separation_bound, separation_bound
   use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, &
       n_schemes, scheme_list, kernel_general
   use interlock_numbers, only: format_real, format_integer
@@ -31,7 +31,7 @@ contains
   !> interlock_update (its contract) for every material and solver but the flat-plane laws of
   !> interlock_update itself: a specialised kernel without substepping first, with only the
   !> checks it needs (mat%kernel /= kernel_general only in a prepared material; s tested on its
-  !> bits, interlock_kinds:is_finite_bits), else general_update. When the kernel does not apply
+  !> bits, interlock_kinds:within_separation_bound), else general_update. When the kernel does not apply
   !> or its result is not finite, general_update takes the increment again (and reports). A
   !> small procedure of its own: through general_update's checks and frame the full model's
   !> update costs more (interlock-bench's cost rows, docs/bench.md).
@@ -46,7 +46,7 @@ contains
     logical :: done
     if (mat%kernel /= kernel_general .and. solver%substep_tol <= 0.0_dp .and. &
         solver%scheme >= 1 .and. solver%scheme <= n_schemes .and. &
-        is_finite_bits(s(1)) .and. is_finite_bits(s(2))) then
+        within_separation_bound(s(1)) .and. within_separation_bound(s(2))) then
       call kernel_step(mat, solver, s, old, new, tangent, done, info%newton_iterations)
       if (done) then
         if (finite_response(new%sigma, tangent)) then
@@ -84,10 +84,11 @@ contains
                 scheme_list())
       return
     end if
-    if (.not. (is_finite_bits(s(1)) .and. is_finite_bits(s(2)))) then
+    if (.not. (within_separation_bound(s(1)) .and. within_separation_bound(s(2)))) then
       call fail(old, new, sigma, tangent, info, status_bad_input, &
                 'the relative displacement s = (' // format_real(s(1)) // ', ' // &
-                format_real(s(2)) // ') mm is inadmissible: admissible finite s_N and s_T')
+                format_real(s(2)) // ') mm is inadmissible: admissible |s_N|, |s_T| <= ' // &
+                format_real(separation_bound) // ' mm')
       return
     end if
 

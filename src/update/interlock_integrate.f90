@@ -4,7 +4,7 @@
 !> scenes most FE runs of an intact interface are made of pay close to a hand-coded cohesive
 !> law; everything else goes to interlock_general_update (kernel_update).
 module interlock_integrate
-  use interlock_kinds, only: dp, is_finite_bits
+  use interlock_kinds, only: dp, within_separation_bound
   use interlock_material, only: interlock_material_t, interlock_solver_t, n_schemes, &
       kernel_cohesive
   use interlock_state, only: interlock_state_t
@@ -24,8 +24,9 @@ contains
   !> d sigma / d s, the exact derivative of the computed traction. Every field of `info` but
   !> the message is set by the call (it is intent(inout) so that a successful update does not
   !> pay for clearing the message). On failure `info%status` /= status_ok, `info%message` says
-  !> why, `new` = `old` and `sigma` = `old%sigma`; on success the message is not defined. A NaN
-  !> or infinite `s` is bad input (no floating-point exception is raised on it).
+  !> why, `new` = `old` and `sigma` = `old%sigma`; on success the message is not defined. A NaN,
+  !> an infinity or a component beyond separation_bound in `s` is bad input (no floating-point
+  !> exception is raised on it).
   pure subroutine interlock_update(mat, solver, s, old, new, sigma, tangent, info)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
@@ -42,11 +43,12 @@ contains
     info%max_angle_increment = 0.0_dp
     ! The kernel is kernel_cohesive only in a prepared material. s is tested on its bits (a
     ! NaN in an ordered comparison raises the invalid exception, a trap in hosts that run with
-    ! traps on): anything else is checked and reported by kernel_update (a specialised kernel)
+    ! traps on; within_separation_bound is false for both): anything else is checked and
+    ! reported by kernel_update (a specialised kernel)
     ! or general_update.
     if (mat%kernel == kernel_cohesive .and. solver%substep_tol <= 0.0_dp .and. &
         solver%scheme >= 1 .and. solver%scheme <= n_schemes .and. &
-        is_finite_bits(s(1)) .and. is_finite_bits(s(2))) then
+        within_separation_bound(s(1)) .and. within_separation_bound(s(2))) then
       if (mat%use_friction) then
         call flat_plane_step(mat, solver%scheme, .true., s, old, new, sigma, tangent)
       else

@@ -9,7 +9,7 @@
 !> the tangent), so that such a point pays for the third component almost nothing.
 module interlock_integrate_3d
   use, intrinsic :: iso_fortran_env, only: int64
-  use interlock_kinds, only: dp, is_finite_bits, is_finite_value
+  use interlock_kinds, only: dp, is_finite_value, within_separation_bound, separation_bound
   use interlock_dual, only: dual_t, n_dual, constant, operator(+), operator(-), operator(*), &
       operator(/), abs, max
   use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, n_schemes, &
@@ -172,11 +172,12 @@ contains
                 scheme_list())
       return
     end if
-    if (.not. (is_finite_bits(s(1)) .and. is_finite_bits(s(2)) .and. is_finite_bits(s(3)))) then
+    if (.not. all(within_separation_bound(s))) then
       call fail(old, new, sigma, tangent, info, status_bad_input, &
                 'the relative displacement s = (' // format_real(s(1)) // ', ' // &
                 format_real(s(2)) // ', ' // format_real(s(3)) // &
-                ') mm is inadmissible: admissible finite s_N, s_T1 and s_T2')
+                ') mm is inadmissible: admissible |s_N|, |s_T1|, |s_T2| <= ' // &
+                format_real(separation_bound) // ' mm')
       return
     end if
 
