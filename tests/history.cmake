@@ -147,3 +147,17 @@ add_test(NAME history_bad_decks_bom
   COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_bad_decks.py --bom
           $<TARGET_FILE:interlock-history> ${PROJECT_SOURCE_DIR}/inputs/fig6.nml)
 set_tests_properties(history_bad_decks_bom PROPERTIES LABELS history)
+
+# Three dimensions (SPEC section 9, docs/three-dimensions.md): the histories of
+# tests/data/reference3d reproduced by decks with their protocol (granite, paper and azimuthal
+# N_a = 3 RIAs, straight, square and circular paths, implicit and trapezoidal: 1e-10); constant
+# sigma_N on two turns of a circle (held to the solver's tolerance at every step); a 3D deck with
+# every azimuth 0 and T2 = 0 reproduces the 2D deck (1e-14); a 2D deck's HDF5 layout is the
+# stored one (tests/data/layout).
+foreach(mode reference circle reduction layout)
+  add_test(NAME history_3d_${mode}
+    COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_3d.py
+            $<TARGET_FILE:interlock-history> ${INTERLOCK_TEST_DATA}
+            ${CMAKE_CURRENT_BINARY_DIR}/history_3d_${mode} ${mode})
+  set_tests_properties(history_3d_${mode} PROPERTIES LABELS history TIMEOUT 300)
+endforeach()

@@ -196,7 +196,7 @@ contains
     ! What the case is.
     call ok(h5_text(g, 'label', label))
     call ok(h5_text(g, 'sweep_parameter', trim(deck%sweep_parameter)))
-    if (deck%sweep_property > 0) call ok(h5_real(g, 'sweep_value', deck%sweep_values(icase)))
+    if (deck%sweep_property /= 0) call ok(h5_real(g, 'sweep_value', deck%sweep_values(icase)))
     ! The material: every property of the table with its unit.
     call property(prop_sigma0_n, mat%sigma0_n)
     call property(prop_sigma0_t, mat%sigma0_t)
