@@ -153,15 +153,9 @@ def plot_3d(path, png, compare, axis):
         ax_d.set_title("(d) traction path in the ($t_1$, $t_2$) plane")
         ax_d.set_aspect("equal", adjustable="datalim")
         ax_d.grid(True, lw=0.3)
-    for ax in (ax_p, ax_t, ax_n):
-        ax.grid(True, lw=0.3)
     if len(curves) + len(extra) <= 16:
         ax_n.legend(fontsize=7, loc="best")
-    fig.suptitle(title, fontsize=11)
-    fig.tight_layout()
-    fig.savefig(png, dpi=110)
-    plt.close(fig)
-    print(png)
+    finish(fig, (ax_p, ax_t, ax_n), title, png)
 
 
 def plot(path, png, compare, axis=None):
@@ -191,9 +185,14 @@ def plot(path, png, compare, axis=None):
     ax_n.set_xlabel("slip $s_T$ [mm]")
     ax_n.set_ylabel("dilation $s_N$ [mm]")
     ax_n.set_title("(b) dilation vs slip")
-    for ax in (ax_t, ax_n):
-        ax.grid(True, lw=0.3)
     ax_n.legend(fontsize=8, loc="best")
+    finish(fig, (ax_t, ax_n), title, png)
+
+
+def finish(fig, axes, title, png):
+    """Grid the axes, title the figure and write the PNG."""
+    for ax in axes:
+        ax.grid(True, lw=0.3)
     fig.suptitle(title, fontsize=11)
     fig.tight_layout()
     fig.savefig(png, dpi=110)
