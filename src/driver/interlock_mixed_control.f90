@@ -133,10 +133,10 @@ contains
   !> Run a whole history: the path goes through the points (times(i), values(:, i)) in
   !> `steps(i)` uniform steps per segment, each component's value (ctl%n of them: values(1:n,
   !> i)) being a separation [mm] or a traction [MPa] as `ctl%traction` says; `arcs` (optional,
-  !> 3D, one per segment): the segments that are arcs in the (T1, T2) plane. The 3D state starts
-  !> from `initial` with no strike slip or traction and s_T2 = values(3, 1) when separation-
-  !> driven. Each row goes to `hist` as soon as it is computed. The history stops early when a
-  !> step cannot be solved or a row cannot be kept.
+  !> 3D, one per segment): the segments that are arcs in the (T1, T2) plane. A 3D history starts
+  !> from `initial` with s_T2 = sigma_T2 = 0 and no strike slip or friction traction (point 1
+  !> should match it, as in 2D). Each row goes to `hist` as soon as it is computed. The history
+  !> stops early when a step cannot be solved or a row cannot be kept.
   subroutine run_history(mat, solver, ctl, times, values, steps, initial, hist, arcs)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
