@@ -30,7 +30,10 @@ DATASETS = {
     "work": (None, "N/mm", False), "stored_energy": (None, "N/mm", False),
     "damage_dissipation": (None, "N/mm", False), "friction_dissipation": (None, "N/mm", False),
     "iterations": (None, "-", True), "substeps": (None, "-", True),
+    "sf_strike": ("planes", "mm", False), "tauf_strike": ("planes", "MPa", False),
 }
+THREE_D_DATASETS = ["sf_strike", "tauf_strike"]  # in 3D cases only
+THREE_D_ATTRS = ["frame", "components", "t2_control", "ria", "n_azimuths", "phi_deg", "path"]
 ALWAYS = ["time", "separation", "traction"]          # written whatever &output store says
 
 
@@ -108,14 +111,33 @@ def check_file(path, allow_stopped):
             if text(g.attrs.get("sweep_parameter", "")) and "sweep_value" not in g.attrs:
                 errors.append(f"{where}: a sweep without 'sweep_value'")
             n_planes = int(g.attrs.get("n_planes", 0))
-            if not 1 <= n_planes <= 8:
+            if not 1 <= n_planes <= 13:
                 errors.append(f"{where}: n_planes = {n_planes}")
+            # A 3D case (SPEC section 9) says so: the frame, N, T1, T2 columns; a 2D case has
+            # none of its attributes and datasets.
+            three_d = "components" in g.attrs
+            if three_d:
+                for a in THREE_D_ATTRS:
+                    if a not in g.attrs:
+                        errors.append(f"{where}: 3D case without attribute '{a}'")
+                if text(g.attrs.get("components", "")) != "N, T1, T2":
+                    errors.append(f"{where}: components = '{text(g.attrs.get('components', ''))}'")
+            else:
+                for a in THREE_D_ATTRS:
+                    if a in g.attrs:
+                        errors.append(f"{where}: 2D case with the 3D attribute '{a}'")
+                for d in THREE_D_DATASETS:
+                    if d in g:
+                        errors.append(f"{where}: 2D case with the 3D dataset '{d}'")
             # &output store and every: the `stored` attribute lists exactly the datasets of the
             # case (in the order of DATASETS), `every` the thinning of the rows.
             stored = [s for s in text(g.attrs.get("stored", "")).split(",") if s]
             unknown = [s for s in stored if s not in DATASETS]
             if unknown:
                 errors.append(f"{where}: 'stored' names unknown datasets {unknown}")
+            if three_d and text(g.attrs.get("stored", "")) and not all(
+                    d in stored for d in THREE_D_DATASETS if d in g):
+                errors.append(f"{where}: 'stored' lacks a 3D dataset it holds")
             if stored != [d for d in DATASETS if d in stored]:
                 errors.append(f"{where}: 'stored' = {stored} is not in the documented order")
             if not all(d in stored for d in ALWAYS):
@@ -136,7 +158,8 @@ def check_file(path, allow_stopped):
                         errors.append(f"{where}: dataset '{d}' missing")
                     continue
                 ds = g[d]
-                shape = (n,) if cols is None else (n, 2 if cols == 2 else n_planes)
+                pair = 3 if three_d else 2
+                shape = (n,) if cols is None else (n, pair if cols == 2 else n_planes)
                 if ds.shape != shape:
                     errors.append(f"{where}/{d}: shape {ds.shape}, expected {shape}")
                 if text(ds.attrs.get("unit", "")) != unit:

@@ -3,7 +3,7 @@
 module test_history_mixed_control_cases
   use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
       interlock_state_init, interlock_material_prepare, interlock_paper_ria, status_ok, &
-      scheme_implicit, same_value
+      scheme_implicit, same_value, interlock_state_3d_t, interlock_state_3d_init
   use interlock_mixed_control, only: control_t, history_t, solve_step, run_history, &
       run_history_extrapolated
   use interlock_assert, only: assert_equal, assert_true
@@ -17,6 +17,8 @@ contains
     use interlock_assert, only: run_case
     call run_case('preload_normal_traction_closed_form', preload_normal_traction_closed_form)
     call run_case('both_tractions_elastic_dgesv', both_tractions_elastic_dgesv)
+    call run_case('three_tractions_elastic_3d', three_tractions_elastic_3d)
+    call run_case('debonded_flat_slip_any_direction_3d', debonded_flat_slip_any_direction_3d)
     call run_case('tangential_traction_below_friction_limit', tangential_traction_below_friction_limit)
     call run_case('tangential_traction_above_friction_limit_fails', &
                   tangential_traction_above_friction_limit_fails)
@@ -57,7 +59,7 @@ contains
     character(len=512) :: message
     call flat_material(mat, huge(1.0_dp), .false.)
     call interlock_state_init(mat, old)
-    ctl%traction = [.true., .false.]
+    ctl%traction(1:2) = [.true., .false.]
     call solve_step(mat, solver, ctl, old, [0.0_dp, 0.0_dp], [-0.2_dp, 0.0_dp], new, sigma, it, &
                     sub, stat, message)
     call assert_true(stat == status_ok, 'preload solved: ' // trim(message))
@@ -79,7 +81,7 @@ contains
     character(len=512) :: message
     call flat_material(mat, huge(1.0_dp), .false.)
     call interlock_state_init(mat, old)
-    ctl%traction = [.true., .true.]
+    ctl%traction(1:2) = [.true., .true.]
     call solve_step(mat, solver, ctl, old, [0.0_dp, 0.0_dp], [-0.1_dp, 0.05_dp], new, sigma, it, &
                     sub, stat, message)
     call assert_true(stat == status_ok, 'both components solved: ' // trim(message))
@@ -87,6 +89,63 @@ contains
     call assert_equal(0.05_dp / 150.0_dp, new%s(2), 1.0e-15_dp, 's_T = sigma_T / K_t')
     call assert_equal(0.0_dp, new%damage(1), 0.0_dp, 'still elastic')
   end subroutine both_tractions_elastic_dgesv
+
+  !> Three components traction-driven (Newton on the 3x3 tangent) on a flat elastic interface:
+  !> s = sigma / K componentwise (K_n = K_t = 150 MPa/mm), in any in-plane direction.
+  subroutine three_tractions_elastic_3d()
+    type(interlock_material_t) :: mat
+    type(interlock_solver_t) :: solver
+    type(interlock_state_3d_t) :: old, new
+    type(control_t) :: ctl
+    real(dp) :: sigma(3)
+    integer :: it, sub, stat
+    character(len=512) :: message
+    call flat_material(mat, huge(1.0_dp), .false.)
+    call interlock_state_3d_init(mat, old)
+    ctl%n = 3
+    ctl%traction = [.true., .true., .true.]
+    call solve_step(mat, solver, ctl, old, [0.0_dp, 0.0_dp, 0.0_dp], [-0.1_dp, 0.03_dp, 0.04_dp], &
+                    new, sigma, it, sub, stat, message)
+    call assert_true(stat == status_ok, 'three components solved: ' // trim(message))
+    call assert_equal(-0.1_dp / 150.0_dp, new%s(1), 1.0e-15_dp, 's_N = sigma_N / K_n')
+    call assert_equal(0.03_dp / 150.0_dp, new%s(2), 1.0e-15_dp, 's_T1 = sigma_T1 / K_t')
+    call assert_equal(0.04_dp / 150.0_dp, new%s_t2, 1.0e-15_dp, 's_T2 = sigma_T2 / K_t')
+    call assert_equal(0.04_dp, sigma(3), 1.0e-13_dp, 'sigma_T2 = target')
+    call assert_equal(0.0_dp, new%damage(1), 0.0_dp, 'still elastic')
+  end subroutine three_tractions_elastic_3d
+
+  !> SPEC section 9's closed form through the driver: a debonded (pre-fractured) flat interface
+  !> under sigma_N = -0.2 MPa (traction-driven) slid 0.1 mm at 30 deg from t1 in 10 steps: the
+  !> shear is mu p = 0.1 MPa along the slip, none across.
+  subroutine debonded_flat_slip_any_direction_3d()
+    type(interlock_material_t) :: mat
+    type(interlock_solver_t) :: solver
+    type(interlock_state_3d_t) :: old, new
+    type(control_t) :: ctl
+    real(dp) :: sigma(3), c, s, start(3), end(3)
+    integer :: it, sub, stat, j
+    character(len=512) :: message
+    call flat_material(mat, huge(1.0_dp), .true.)
+    call interlock_state_3d_init(mat, old)
+    ctl%n = 3
+    ctl%traction = [.true., .false., .false.]
+    c = cos(acos(-1.0_dp) / 6.0_dp)
+    s = sin(acos(-1.0_dp) / 6.0_dp)
+    end = [-0.2_dp, 0.0_dp, 0.0_dp]
+    call solve_step(mat, solver, ctl, old, [0.0_dp, 0.0_dp, 0.0_dp], end, new, sigma, it, sub, &
+                    stat, message)
+    call assert_true(stat == status_ok, 'preload solved: ' // trim(message))
+    do j = 1, 10
+      old = new
+      start = end
+      end = [-0.2_dp, 0.01_dp * j * c, 0.01_dp * j * s]
+      call solve_step(mat, solver, ctl, old, start, end, new, sigma, it, sub, stat, message)
+      call assert_true(stat == status_ok, 'slip step solved: ' // trim(message))
+    end do
+    call assert_equal(-0.2_dp, sigma(1), 1.0e-12_dp, 'sigma_N held')
+    call assert_equal(0.1_dp * c, sigma(2), 1.0e-13_dp, 'sigma_T1 = mu p cos(30 deg)')
+    call assert_equal(0.1_dp * s, sigma(3), 1.0e-13_dp, 'sigma_T2 = mu p sin(30 deg)')
+  end subroutine debonded_flat_slip_any_direction_3d
 
   !> Pre-fractured flat interface under p = 0.2 MPa: tau = min(K_t s_T, mu p) (SPEC 8).
   subroutine tangential_traction_below_friction_limit()
@@ -99,7 +158,7 @@ contains
     character(len=512) :: message
     call flat_material(mat, huge(1.0_dp), .true.)
     call interlock_state_init(mat, old)
-    ctl%traction = [.true., .true.]
+    ctl%traction(1:2) = [.true., .true.]
     call solve_step(mat, solver, ctl, old, [0.0_dp, 0.0_dp], [-0.2_dp, 0.05_dp], new, sigma, it, &
                     sub, stat, message)
     call assert_true(stat == status_ok, 'sticking solved: ' // trim(message))
@@ -117,7 +176,7 @@ contains
     character(len=512) :: message
     call flat_material(mat, huge(1.0_dp), .true.)
     call interlock_state_init(mat, old)
-    ctl%traction = [.false., .true.]
+    ctl%traction(1:2) = [.false., .true.]
     old%s = [-0.2_dp / 150.0_dp, 0.0_dp]
     ! mu p = 0.1 MPa is the largest shear a sliding, fully damaged plane carries.
     call solve_step(mat, solver, ctl, old, [old%s(1), 0.0_dp], [old%s(1), 0.15_dp], new, sigma, it, &
@@ -141,7 +200,7 @@ contains
     character(len=512) :: message
     call flat_material(mat, 1.0_dp, .false.)
     call interlock_state_init(mat, initial)
-    ctl%traction = [.false., .true.]
+    ctl%traction(1:2) = [.false., .true.]
     call run_history(mat, solver, ctl, [0.0_dp, 1.0_dp, 2.0_dp], &
                      reshape([0.0_dp, 0.0_dp, -0.001_dp, 0.01_dp, 2.0_dp, 0.01_dp], [2, 3]), &
                      [2, 2], initial, hist)
@@ -180,7 +239,7 @@ contains
     old%beta = 1.0e3_dp
     old%s = [0.5_dp, 0.0_dp]
     old%sigma = 0.0_dp
-    ctl%traction = [.true., .false.]
+    ctl%traction(1:2) = [.true., .false.]
     call solve_step(mat, solver, ctl, old, [0.0_dp, 0.0_dp], [0.01_dp, 0.0_dp], new, sigma, it, &
                     sub, stat, message)
     call assert_true(stat /= status_ok, 'no tension on a fully damaged interface')
@@ -228,7 +287,7 @@ contains
     call assert_true(stat == status_ok, 'material prepared: ' // trim(message))
     solver%scheme = scheme_implicit
     call interlock_state_init(mat, initial)
-    ctl%traction = [.true., .false.]
+    ctl%traction(1:2) = [.true., .false.]
     call run_history(mat, solver, ctl, times, values, [1, 20], initial, coarse)
     call run_history(mat, solver, ctl, times, values, [1, 40], initial, fine)
     call run_history_extrapolated(mat, solver, ctl, times, values, [1, 20], initial, extra)
@@ -286,7 +345,7 @@ contains
     type(history_t) :: hist
     call flat_material(mat, 1.0_dp, .false.)
     call interlock_state_init(mat, initial)
-    ctl%traction = [.false., .true.]
+    ctl%traction(1:2) = [.false., .true.]
     call run_history_extrapolated(mat, solver, ctl, [0.0_dp, 1.0_dp, 2.0_dp], &
                      reshape([0.0_dp, 0.0_dp, -0.001_dp, 0.01_dp, 2.0_dp, 0.01_dp], [2, 3]), &
                      [2, 2], initial, hist)

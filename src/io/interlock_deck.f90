@@ -8,9 +8,9 @@
 !> repeated variables are errors). A value that cannot be read is found by re-reading each
 !> assignment of the group alone, so that the message names the variable.
 module interlock_deck
-  use interlock, only: dp, deg_to_rad, pi, max_planes, n_effects, &
+  use interlock, only: dp, deg_to_rad, pi, max_planes, max_azimuths, n_effects, &
       interlock_material_t, interlock_solver_t, interlock_state_t, interlock_state_init, &
-      interlock_material_prepare, interlock_paper_ria, scheme_explicit, scheme_implicit, &
+      interlock_material_prepare, interlock_paper_ria, interlock_azimuthal_ria, scheme_explicit, scheme_implicit, &
       scheme_trapezoidal, properties, property_index, check_property, format_range, &
       format_integer, format_real, &
       prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
@@ -18,7 +18,7 @@ module interlock_deck
       prop_max_dtheta, prop_tangent, prop_effect_damage, prop_effect_wear, is_nan_value, same_value, &
       is_infinite_value, &
       status_ok, status_bad_input
-  use interlock_mixed_control, only: control_t
+  use interlock_mixed_control, only: control_t, arc_t
   use interlock_files, only: path_kind, path_absent, path_folder, path_other
   use interlock_deck_text, only: group_scan_t, scan_deck, probe_text, value_text, lower
   use interlock_deck_checks
@@ -26,7 +26,8 @@ module interlock_deck
       ieee_set_halting_mode, ieee_overflow, ieee_invalid, ieee_divide_by_zero
   implicit none
   private
-  public :: deck_t, read_deck, deck_case, deck_n_cases, deck_groups, deck_set_property
+  public :: deck_t, read_deck, deck_case, deck_n_cases, deck_groups, deck_set_property, &
+            deck_loading, sweep_slip_angle, deck_ria_name, path_points
   public :: max_points, max_sweep_values, max_total_steps, max_deck_bytes
   public :: n_datasets, history_datasets, curves_datasets, datasets_text, dataset_index
 
@@ -40,14 +41,20 @@ module interlock_deck
   !> The datasets of a case (docs/history-output.md), in the order they are written; `&output`
   !> `store` picks among them ('all', 'curves' or a comma-separated list of these names). The
   !> first three (time, separation, traction) are always written.
-  integer, parameter :: n_datasets = 15
+  !> The last two (the strike components of the frictional slip and of the friction traction)
+  !> belong to 3D cases only.
+  integer, parameter :: n_datasets = 17
   character(len=20), parameter :: history_datasets(n_datasets) = [character(len=20) :: 'time', &
     'separation', 'traction', 'damage', 'beta', 'theta', 'zeta', 'frictional_slip', &
     'friction_traction', 'work', 'stored_energy', 'damage_dissipation', &
-    'friction_dissipation', 'iterations', 'substeps']
+    'friction_dissipation', 'iterations', 'substeps', 'sf_strike', 'tauf_strike']
+  integer, parameter :: first_3d_dataset = 16
   !> store = 'curves': no per-plane dataset.
   logical, parameter :: curves_datasets(n_datasets) = [.true., .true., .true., .false., &
-    .false., .false., .false., .false., .false., .true., .true., .true., .true., .true., .true.]
+    .false., .false., .false., .false., .false., .true., .true., .true., .true., .true., .true., &
+    .false., .false.]
+  !> &sweep parameter = 'angle_deg': the direction of the &loading path (not a property)
+  integer, parameter :: sweep_slip_angle = -1
   integer, parameter :: n_always = 3
   integer, parameter :: store_len = 1024
 
@@ -62,6 +69,10 @@ module interlock_deck
     integer :: every = 1
     !> &output store: stored(k) = history_datasets(k) is written
     logical :: stored(n_datasets) = .true.
+    logical :: store_listed = .false.   !< store is a list of names (not 'all' or 'curves')
+    !> 3 (N, T1, T2): the deck uses T2 loading, azimuths, a path or the azimuthal RIA (a 3D
+    !> case, SPEC section 9); 2 otherwise (the 2D law)
+    integer :: n_components = 2
     ! &interface
     real(dp) :: sigma0_n = 0.0_dp, sigma0_t = 0.0_dp, gc = 0.0_dp, eta = 0.0_dp, mu = 0.0_dp
     real(dp) :: h_n = huge(1.0_dp)
@@ -71,7 +82,9 @@ module interlock_deck
     logical :: thetaf_given = .false.   !< without thetaf_deg the planes do not wear (theta_f = theta_0)
     integer :: n_planes = 3
     real(dp), dimension(max_planes) :: gamma_hat = 0.0_dp, theta0_deg = 0.0_dp, &
-                                       thetaf_deg = 0.0_dp, zeta0 = huge(1.0_dp)
+                                       thetaf_deg = 0.0_dp, zeta0 = huge(1.0_dp), phi_deg = 0.0_dp
+    integer :: n_azimuths = 0           !< the azimuthal RIA with this many azimuths; 0: none
+    logical :: azimuths_given = .false. !< phi_deg given (a general RIA in 3D)
     ! &effects
     logical :: effect(n_effects) = .true.
     ! &loading, expanded over the cycles: points (times(i), values(:, i)), steps per segment
@@ -80,6 +93,13 @@ module interlock_deck
     integer, allocatable :: steps(:)
     integer :: cycles = 1
     integer :: n_steps = 0
+    !> a path (3D): 'straight', 'square' or 'circle' in the (T1, T2) plane after a preload of the
+    !> normal component, turned by path_angle_deg from t1; '' when the points are given
+    character(len=8) :: path_kind = ''
+    real(dp) :: path_angle_deg = 0.0_dp, path_size = 0.0_dp, path_turns = 1.0_dp, &
+                path_normal = 0.0_dp
+    !> the arc segments of the path (3D; sweep = 0: a straight segment), one per segment
+    type(arc_t), allocatable :: arcs(:)
     ! &solver
     type(interlock_solver_t) :: solver
     !> Global Richardson extrapolation: run each case with the deck's steps and with the step
@@ -165,7 +185,7 @@ contains
   pure integer function deck_n_cases(deck)
     type(deck_t), intent(in) :: deck
     deck_n_cases = 1
-    if (deck%sweep_property > 0) deck_n_cases = size(deck%sweep_values)
+    if (deck%sweep_property /= 0) deck_n_cases = size(deck%sweep_values)
   end function deck_n_cases
 
   !> Read and validate the deck `path`. stat /= status_ok: `message` says what is wrong, where
@@ -274,6 +294,16 @@ contains
       end if
     end do
     close (u)
+    deck%control%n = deck%n_components
+    ! The strike datasets belong to 3D cases (SPEC section 9).
+    if (deck%n_components == 2) then
+      if (deck%store_listed .and. any(deck%stored(first_3d_dataset:))) then
+        message = path // ': &output: store names sf_strike or tauf_strike, datasets of 3D ' // &
+                  'cases (T2 loading, azimuths, a path or the azimuthal RIA): this deck is 2D'
+        return
+      end if
+      deck%stored(first_3d_dataset:) = .false.
+    end if
     if (.not. allocated(deck%output_file)) deck%output_file = default_output(path)
     if (.not. allocated(deck%title)) deck%title = ''
     do icase = 1, deck_n_cases(deck)
@@ -322,6 +352,8 @@ contains
       label = trim(deck%sweep_parameter) // ' = ' // short_real(v)
       if (trim(properties(ip)%unit) /= '-') label = label // ' ' // trim(properties(ip)%unit)
       call deck_set_property(d, ip, v)
+    else if (ip == sweep_slip_angle) then
+      label = 'angle_deg = ' // short_real(deck%sweep_values(icase)) // ' deg'
     end if
     ! thetaf_deg absent: = theta0_deg (no wear), unless it is the swept parameter.
     if (.not. d%thetaf_given .and. ip /= prop_thetaf) d%thetaf_deg = d%theta0_deg
@@ -356,7 +388,10 @@ contains
     mat%h_n = d%h_n
     mat%prefractured = d%prefractured
     mat%effect = d%effect
-    if (d%paper_ria) then
+    if (d%paper_ria .and. deck%n_azimuths > 0) then
+      call interlock_azimuthal_ria(mat, deck%n_azimuths, d%theta0_deg(1) * deg_to_rad, &
+                                   d%thetaf_deg(1) * deg_to_rad, d%zeta0(1))
+    else if (d%paper_ria) then
       call interlock_paper_ria(mat, d%theta0_deg(1) * deg_to_rad, d%thetaf_deg(1) * deg_to_rad, &
                                d%zeta0(1))
     else
@@ -366,11 +401,12 @@ contains
       mat%theta0(1:n) = d%theta0_deg(1:n) * deg_to_rad
       mat%thetaf(1:n) = d%thetaf_deg(1:n) * deg_to_rad
       mat%zeta0(1:n) = d%zeta0(1:n)
+      if (deck%azimuths_given) mat%phi(1:n) = deck%phi_deg(1:n) * deg_to_rad
     end if
     why = scale_check(mat)
     if (len_trim(why) == 0) call interlock_material_prepare(mat, stat, why)
     if (len_trim(why) > 0) then
-      if (deck%sweep_property > 0) then
+      if (deck%sweep_property /= 0) then
         message = deck%path // ': ' // trim(case_text(deck, icase)) // ' ' // trim(why)
       else if (index(why, 'gamma') == 1 .or. index(why, 'theta') == 1 .or. &
                index(why, 'plane') == 1 .or. index(why, 'n_planes') == 1) then
@@ -441,6 +477,91 @@ contains
 
   end subroutine deck_case
 
+  !> The loading path of case `icase`: the points' values (deck%n_components per point) and the
+  !> arcs of its segments (a 3D path; not allocated otherwise). A sweep over the path's direction
+  !> (angle_deg) turns the path; otherwise the deck's path.
+  subroutine deck_loading(deck, icase, values, arcs)
+    type(deck_t), intent(in) :: deck
+    integer, intent(in) :: icase
+    real(dp), allocatable, intent(out) :: values(:, :)
+    type(arc_t), allocatable, intent(out) :: arcs(:)
+    real(dp), allocatable :: times(:)
+    if (deck%sweep_property == sweep_slip_angle) then
+      call path_points(deck%path_kind, deck%sweep_values(icase), deck%path_size, deck%path_turns, &
+                       deck%path_normal, times, values, arcs)
+    else
+      values = deck%values
+      if (allocated(deck%arcs)) arcs = deck%arcs
+    end if
+  end subroutine deck_loading
+
+  !> The points of a path in the (T1, T2) plane (docs/deck-format.md): the origin at time 0; the
+  !> normal component from 0 to `normal` at zero slip by time 1 (the preload, SPEC D8); then the
+  !> path at that normal value, turned by angle_deg from t1, with time = 1 + the slip length.
+  !> straight: one leg of length `size`; square: 0 -> (a, 0) -> (a, a) -> (0, a) -> 0 with
+  !> a = `size`; circle: out to (r, 0), r = `size`, then `turns` counter-clockwise turns about
+  !> the origin (one arc). legs: the segments after the preload.
+  pure subroutine path_points(path, angle_deg, size_mm, turns, normal, times, values, arcs)
+    character(len=*), intent(in) :: path
+    real(dp), intent(in) :: angle_deg, size_mm, turns, normal
+    real(dp), allocatable, intent(out) :: times(:), values(:, :)
+    type(arc_t), allocatable, intent(out) :: arcs(:)
+    real(dp), allocatable :: local(:, :)
+    real(dp) :: c, s, angle
+    integer :: m, k
+    angle = angle_deg * deg_to_rad
+    c = 1.0_dp
+    s = 0.0_dp
+    ! A direction along t1 to the bit (cos and sin of 0 are exact; of pi/2 they are not).
+    if (.not. same_value(angle_deg, 0.0_dp)) then
+      c = cos(angle)
+      s = sin(angle)
+    end if
+    select case (trim(path))
+    case ('straight')
+      local = reshape([0.0_dp, 0.0_dp, size_mm, 0.0_dp], [2, 2])
+    case ('square')
+      local = reshape([0.0_dp, 0.0_dp, size_mm, 0.0_dp, size_mm, size_mm, 0.0_dp, size_mm, &
+                       0.0_dp, 0.0_dp], [2, 5])
+    case default
+      local = reshape([0.0_dp, 0.0_dp, size_mm, 0.0_dp, size_mm, 0.0_dp], [2, 3])
+    end select
+    m = size(local, 2) + 1
+    allocate (times(m), values(3, m), arcs(m - 1))
+    values(:, 1) = 0.0_dp
+    times(1) = 0.0_dp
+    do k = 2, m
+      values(1, k) = normal
+      values(2, k) = c * local(1, k - 1) - s * local(2, k - 1)
+      values(3, k) = s * local(1, k - 1) + c * local(2, k - 1)
+    end do
+    times(2) = 1.0_dp
+    do k = 3, m
+      times(k) = times(k - 1) + hypot(values(2, k) - values(2, k - 1), values(3, k) - values(3, k - 1))
+    end do
+    if (trim(path) == 'circle') then
+      arcs(3)%sweep = 2.0_dp * pi * turns
+      arcs(3)%angle0 = angle
+      arcs(3)%radius = size_mm
+      arcs(3)%center = 0.0_dp
+      values(2:3, 4) = size_mm * [cos(angle + arcs(3)%sweep), sin(angle + arcs(3)%sweep)]
+      times(4) = times(3) + abs(arcs(3)%sweep) * size_mm
+    end if
+  end subroutine path_points
+
+  !> The kind of the deck's RIA (SPEC section 9): 'paper', 'azimuthal' or 'general'.
+  pure function deck_ria_name(deck) result(name)
+    type(deck_t), intent(in) :: deck
+    character(len=:), allocatable :: name
+    if (.not. deck%paper_ria) then
+      name = 'general'
+    else if (deck%n_azimuths > 0) then
+      name = 'azimuthal'
+    else
+      name = 'paper'
+    end if
+  end function deck_ria_name
+
   !> Set property `ip` (a row of the material table that a sweep or a fit may vary) of the
   !> deck `d` to `v`: a per-plane angle is a magnitude that takes each plane's sign.
   pure subroutine deck_set_property(d, ip, v)
@@ -491,7 +612,7 @@ contains
     integer, intent(in) :: icase
     character(len=:), allocatable :: text
     text = ''
-    if (deck%sweep_property > 0) text = '&sweep case ' // format_integer(icase) // ' (' // &
+    if (deck%sweep_property /= 0) text = '&sweep case ' // format_integer(icase) // ' (' // &
       trim(deck%sweep_parameter) // ' = ' // value_str(deck%sweep_values(icase)) // '): '
   end function case_text
 

@@ -46,18 +46,20 @@ contains
   end procedure read_interface
 
   module procedure read_microplanes
-    real(dp), dimension(max_planes) :: theta0_deg, thetaf_deg, zeta0, gamma_hat
-    integer :: n_planes, ios, n, k
+    real(dp), dimension(max_planes) :: theta0_deg, thetaf_deg, zeta0, gamma_hat, phi_deg
+    integer :: n_planes, ios, n, k, n_azimuths
     logical :: ok
     character(len=512) :: iomsg, iomsg2
     character(len=:), allocatable :: probe
     integer :: kp
-    namelist /microplanes/ theta0_deg, thetaf_deg, zeta0, n_planes, gamma_hat
+    namelist /microplanes/ theta0_deg, thetaf_deg, zeta0, n_planes, gamma_hat, n_azimuths, phi_deg
     theta0_deg = unset
     thetaf_deg = unset
     zeta0 = unset
     gamma_hat = unset
+    phi_deg = unset
     n_planes = unset_int
+    n_azimuths = unset_int
     message = ''
     read (u, nml=microplanes, iostat=ios, iomsg=iomsg)
     if (ios /= 0) then
@@ -72,6 +74,31 @@ contains
     if (has_gaps(theta0_deg) .or. has_gaps(thetaf_deg) .or. has_gaps(zeta0) .or. &
         has_gaps(gamma_hat)) then
       message = 'per-plane values must be given from the first plane on, without gaps'
+      return
+    end if
+    if (has_gaps(phi_deg)) then
+      message = 'per-plane values must be given from the first plane on, without gaps'
+      return
+    end if
+    if (n_azimuths /= unset_int) then
+      ! The azimuthal RIA of SPEC section 9 (a 3D case): the paper's values, N_a azimuths.
+      if (n_planes /= unset_int .or. count_given(phi_deg) > 0) then
+        message = 'n_azimuths (the azimuthal RIA) takes the paper''s values (one theta0_deg, ' // &
+                  'thetaf_deg, zeta0): give no n_planes or phi_deg with it'
+        return
+      end if
+      if (n_azimuths < 1 .or. n_azimuths > max_azimuths) then
+        message = 'n_azimuths = ' // format_integer(n_azimuths) // ' is inadmissible: ' // &
+                  'admissible 1 <= n_azimuths <= ' // format_integer(max_azimuths) // &
+                  ' (1 + 2 n_azimuths planes)'
+        return
+      end if
+      deck%n_azimuths = n_azimuths
+      deck%n_components = 3
+    end if
+    if (n_planes == unset_int .and. count_given(phi_deg) > 0) then
+      message = 'phi_deg (one azimuth per plane) needs a general RIA: give n_planes (or ' // &
+                'n_azimuths for the azimuthal RIA)'
       return
     end if
     if (n_planes == unset_int) then
@@ -121,6 +148,26 @@ contains
       deck%thetaf_given = count_given(thetaf_deg) > 0
       if (count_given(thetaf_deg) == 0) thetaf_deg(1:n) = theta0_deg(1:n)
       if (count_given(zeta0) == 0) zeta0(1:n) = huge(1.0_dp)
+      if (count_given(phi_deg) > 0) then
+        ! Azimuths: a 3D case (SPEC section 9).
+        if (count_given(phi_deg) /= n) then
+          message = 'with n_planes = ' // format_integer(n) // ' give ' // format_integer(n) // &
+                    ' values of phi_deg, or none (given: ' // format_integer(count_given(phi_deg)) // ')'
+          return
+        end if
+        do k = 1, n
+          if (.not. (ieee_is_finite(phi_deg(k)) .and. abs(phi_deg(k)) <= 360.0_dp)) then
+            message = 'plane ' // format_integer(k) // ': phi_deg(' // format_integer(k) // ') = ' // &
+                      value_str(phi_deg(k)) // ' is inadmissible: admissible -360 <= phi_deg ' // &
+                      '<= 360 [deg]'
+            return
+          end if
+        end do
+        deck%azimuths_given = .true.
+        deck%phi_deg = 0.0_dp
+        deck%phi_deg(1:n) = phi_deg(1:n)
+        deck%n_components = 3
+      end if
       if (count_given(thetaf_deg) /= n .or. count_given(zeta0) /= n) then
         message = 'with n_planes = ' // format_integer(n) // ' give ' // format_integer(n) // &
                   ' values of thetaf_deg and of zeta0, or none'

@@ -131,6 +131,7 @@ contains
       return
     end if
     call parse_store(store, deck%stored, message)
+    deck%store_listed = all(lower(trim(adjustl(store))) /= [character(len=6) :: 'all', 'curves'])
   end procedure read_output
 
   !> &output store: 'all', 'curves', or a comma-separated list of dataset names (case and

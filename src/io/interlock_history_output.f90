@@ -16,7 +16,8 @@ module interlock_history_output
       is_infinite_value, interlock_version_string
   use interlock_h5, only: h5_file_t, h5_series_t, h5_create_file, h5_close_file, h5_has_marks, &
       h5_create_group, h5_close_group, h5_create_series, h5_append, h5_close_series, h5_attribute
-  use interlock_deck, only: deck_t, deck_n_cases, n_datasets, history_datasets
+  use interlock_deck, only: deck_t, deck_n_cases, n_datasets, history_datasets, deck_ria_name, &
+      sweep_slip_angle
   use interlock_mixed_control, only: history_row_t, history_sink_t, history_t
   use interlock_files, only: path_kind, path_absent, path_regular, path_folder, same_file, &
       guard_file, unguard_file, remove_file, rename_file, temporary_name
@@ -183,6 +184,7 @@ contains
     k = max(deck%n_steps, 1) - 1
     writer%block_rows = min(max_chunk_rows, k / deck%every + 1 + merge(1, 0, mod(k, deck%every) /= 0))
     writer%block%n_planes = np
+    writer%block%n_components = deck%n_components
     call writer%block%reserve(writer%block_rows)
     ! &output store: the datasets written.
     stored = ''
@@ -194,7 +196,7 @@ contains
     ! What the case is.
     call ok(h5_text(g, 'label', label))
     call ok(h5_text(g, 'sweep_parameter', trim(deck%sweep_parameter)))
-    if (deck%sweep_property > 0) call ok(h5_real(g, 'sweep_value', deck%sweep_values(icase)))
+    if (deck%sweep_property /= 0) call ok(h5_real(g, 'sweep_value', deck%sweep_values(icase)))
     ! The material: every property of the table with its unit.
     call property(prop_sigma0_n, mat%sigma0_n)
     call property(prop_sigma0_t, mat%sigma0_t)
@@ -228,12 +230,34 @@ contains
     call ok(h5_int(g, 'n_steps', deck%n_steps))
     call ok(h5_int(g, 'every', deck%every))
     call ok(h5_text(g, 'stored', stored))
+    ! A 3D case (SPEC section 9): the frame, the third component and the RIA's azimuths.
+    if (deck%n_components == 3) then
+      call ok(h5_text(g, 'frame', 'local interface frame (n, t1, t2), right-handed, t2 = n x t1; ' // &
+                      't1 is the slip axis of the input'))
+      call ok(h5_text(g, 'components', 'N, T1, T2'))
+      call ok(h5_text(g, 't2_control', control_name(deck%control%traction(3))))
+      call ok(h5_text(g, 'ria', deck_ria_name(deck)))
+      call ok(h5_int(g, 'n_azimuths', deck%n_azimuths))
+      call ok(h5_real_1d(g, 'phi_deg', mat%phi(1:np) * rad_to_deg))
+      call ok(h5_text(g, 'phi_deg_unit', 'deg'))
+      call ok(h5_text(g, 'path', trim(deck%path_kind)))
+      if (len_trim(deck%path_kind) > 0) then
+        if (deck%sweep_property == sweep_slip_angle) then
+          call ok(h5_real(g, 'angle_deg', deck%sweep_values(icase)))
+        else
+          call ok(h5_real(g, 'angle_deg', deck%path_angle_deg))
+        end if
+        call ok(h5_real(g, 'path_size', deck%path_size))
+        call ok(h5_real(g, 'path_turns', deck%path_turns))
+        call ok(h5_real(g, 'path_normal', deck%path_normal))
+      end if
+    end if
     ! The datasets, empty: rows are appended as they come.
     do k = 1, n_datasets
       if (.not. writer%wanted(k) .or. stat /= 0) cycle
       select case (dataset_shape(k))
       case (shape_pair)
-        width = 2
+        width = deck%n_components
       case (shape_planes)
         width = np
       case default
@@ -241,7 +265,8 @@ contains
       end select
       call h5_create_series(g, trim(history_datasets(k)), dataset_shape(k) == shape_count, &
                             width, writer%block_rows, dataset_unit(k), &
-                            dataset_description(k, deck%extrapolate), writer%series(k), stat)
+                            dataset_description(k, deck%extrapolate, deck%n_components == 3), &
+                            writer%series(k), stat)
     end do
     if (stat /= 0) message = 'cannot write the case /cases/' // name // ' to ' // out%temp_name
 
@@ -338,6 +363,10 @@ contains
           call h5_append(s(k), b%iterations(1:n), stat)
         case ('substeps')
           call h5_append(s(k), b%substeps(1:n), stat)
+        case ('sf_strike')
+          call h5_append(s(k), b%sf_strike(:, 1:n), stat)
+        case ('tauf_strike')
+          call h5_append(s(k), b%tauf_strike(:, 1:n), stat)
         end select
       end do
     end associate
@@ -468,7 +497,8 @@ contains
     select case (trim(history_datasets(k)))
     case ('separation', 'traction')
       dataset_shape = shape_pair
-    case ('damage', 'beta', 'theta', 'zeta', 'frictional_slip', 'friction_traction')
+    case ('damage', 'beta', 'theta', 'zeta', 'frictional_slip', 'friction_traction', 'sf_strike', &
+          'tauf_strike')
       dataset_shape = shape_planes
     case ('iterations', 'substeps')
       dataset_shape = shape_count
@@ -481,9 +511,9 @@ contains
     integer, intent(in) :: k
     character(len=:), allocatable :: unit
     select case (trim(history_datasets(k)))
-    case ('separation', 'frictional_slip')
+    case ('separation', 'frictional_slip', 'sf_strike')
       unit = 'mm'
-    case ('traction', 'friction_traction')
+    case ('traction', 'friction_traction', 'tauf_strike')
       unit = 'MPa'
     case ('theta')
       unit = 'rad'
@@ -495,9 +525,9 @@ contains
   end function dataset_unit
 
   !> The `description` of dataset k, with what extrapolation (&solver extrapolate) made of it.
-  pure function dataset_description(k, extrapolated) result(text)
+  pure function dataset_description(k, extrapolated, three_d) result(text)
     integer, intent(in) :: k
-    logical, intent(in) :: extrapolated
+    logical, intent(in) :: extrapolated, three_d
     character(len=:), allocatable :: text, state_note, count_note, extrapolated_note
     state_note = ''
     count_note = ''
@@ -514,11 +544,21 @@ contains
       text = 'pseudo-time at the end of each step written (row 0: after the first step; with ' // &
         'every = k > 1 the steps 1, 1 + k, 1 + 2k, ... and the last)'
     case ('separation')
-      text = 'relative displacement (s_N, s_T): column 0 normal (> 0 opening), 1 tangential' // &
-        extrapolated_note
+      if (three_d) then
+        text = 'relative displacement (s_N, s_T1, s_T2) in the frame (n, t1, t2): column 0 ' // &
+          'normal (> 0 opening), 1 along t1, 2 along t2' // extrapolated_note
+      else
+        text = 'relative displacement (s_N, s_T): column 0 normal (> 0 opening), 1 tangential' // &
+          extrapolated_note
+      end if
     case ('traction')
-      text = 'traction (sigma_N, sigma_T): column 0 normal (< 0 compression), 1 tangential' // &
-        extrapolated_note
+      if (three_d) then
+        text = 'traction (sigma_N, sigma_T1, sigma_T2) in the frame (n, t1, t2): column 0 ' // &
+          'normal (< 0 compression), 1 along t1, 2 along t2' // extrapolated_note
+      else
+        text = 'traction (sigma_N, sigma_T): column 0 normal (< 0 compression), 1 tangential' // &
+          extrapolated_note
+      end if
     case ('damage')
       text = 'damage D_k of each microplane (column k-1 = plane k)' // state_note
     case ('beta')
@@ -529,9 +569,25 @@ contains
     case ('zeta')
       text = 'accumulated frictional work zeta_k of each microplane (drives wear)' // state_note
     case ('frictional_slip')
-      text = 'frictional slip sf_k along each microplane' // state_note
+      if (three_d) then
+        text = 'frictional slip sf_k of each microplane along its dip direction e_k (the ' // &
+          'strike component: sf_strike)' // state_note
+      else
+        text = 'frictional slip sf_k along each microplane' // state_note
+      end if
     case ('friction_traction')
-      text = 'friction traction K_t (s_kt - sf_k) of each microplane at the end of the step' // &
+      if (three_d) then
+        text = 'friction traction tau_f of each microplane along its dip direction e_k at the ' // &
+          'end of the step (the strike component: tauf_strike)' // state_note
+      else
+        text = 'friction traction K_t (s_kt - sf_k) of each microplane at the end of the step' // &
+          state_note
+      end if
+    case ('sf_strike')
+      text = 'frictional slip of each microplane along its strike q_k = -sin(phi_k) t1 + ' // &
+        'cos(phi_k) t2' // state_note
+    case ('tauf_strike')
+      text = 'friction traction of each microplane along its strike q_k at the end of the step' // &
         state_note
     case ('work')
       text = 'work done on the interface since the initial state, sum of sigma . ds' // state_note

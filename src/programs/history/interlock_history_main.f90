@@ -10,7 +10,9 @@ program interlock_history
   use interlock_cli, only: exit_program, command_argument, command_text
   use interlock, only: interlock_material_t, interlock_solver_t, interlock_state_t, &
       interlock_version_string, status_ok
-  use interlock_deck, only: deck_t, read_deck, deck_case, deck_n_cases
+  use interlock, only: dp
+  use interlock_deck, only: deck_t, read_deck, deck_case, deck_n_cases, deck_loading
+  use interlock_mixed_control, only: arc_t
   use interlock_mixed_control, only: run_history, run_history_extrapolated
   use interlock_history_output, only: output_t, case_writer_t, output_check_target, output_open, &
       output_begin_case, output_end_case, output_close, output_abort
@@ -109,6 +111,8 @@ contains
     integer :: stat, icase, slash
     character(len=8) :: cbuf
     logical :: jump_warned
+    real(dp), allocatable :: values(:, :)
+    type(arc_t), allocatable :: arcs(:)
 
     jump_warned = .false.
     call read_deck(path, deck, stat, message)
@@ -161,12 +165,19 @@ contains
       end if
       call output_begin_case(out, icase, deck, mat, solver, label, writer, stat, message)
       if (stat == 0) then
-        if (deck%extrapolate) then
-          call run_history_extrapolated(mat, solver, deck%control, deck%times, deck%values, &
+        call deck_loading(deck, icase, values, arcs)
+        if (deck%extrapolate .and. allocated(arcs)) then
+          call run_history_extrapolated(mat, solver, deck%control, deck%times, values, &
+                                        deck%steps, state, writer, arcs)
+        else if (deck%extrapolate) then
+          call run_history_extrapolated(mat, solver, deck%control, deck%times, values, &
                                         deck%steps, state, writer)
+        else if (allocated(arcs)) then
+          call run_history(mat, solver, deck%control, deck%times, values, deck%steps, state, &
+                           writer, arcs)
         else
-          call run_history(mat, solver, deck%control, deck%times, deck%values, deck%steps, &
-                           state, writer)
+          call run_history(mat, solver, deck%control, deck%times, values, deck%steps, state, &
+                           writer)
         end if
         call output_end_case(out, writer, stat, message)
       end if
