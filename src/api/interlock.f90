@@ -5,7 +5,7 @@
 module interlock
   use interlock_kinds, only: dp, pi, deg_to_rad, rad_to_deg, infinite_threshold, &
       separation_bound, is_finite_bits, is_finite_value, is_infinite_value, is_nan_value, &
-      same_value, exponent_bits
+      same_value, exponent_bits, within_separation_bound
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure, &
       message_len
   use interlock_numbers, only: key_in_range, keys_in_range, format_real, format_integer

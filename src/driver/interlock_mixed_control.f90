@@ -18,7 +18,7 @@
 module interlock_mixed_control
   use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
       interlock_state_3d_t, interlock_info_t, interlock_update, interlock_update_3d, status_ok, &
-      format_real, format_integer, is_nan_value, max_planes
+      format_real, format_integer, is_nan_value, max_planes, separation_bound
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   implicit none
   private
@@ -813,6 +813,11 @@ contains
           step = 2.0_dp * step
         end if
         if (.not. ieee_is_finite(x_new)) exit
+        ! The update admits |s| <= separation_bound: no root is sought beyond it.
+        if (abs(x_new) > separation_bound) then
+          if (abs(x) >= separation_bound) exit
+          x_new = sign(separation_bound, x_new)
+        end if
       end if
       r_prev = abs(r)
       x = x_new

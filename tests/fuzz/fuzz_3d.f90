@@ -213,9 +213,10 @@ contains
           if (beyond_bound .or. .not. is_finite_bits(s(j))) exit
           if (abs(s(j)) <= separation_bound) exit
         end do
-        bad_s = .not. all(is_finite_bits(s))
         c%garbage_s = c%garbage_s + 1
       end if
+      ! (a material of extreme lengths can also take a plain step beyond the bound)
+      bad_s = .not. all(within_separation_bound(s))
       call interlock_update_3d(mat, solver, s, old, new, sigma, tangent, info)
       c%updates = c%updates + 1
       what = ''
@@ -242,7 +243,7 @@ contains
         cycle
       end if
       if (bad_s) then
-        call report(mat, solver, old, s, 'a non-finite separation was accepted', c)
+        call report(mat, solver, old, s, 'a separation beyond separation_bound was accepted', c)
         return
       end if
       if (garbled) then
