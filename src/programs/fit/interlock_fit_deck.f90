@@ -583,7 +583,7 @@ contains
     !> those of the deck's dimension; 0 and a message naming the admissible ones otherwise.
     integer function output_for_deck(name, variable, cname)
       character(len=*), intent(in) :: name, variable, cname
-      character(len=:), allocatable :: dimension, lead
+      character(len=:), allocatable :: dimension, lead, derived
       output_for_deck = output_index(name)
       dimension = merge('3D', '2D', fd%deck%n_components == 3)
       lead = prefix // 'curve ' // cname // ': ' // variable // ' = ''' // &
@@ -593,10 +593,12 @@ contains
                   ' deck: ' // deck_outputs(fd%deck)
       else if (.not. output_in_deck(output_for_deck, fd%deck)) then
         if (fd%deck%n_components == 3) then
+          derived = 'slip_length (the slip path''s length)'
+          if (output_for_deck == out_traction_t) derived = 'traction_t_magnitude (|sigma_T|)'
           message = lead // ' is ambiguous in a 3D deck: name the component (' // &
                     trim(output_names(output_for_deck)) // '1 or ' // &
-                    trim(output_names(output_for_deck)) // '2), or traction_t_magnitude or ' // &
-                    'slip_length; the outputs of this 3D deck: ' // deck_outputs(fd%deck)
+                    trim(output_names(output_for_deck)) // '2), or ' // derived // &
+                    '; the outputs of this 3D deck: ' // deck_outputs(fd%deck)
         else
           message = lead // ' is an output of 3D decks only (this deck is 2D: no T2 loading, ' // &
                     'path, azimuths or azimuthal RIA, docs/deck-format.md); the outputs of ' // &
