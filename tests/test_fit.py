@@ -183,16 +183,23 @@ def staged(fit, history, deck_src):
         assert written == [f"{stem}_fit_{c}.png" for c in
                            ("shear2", "dilation2", "shear1", "dilation1")] + ["all.png"], written
         assert all(os.path.getsize(os.path.join(work, x)) > 0 for x in written)
-    bad = []
-    for name, true in truth.items():
-        value = got[name][0]
-        print(f"{name}: {value!r} paper {true} relative error {abs(value - true) / true:.2e}")
-        if abs(value - true) > 1e-4 * true:
-            bad.append(name)
+    bad = not_recovered(got, truth, 1e-4, "paper")
     print(f"staged fit: {cpu:.2f} s CPU, {wall:.2f} s wall (target: under 30 s on one core)")
     assert "stage_parameters" in text
     if bad:
         sys.exit(f"FAIL: not recovered: {bad}")
+
+
+def not_recovered(got, truth, tolerance, source):
+    """The parameters of `truth` that the fit (`got`: name -> (value, std_error)) missed by more
+    than `tolerance` relative; each printed."""
+    bad = []
+    for name, true in truth.items():
+        value = got[name][0]
+        print(f"{name}: {value!r} {source} {true} relative error {abs(value - true) / true:.2e}")
+        if abs(value - true) > tolerance * true:
+            bad.append(name)
+    return bad
 
 
 def files(fit, history):
@@ -470,12 +477,7 @@ def recovery3d(fit, history, deck_src):
                                  os.path.join(work, stem + "_fitted.nml"), history, work)
         same_as_history(os.path.join(work, stem + "_fit.h5"),
                         os.path.join(work, stem + "_fitted.h5"))
-    bad = []
-    for name, true in truth.items():
-        value = got[name][0]
-        print(f"{name}: {value!r} true {true} relative error {abs(value - true) / true:.2e}")
-        if abs(value - true) > 1e-6 * true:
-            bad.append(name)
+    bad = not_recovered(got, truth, 1e-6, "true")
     print(f"3D fit: {cpu:.2f} s CPU, {wall:.2f} s wall")
     if bad:
         sys.exit(f"FAIL: not recovered: {bad}")
