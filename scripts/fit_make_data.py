@@ -12,6 +12,11 @@ MPa), normal (traction_n, MPa). cycle = 1 + floor((time - T0) / T) for time > T0
 `cycles` repeat the block of period T = times(n) - times(1) after the preload), 1 without
 --cycle-period. --noise f adds independent normal noise of standard deviation f max|column| to
 dilation and shear (numpy's default_rng(seed): the same file on every machine and run).
+A 3D deck (three components, docs/deck-format.md "Three dimensions") gives the columns time,
+cycle, slip_t1, slip_t2 (s_T1, s_T2, mm), slip_length (the length of the slip path in the
+(T1, T2) plane, mm: interlock-fit's slip_length), dilation, shear_t1, shear_t2 (sigma_T1,
+sigma_T2, MPa), shear (|sigma_T|, MPa), normal; the noise goes to dilation, shear_t1, shear_t2 and
+shear.
 """
 import argparse
 import os
@@ -55,14 +60,26 @@ def main():
     cycle = np.ones_like(time)
     if a.cycle_period > 0:
         cycle = np.maximum(1, 1 + np.floor((time - a.cycle_start) / a.cycle_period - 1e-9))
-    dilation, shear = sep[:, 0].copy(), trac[:, 1].copy()
+    if sep.shape[1] == 3:
+        steps = np.hypot(np.diff(sep[:, 1]), np.diff(sep[:, 2]))
+        names = ["slip_t1", "slip_t2", "slip_length", "dilation", "shear_t1", "shear_t2",
+                 "shear", "normal"]
+        columns = [sep[:, 1], sep[:, 2], np.concatenate([[0.0], np.cumsum(steps)]),
+                   sep[:, 0].copy(), trac[:, 1].copy(), trac[:, 2].copy(),
+                   np.hypot(trac[:, 1], trac[:, 2]), trac[:, 0]]
+        noisy = [3, 4, 5, 6]
+    else:
+        names = ["slip", "dilation", "shear", "normal"]
+        columns = [sep[:, 1], sep[:, 0].copy(), trac[:, 1].copy(), trac[:, 0]]
+        noisy = [1, 2]
     if a.noise > 0:
         rng = np.random.default_rng(a.seed)
-        dilation += rng.normal(0.0, a.noise * np.abs(dilation).max(), dilation.size)
-        shear += rng.normal(0.0, a.noise * np.abs(shear).max(), shear.size)
+        for k in noisy:
+            columns[k] = columns[k] + rng.normal(0.0, a.noise * np.abs(columns[k]).max(),
+                                                 columns[k].size)
     with open(a.out, "w") as f:
-        f.write("time,cycle,slip,dilation,shear,normal\n")
-        for row in zip(time, cycle, sep[:, 1], dilation, shear, trac[:, 0]):
+        f.write(",".join(["time", "cycle"] + names) + "\n")
+        for row in zip(time, cycle, *columns):
             f.write(",".join(repr(float(v)) for v in row) + "\n")
 
 

@@ -23,7 +23,10 @@ import numpy as np  # noqa: E402
 LABELS = {"time": "time", "separation_n": "dilation s_N [mm]", "separation_t": "slip s_T [mm]",
           "traction_n": "sigma_N [MPa]", "traction_t": "shear sigma_T [MPa]", "work": "work [N/mm]",
           "stored_energy": "stored energy [N/mm]", "damage_dissipation": "damage dissipation [N/mm]",
-          "friction_dissipation": "friction dissipation [N/mm]"}
+          "friction_dissipation": "friction dissipation [N/mm]",
+          "separation_t1": "slip s_T1 [mm]", "separation_t2": "slip s_T2 [mm]",
+          "traction_t1": "shear sigma_T1 [MPa]", "traction_t2": "shear sigma_T2 [MPa]",
+          "traction_t_magnitude": "shear |sigma_T| [MPa]", "slip_length": "slip length [mm]"}
 
 
 def text(value):

@@ -4,9 +4,9 @@
 # order; data generated at test time), and the bad fit decks of tests/data/bad_fit_decks
 # (NAME.nml + NAME.expected, checked by tests/test_bad_decks.py); an optimum on the law's
 # limit theta_f = theta_0, inputs read as written, no file when the fitted deck cannot be
-# written, the discretization check of the staged deck, and the unit suites of the solver and
-# the CSV reader. Label fit. (Without INTERLOCK_BUILD_PROGRAMS there is no interlock-fit and
-# nothing to test here.)
+# written, the discretization check of the staged deck, 3D decks (a recovery on the azimuthal
+# RIA, a circular slip path), and the unit suites of the solver and the CSV reader. Label fit.
+# (Without INTERLOCK_BUILD_PROGRAMS there is no interlock-fit and nothing to test here.)
 if(NOT TARGET interlock-fit)
   return()
 endif()
@@ -28,6 +28,17 @@ add_test(NAME fit_discretization_granite
           $<TARGET_FILE:interlock-fit> $<TARGET_FILE:interlock-history> discretization
           ${PROJECT_SOURCE_DIR}/inputs/fit/granite_staged.nml)
 set_tests_properties(fit_discretization_granite PROPERTIES LABELS fit TIMEOUT 600)
+# 3D: the shipped deck (the azimuthal RIA at 45 deg; its CSV checked against interlock-history)
+# and a circular slip path, each fitted history equal to interlock-history's.
+add_test(NAME fit_recovery_3d_granite
+  COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_fit.py
+          $<TARGET_FILE:interlock-fit> $<TARGET_FILE:interlock-history> recovery3d
+          ${PROJECT_SOURCE_DIR}/inputs/fit/granite_3d_45.nml)
+set_tests_properties(fit_recovery_3d_granite PROPERTIES LABELS fit TIMEOUT 300)
+add_test(NAME fit_circle_3d
+  COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_fit.py
+          $<TARGET_FILE:interlock-fit> $<TARGET_FILE:interlock-history> circle)
+set_tests_properties(fit_circle_3d PROPERTIES LABELS fit TIMEOUT 300)
 foreach(mode files identifiability coupled inputs deckfail)
   add_test(NAME fit_${mode}
     COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_fit.py

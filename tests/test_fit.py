@@ -9,6 +9,8 @@ usage: test_fit.py FIT HISTORY recovery SET NOISE   SET: granite | table5; NOISE
        test_fit.py FIT HISTORY inputs               inputs read as they are written
        test_fit.py FIT HISTORY deckfail             the fitted deck cannot be written: no file
        test_fit.py FIT HISTORY discretization DECK  the discretization check of the staged deck
+       test_fit.py FIT HISTORY recovery3d DECK      the 3D deck of inputs/fit/ (azimuthal RIA, 45 deg)
+       test_fit.py FIT HISTORY circle               a 3D deck on a circular slip path
 
 The data are the curves of a history with known parameters (scripts/fit_make_data.py; noise:
 independent normal noise of 2 % of each curve's largest value, numpy default_rng(12), the same on
@@ -181,16 +183,23 @@ def staged(fit, history, deck_src):
         assert written == [f"{stem}_fit_{c}.png" for c in
                            ("shear2", "dilation2", "shear1", "dilation1")] + ["all.png"], written
         assert all(os.path.getsize(os.path.join(work, x)) > 0 for x in written)
-    bad = []
-    for name, true in truth.items():
-        value = got[name][0]
-        print(f"{name}: {value!r} paper {true} relative error {abs(value - true) / true:.2e}")
-        if abs(value - true) > 1e-4 * true:
-            bad.append(name)
+    bad = not_recovered(got, truth, 1e-4, "paper")
     print(f"staged fit: {cpu:.2f} s CPU, {wall:.2f} s wall (target: under 30 s on one core)")
     assert "stage_parameters" in text
     if bad:
         sys.exit(f"FAIL: not recovered: {bad}")
+
+
+def not_recovered(got, truth, tolerance, source):
+    """The parameters of `truth` that the fit (`got`: name -> (value, std_error)) missed by more
+    than `tolerance` relative; each printed."""
+    bad = []
+    for name, true in truth.items():
+        value = got[name][0]
+        print(f"{name}: {value!r} {source} {true} relative error {abs(value - true) / true:.2e}")
+        if abs(value - true) > tolerance * true:
+            bad.append(name)
+    return bad
 
 
 def files(fit, history):
@@ -403,14 +412,118 @@ def discretization(fit, history, deck_src):
     print("discretization check: shipped deck below 0.1 standard error, implicit 100/mm above")
 
 
+def history_columns(h5, names):
+    """The history outputs `names` (interlock-fit's, docs/fit.md) of case 1 of an
+    interlock-history file, computed from its separation and traction (3D)."""
+    with h5py.File(h5, "r") as f:
+        s = f["cases/0001/separation"][()]
+        t = f["cases/0001/traction"][()]
+    steps = np.hypot(np.diff(s[:, 1]), np.diff(s[:, 2]))
+    table = {"slip_length": np.concatenate([[0.0], np.cumsum(steps)]), "separation_n": s[:, 0],
+             "separation_t1": s[:, 1], "separation_t2": s[:, 2], "traction_t1": t[:, 1],
+             "traction_t2": t[:, 2], "traction_t_magnitude": np.hypot(t[:, 1], t[:, 2])}
+    return [table[n] for n in names]
+
+
+def same_as_history(fit_h5, history_h5):
+    """Each curve's fitted history in the fit file (history_x, history_y over the rows the curve
+    uses) is the history interlock-history writes for the fitted deck (the same parameters), to
+    round-off: the fit runs the case as interlock-history does. Returns the largest relative
+    difference."""
+    worst = 0.0
+    with h5py.File(fit_h5, "r") as f:
+        for name in f["curves"]:
+            g = f["curves"][name]
+            along, against = str(g.attrs["along"]), str(g.attrs["against"])
+            hx, hy = g["history_x"][()], g["history_y"][()]
+            x, y = history_columns(history_h5, [along, against])
+            # the rows the curve uses: a contiguous run of the history's rows
+            starts = [k for k in range(x.size - hx.size + 1)
+                      if x[k] == hx[0] and y[k] == hy[0]] or \
+                     [int(np.argmin(np.abs(x - hx[0]) + np.abs(y - hy[0])))]
+            k = starts[0]
+            assert k + hx.size <= x.size, (name, k, hx.size, x.size)
+            for a, b in ((hx, x[k:k + hx.size]), (hy, y[k:k + hy.size])):
+                d = np.max(np.abs(a - b)) / max(np.max(np.abs(b)), 1e-300)
+                worst = max(worst, d)
+                assert d <= 1e-12, (name, along, against, d)
+            print(f"curve {name}: {against} against {along}, {hx.size} rows: the fit's history "
+                  f"and interlock-history's differ by {d:.1e} relative")
+    return worst
+
+
+def recovery3d(fit, history, deck_src):
+    """The shipped 3D deck: its CSV is what interlock-history computes with the deck's values (a
+    regression guard: regenerated here and compared), the fit recovers mu and theta_0 from 35 %
+    off to 1e-6 relative, and its model history is interlock-history's for the fitted deck."""
+    truth = {"mu": 0.6898538, "theta0_deg": 30.0}
+    with tempfile.TemporaryDirectory() as work:
+        stem = os.path.splitext(os.path.basename(deck_src))[0]
+        deck = os.path.join(work, stem + ".nml")
+        shutil.copy(deck_src, deck)
+        shutil.copy(os.path.join(os.path.dirname(deck_src), stem + ".csv"), work)
+        fresh = os.path.join(work, "fresh.csv")
+        run([sys.executable, MAKE_DATA, history, deck, fresh], work)
+        shipped = np.loadtxt(os.path.join(work, stem + ".csv"), delimiter=",", skiprows=1)
+        made = np.loadtxt(fresh, delimiter=",", skiprows=1)
+        assert shipped.shape == made.shape, (shipped.shape, made.shape)
+        scale = np.maximum(np.max(np.abs(made), axis=0), 1e-300)
+        drift = float(np.max(np.abs(shipped - made) / scale))
+        print(f"shipped CSV against interlock-history now: {drift:.1e} relative (regression guard)")
+        assert drift <= 1e-9, drift
+        out, wall = run([fit, deck], work)
+        print(out)
+        got, cpu = check_outputs(os.path.join(work, stem + "_fit.h5"),
+                                 os.path.join(work, stem + "_fitted.nml"), history, work)
+        same_as_history(os.path.join(work, stem + "_fit.h5"),
+                        os.path.join(work, stem + "_fitted.h5"))
+    bad = not_recovered(got, truth, 1e-6, "true")
+    print(f"3D fit: {cpu:.2f} s CPU, {wall:.2f} s wall")
+    if bad:
+        sys.exit(f"FAIL: not recovered: {bad}")
+
+
+def circle(fit, history):
+    """A 3D deck on a circular slip path (out to r = 0.5 mm along t1, one turn): the fit runs
+    the circle, not its chord (which would be a point: the turn ends where it starts): its
+    history is interlock-history's for the fitted deck to round-off, the path reaches
+    |s_T2| = r and the slip length of the leg out and the turn's chords, and mu comes back to
+    1e-6 relative."""
+    with tempfile.TemporaryDirectory() as work:
+        shutil.copy(os.path.join(DATA, "circle3d.nml"), work)
+        run([sys.executable, MAKE_DATA, history, "circle3d.nml", "circle3d.csv"], work)
+        rc, out, err = fit_run(fit, "circle3d.nml", work, "-q")
+        print(out, err)
+        assert rc == 0, (rc, err)
+        got, _ = check_outputs(os.path.join(work, "circle3d_fit.h5"),
+                               os.path.join(work, "circle3d_fitted.nml"), history, work)
+        same_as_history(os.path.join(work, "circle3d_fit.h5"),
+                        os.path.join(work, "circle3d_fitted.h5"))
+        with h5py.File(os.path.join(work, "circle3d_fit.h5"), "r") as f:
+            length = f["curves"]["shear_t2"]["history_x"][()]
+        s_t2, = history_columns(os.path.join(work, "circle3d_fitted.h5"), ["separation_t2"])
+    # the leg out (r) and the turn in 400 steps: 400 chords of 2 r sin(pi / 400), the sum of
+    # the rows' |delta s_T| (r + 2 pi r less 6.5e-5 r)
+    r = 0.5
+    chords = r + 400 * 2 * r * np.sin(np.pi / 400)
+    print(f"slip length {length[-1]!r} (the leg out and 400 chords of the turn: {chords!r}), "
+          f"max |s_T2| {np.max(np.abs(s_t2))!r}")
+    assert abs(length[-1] - chords) <= 1e-12 * chords, (length[-1], chords)
+    assert abs(np.max(np.abs(s_t2)) - r) <= 1e-4 * r, np.max(np.abs(s_t2))
+    value = got["mu"][0]
+    print(f"mu: {value!r} true 0.6898538 relative error {abs(value / 0.6898538 - 1):.2e}")
+    assert abs(value / 0.6898538 - 1) <= 1e-6, value
+
+
 def main():
     fit, history, mode = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2]), sys.argv[3]
     modes = {"identifiability": identifiability, "files": files, "coupled": coupled,
-             "inputs": inputs, "deckfail": deckfail}
+             "inputs": inputs, "deckfail": deckfail, "circle": circle}
     if mode == "recovery":
         recovery(fit, history, sys.argv[4], float(sys.argv[5]))
-    elif mode in ("staged", "discretization"):
-        {"staged": staged, "discretization": discretization}[mode](fit, history, sys.argv[4])
+    elif mode in ("staged", "discretization", "recovery3d"):
+        {"staged": staged, "discretization": discretization,
+         "recovery3d": recovery3d}[mode](fit, history, sys.argv[4])
     elif mode in modes:
         modes[mode](fit, history)
     else:

@@ -24,11 +24,20 @@ module interlock_fit_deck
   !> far outside it would make the residuals vanish or their squares overflow.
   real(dp), parameter :: min_weight = 1.0e-100_dp, max_weight = 1.0e100_dp
 
-  !> History outputs a curve can be compared with (one value per row).
-  integer, parameter :: n_outputs = 9
+  !> History outputs a curve can be compared with (one value per row). separation_t and
+  !> traction_t are the tangential components of a 2D deck; a 3D deck names its components t1
+  !> and t2 (separation_t1, traction_t1 are the same columns in 2D, where t is t1). Derived
+  !> outputs, in 2D and 3D: traction_t_magnitude = |sigma_T| = sqrt(sigma_T1^2 + sigma_T2^2), and
+  !> slip_length, the length of the slip path in the (T1, T2) plane from row 0 (the sum of the
+  !> rows' |delta s_T|: monotone, so a cyclic or curved path is one branch along it).
+  integer, parameter :: n_outputs = 15
   character(len=20), parameter :: output_names(n_outputs) = [character(len=20) :: 'time', &
     'separation_n', 'separation_t', 'traction_n', 'traction_t', 'work', 'stored_energy', &
-    'damage_dissipation', 'friction_dissipation']
+    'damage_dissipation', 'friction_dissipation', 'separation_t1', 'separation_t2', &
+    'traction_t1', 'traction_t2', 'traction_t_magnitude', 'slip_length']
+  integer, parameter, public :: out_separation_t = 3, out_traction_t = 5, out_separation_t1 = 10, &
+    out_separation_t2 = 11, out_traction_t1 = 12, out_traction_t2 = 13, &
+    out_traction_t_magnitude = 14, out_slip_length = 15
 
   character(len=13), parameter :: fit_groups(9) = [character(len=13) :: deck_groups, 'fit']
 
@@ -105,7 +114,7 @@ contains
                 'the free parameters: docs/fit.md)'
       return
     end if
-    if (fd%deck%sweep_property > 0) then
+    if (fd%deck%sweep_property /= 0) then
       message = path // ': &sweep: a fit deck has one case (remove &sweep)'
       return
     end if
@@ -478,14 +487,10 @@ contains
       file = trim(curve_file(i))
       if (file(1:1) /= '/') file = folder_of(path) // file
       c%file = file
-      c%along = output_index(curve_along(i))
-      c%against = output_index(curve_against(i))
-      if (c%along == 0 .or. c%against == 0) then
-        message = prefix // 'curve ' // cname // ': curve_along = ''' // trim(curve_along(i)) // &
-                  ''', curve_against = ''' // trim(curve_against(i)) // ''': each must be one ' // &
-                  'of the history outputs ' // join(output_names)
-        return
-      end if
+      c%along = output_for_deck(curve_along(i), 'curve_along', cname)
+      if (len_trim(message) > 0) return
+      c%against = output_for_deck(curve_against(i), 'curve_against', cname)
+      if (len_trim(message) > 0) return
       call read_csv(file, csv, message)
       if (len_trim(message) > 0) then
         message = prefix // 'curve ' // cname // ': ' // trim(message)
@@ -573,6 +578,35 @@ contains
       end if
       fd%curves(i) = c
     end subroutine read_curve
+
+    !> The history output `name` (curve_along or curve_against of the curve being read) among
+    !> those of the deck's dimension; 0 and a message naming the admissible ones otherwise.
+    integer function output_for_deck(name, variable, cname)
+      character(len=*), intent(in) :: name, variable, cname
+      character(len=:), allocatable :: dimension, lead, derived
+      output_for_deck = output_index(name)
+      dimension = merge('3D', '2D', fd%deck%n_components == 3)
+      lead = prefix // 'curve ' // cname // ': ' // variable // ' = ''' // &
+             trim(name) // ''''
+      if (output_for_deck == 0) then
+        message = lead // ' is no history output; the outputs of this ' // dimension // &
+                  ' deck: ' // deck_outputs(fd%deck)
+      else if (.not. output_in_deck(output_for_deck, fd%deck)) then
+        if (fd%deck%n_components == 3) then
+          derived = 'slip_length (the slip path''s length)'
+          if (output_for_deck == out_traction_t) derived = 'traction_t_magnitude (|sigma_T|)'
+          message = lead // ' is ambiguous in a 3D deck: name the component (' // &
+                    trim(output_names(output_for_deck)) // '1 or ' // &
+                    trim(output_names(output_for_deck)) // '2), or ' // derived // &
+                    '; the outputs of this 3D deck: ' // deck_outputs(fd%deck)
+        else
+          message = lead // ' is an output of 3D decks only (this deck is 2D: no T2 loading, ' // &
+                    'path, azimuths or azimuthal RIA, docs/deck-format.md); the outputs of ' // &
+                    'this 2D deck: ' // deck_outputs(fd%deck)
+        end if
+      end if
+      if (len_trim(message) > 0) output_for_deck = 0
+    end function output_for_deck
 
     !> The column `name` of `csv` (header name or number); 0 and a message if there is none.
     integer function find_column(csv, name, variable, cname)
@@ -709,6 +743,27 @@ contains
     end do
     output_index = 0
   end function output_index
+
+  !> Whether history output k exists for the deck: the T2 outputs in 3D only; separation_t and
+  !> traction_t in 2D only (in 3D the tangential components are t1 and t2).
+  pure logical function output_in_deck(k, deck)
+    integer, intent(in) :: k
+    type(deck_t), intent(in) :: deck
+    if (deck%n_components == 3) then
+      output_in_deck = k /= out_separation_t .and. k /= out_traction_t
+    else
+      output_in_deck = k /= out_separation_t2 .and. k /= out_traction_t2
+    end if
+  end function output_in_deck
+
+  !> The history outputs of the deck's dimension, joined by ', '.
+  function deck_outputs(deck) result(text)
+    type(deck_t), intent(in) :: deck
+    character(len=:), allocatable :: text
+    integer :: k
+    text = join_selected(output_names, pack([(k, k = 1, n_outputs)], &
+                                            [(output_in_deck(k, deck), k = 1, n_outputs)]))
+  end function deck_outputs
 
   function folder_of(path) result(folder)
     character(len=*), intent(in) :: path

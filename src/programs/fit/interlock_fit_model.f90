@@ -10,9 +10,10 @@ module interlock_fit_model
   use, intrinsic :: iso_fortran_env, only: output_unit
   use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
       prop_theta0, prop_thetaf, status_ok, format_integer, format_real
-  use interlock_deck, only: deck_t, deck_case, deck_set_property
-  use interlock_mixed_control, only: history_t, run_history, run_history_extrapolated
-  use interlock_fit_deck, only: fit_t, curve_t, split_branches, law_angles
+  use interlock_deck, only: deck_t, deck_case, deck_set_property, deck_loading
+  use interlock_mixed_control, only: history_t, run_history, run_history_extrapolated, arc_t
+  use interlock_fit_deck, only: fit_t, curve_t, split_branches, law_angles, out_separation_t1, &
+      out_separation_t2, out_traction_t1, out_traction_t2, out_traction_t_magnitude, out_slip_length
   use interlock_lm, only: lm_problem_t
   implicit none
   private
@@ -37,7 +38,9 @@ module interlock_fit_model
 
 contains
 
-  !> The history of the deck with the parameters set to `values` (fit%names order).
+  !> The history of the deck with the parameters set to `values` (fit%names order), run as
+  !> interlock-history runs the deck's case: its loading points and the arcs of a 3D path
+  !> (deck_loading), two or three components.
   !> message /= '': the values are inadmissible together or the history stopped.
   !> refine = 2: every segment of more than one step in twice as many steps (the discretization
   !> check; a one-step segment is a load jump and stays one step, as with `extrapolate`).
@@ -51,6 +54,8 @@ contains
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver
     type(interlock_state_t) :: state
+    real(dp), allocatable :: points(:, :)
+    type(arc_t), allocatable :: arcs(:)
     character(len=:), allocatable :: label
     character(len=1024) :: why
     integer :: i, stat
@@ -70,10 +75,16 @@ contains
       return
     end if
     hist%n_rows = 0
-    if (d%extrapolate) then
-      call run_history_extrapolated(mat, solver, d%control, d%times, d%values, d%steps, state, hist)
+    call deck_loading(d, 1, points, arcs)
+    if (d%extrapolate .and. allocated(arcs)) then
+      call run_history_extrapolated(mat, solver, d%control, d%times, points, d%steps, state, &
+                                    hist, arcs)
+    else if (d%extrapolate) then
+      call run_history_extrapolated(mat, solver, d%control, d%times, points, d%steps, state, hist)
+    else if (allocated(arcs)) then
+      call run_history(mat, solver, d%control, d%times, points, d%steps, state, hist, arcs)
     else
-      call run_history(mat, solver, d%control, d%times, d%values, d%steps, state, hist)
+      call run_history(mat, solver, d%control, d%times, points, d%steps, state, hist)
     end if
     if (hist%status /= 'completed') message = 'at ' // parameter_text(fit, values) // &
                                               ': the history ' // hist%status
@@ -158,24 +169,38 @@ contains
     x = values(problem%free)
   end subroutine fit_project
 
-  !> History output k (interlock_fit_deck's output_names) as a series over the rows.
+  !> History output k (interlock_fit_deck's output_names) as a series over the rows. The
+  !> T2 outputs of a 2D history (which read_fit_deck refuses) would be zero.
   function history_output(hist, k) result(v)
     type(history_t), intent(in) :: hist
     integer, intent(in) :: k
-    real(dp), allocatable :: v(:)
-    integer :: n
+    real(dp), allocatable :: v(:), t2(:)
+    integer :: n, i
     n = hist%n_rows
     select case (k)
     case (1)
       v = hist%time(1:n)
     case (2)
       v = hist%separation(1, 1:n)
-    case (3)
+    case (3, out_separation_t1)
       v = hist%separation(2, 1:n)
     case (4)
       v = hist%traction(1, 1:n)
-    case (5)
+    case (5, out_traction_t1)
       v = hist%traction(2, 1:n)
+    case (out_separation_t2)
+      v = component_t2(hist%separation)
+    case (out_traction_t2)
+      v = component_t2(hist%traction)
+    case (out_traction_t_magnitude)
+      v = hypot(hist%traction(2, 1:n), component_t2(hist%traction))
+    case (out_slip_length)
+      t2 = component_t2(hist%separation)
+      allocate (v(n))
+      if (n > 0) v(1) = 0.0_dp
+      do i = 2, n
+        v(i) = v(i - 1) + hypot(hist%separation(2, i) - hist%separation(2, i - 1), t2(i) - t2(i - 1))
+      end do
     case (6)
       v = hist%work(1:n)
     case (7)
@@ -185,6 +210,17 @@ contains
     case default
       v = hist%diss_friction(1:n)
     end select
+
+  contains
+
+    !> The T2 row of a (components, rows) array over the history's rows; zero in 2D.
+    function component_t2(a) result(c)
+      real(dp), intent(in) :: a(:, :)
+      real(dp) :: c(n)
+      c = 0.0_dp
+      if (size(a, 1) >= 3) c = a(3, 1:n)
+    end function component_t2
+
   end function history_output
 
   !> The model's values at the curve's points (branch matching, linear interpolation), and the
