@@ -104,6 +104,12 @@ module interlock_umat_body
   implicit none
   private
   public :: interlock_umat_cohesive, diverged_iteration_message, pnewdt_diverged
+  ! (for the three-dimensional body, umat/interlock_umat_body_3d.f90: the same checks,
+  ! messages and PNEWDT rules)
+  public :: pnewdt_bad_input, pnewdt_local_failure, keep_fraction, pnewdt_min_factor, &
+            separation_bits, increment_bits, state_bits, bad_precision, bad_ntens, bad_nstatv, bad_stress, &
+            report, separation_text, lower_pnewdt, step_factor, property_index, name_layer_property, &
+            reject_argument, reject_start_separation
 
   real(dp), parameter :: pnewdt_bad_input = -1.0_dp
   real(dp), parameter :: pnewdt_local_failure = 0.5_dp
@@ -233,8 +239,8 @@ contains
       ok = abs(s(1)) <= separation_bound .and. abs(s(2)) <= separation_bound
     end if
     if (.not. ok) then
-      call report(diverged_iteration_message('DSTRAN = (' // format_real(DSTRAN(1)) // ', ' // &
-                  format_real(DSTRAN(2)) // ') mm', '|s_N|, |s_T| <= ' // &
+      call report(diverged_iteration_message('DSTRAN = ' // separation_text(DSTRAN(1:2)) // &
+                  ' mm', '|s_N|, |s_T| <= ' // &
                   format_real(separation_bound) // ' mm'), pnewdt_diverged, said_diverged, &
                   NOEL, NPT, KINC, CMNAME, PNEWDT)
       return
@@ -431,7 +437,7 @@ contains
   subroutine reject_argument(what, n, x, noel, npt, kinc, cmname, pnewdt)
     use interlock, only: format_integer, format_real, umat_nstatv, is_finite_bits
     integer, intent(in) :: what, n, noel, npt, kinc
-    real(dp), intent(in) :: x(2)
+    real(dp), intent(in) :: x(:)   !< STRESS on entry (bad_stress)
     character(len=*), intent(in) :: cmname
     real(dp), intent(inout) :: pnewdt
     integer :: i
@@ -442,19 +448,18 @@ contains
                   pnewdt_bad_input, said_argument + what, noel, npt, kinc, cmname, pnewdt)
     case (bad_ntens)
       call report('NTENS = ' // format_integer(n) // ' is inadmissible: admissible NTENS = 2 ' // &
-                  '(2D cohesive element: 1 normal, 2 shear)', pnewdt_bad_input, &
+                  '(2D cohesive element: 1 normal, 2 shear) or 3 (3D cohesive element: 1 ' // &
+                  'normal, 2 and 3 shear)', pnewdt_bad_input, &
                   said_argument + what, noel, npt, kinc, cmname, pnewdt)
     case (bad_nstatv)
       call report('NSTATV = ' // format_integer(n) // ' is inadmissible: admissible NSTATV >= ' &
                   // format_integer(umat_nstatv) // ' (*DEPVAR; see interlock-query --statev)', &
                   pnewdt_bad_input, said_argument + what, noel, npt, kinc, cmname, pnewdt)
     case (bad_stress)
-      i = 2
-      if (.not. is_finite_bits(x(1))) then
-        i = 1
-      else if (abs(x(1)) > state_bound) then
-        i = 1
-      end if
+      do i = 1, size(x) - 1
+        if (.not. is_finite_bits(x(i))) exit
+        if (abs(x(i)) > state_bound) exit
+      end do
       call report('STRESS(' // format_integer(i) // ') = ' // format_real(x(i)) // ' on entry ' // &
                   'is inadmissible: admissible |STRESS| <= ' // format_real(state_bound) // &
                   ' MPa (the traction this UMAT returned for the last increment)', &
@@ -466,16 +471,33 @@ contains
   !> finite or beyond the admissible bound is bad input.
   subroutine reject_start_separation(stran, noel, npt, kinc, cmname, pnewdt)
     use interlock, only: format_real
-    real(dp), intent(in) :: stran(2)
+    real(dp), intent(in) :: stran(:)   !< (s_N, s_T) or (s_N, s_T1, s_T2)
     integer, intent(in) :: noel, npt, kinc
     character(len=*), intent(in) :: cmname
     real(dp), intent(inout) :: pnewdt
-    call report('the separation at the start of the increment STRAN = (' // &
-                format_real(stran(1)) // ', ' // format_real(stran(2)) // ') mm is ' // &
-                'inadmissible: admissible |s_N|, |s_T| <= ' // format_real(separation_bound) // &
+    character(len=*), parameter :: names_2d = '|s_N|, |s_T|', names_3d = '|s_N|, |s_T1|, |s_T2|'
+    character(len=len(names_3d)) :: names
+    names = names_3d
+    if (size(stran) == 2) names = names_2d
+    call report('the separation at the start of the increment STRAN = ' // &
+                separation_text(stran) // ' mm is inadmissible: admissible ' // trim(names) // &
+                ' <= ' // format_real(separation_bound) // &
                 ' mm (separations in mm: constitutive thickness 1)', pnewdt_bad_input, &
                 said_start_strain, noel, npt, kinc, cmname, pnewdt)
   end subroutine reject_start_separation
+
+  !> "(x, y)" or "(x, y, z)".
+  pure function separation_text(s) result(text)
+    use interlock, only: format_real
+    real(dp), intent(in) :: s(:)
+    character(len=:), allocatable :: text
+    integer :: i
+    text = '(' // format_real(s(1))
+    do i = 2, size(s)
+      text = text // ', ' // format_real(s(i))
+    end do
+    text = text // ')'
+  end function separation_text
 
   !> The message of a diverged global iteration: `what` ("DSTRAN = (x, y) mm") is not finite
   !> or takes the end of the increment beyond `bound` ("|s| <= 1e6 mm"): the host's iterate

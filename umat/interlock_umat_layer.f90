@@ -1,30 +1,38 @@
 !> The interlock law in a thin layer of continuum elements, for hosts without cohesive elements
 !> (CalculiX): `interlock_umat_layer_point` has the Abaqus UMAT argument list plus `host`, the
 !> host's PNEWDT convention. The interface is a layer of thickness h; one local axis is its
-!> normal, another its slip direction, and the 2D law (`interlock_umat_cohesive`,
-!> umat/interlock_umat_body.f90) acts on that pair:
+!> normal n, another its slip direction t1, and the law acts on the separations of the layer:
 !>
-!>     separation s = h * (strain of the normal, engineering shear strain normal-slip)
-!>     traction   t = (stress of the normal, shear stress normal-slip)
+!>     NTENS = 6: the 3D law (`interlock_umat_cohesive_3d`, umat/interlock_umat_body_3d.f90)
+!>       on (n, t1, t2), t2 = n x t1 (the third axis, with the sign that makes the frame
+!>       right-handed): separation s = h * (strain of the normal, engineering shear strains
+!>       normal-t1 and normal-t2, the latter times that sign);
+!>     NTENS = 4: the 2D law (`interlock_umat_cohesive`, umat/interlock_umat_body.f90) on
+!>       (n, t1): s = h * (strain of the normal, engineering shear strain normal-t1);
+!>     traction   t = the matching stresses (shear normal-t2 times the sign)
 !>     DDSDDE on that block = h * (the law's tangent d t / d s)   [MPa = mm * MPa/mm]
 !>
-!> Every other component (the in-plane direct strains, the in-plane shear, the shear of the
-!> normal with the third axis) is linear elastic and uncoupled: stress = e_other * strain,
-!> DDSDDE = e_other on the diagonal. All NTENS x NTENS entries of DDSDDE are written.
+!> Every other component (the in-plane direct strains and the in-plane shear; with NTENS = 4
+!> also the direct strain of the third axis) is linear elastic and uncoupled: stress =
+!> e_other * strain, DDSDDE = e_other on the diagonal. All NTENS x NTENS entries of DDSDDE are
+!> written.
 !>
 !> **Components.** NTENS = 6 (NDI = NSHR = 3; 11, 22, 33, 12, 13, 23; engineering shear; what
 !> CalculiX passes for every element) or NTENS = 4 (11, 22, 33, 12; Abaqus' plane strain and
-!> axisymmetric elements: only the 1-2 pair is an interface there). In the host's local axes
-!> (the user's orientation; CalculiX rotates strains into them before the call and the stress
-!> and the tangent back after it).
+!> axisymmetric elements: only the 1-2 pair is an interface there, and the law is the 2D one).
+!> In the host's local axes (the user's orientation; CalculiX rotates strains into them before
+!> the call and the stress and the tangent back after it).
 !>
-!> **PROPS** (`layer_nprops_head` = 4 values, then the 2D law's PROPS 1 .. 9 to 1 .. 20):
+!> **PROPS** (`layer_nprops_head` = 4 values, then the law's PROPS 1 .. 9 to 1 .. 22):
 !>   1 h [mm] in [1e-12, 1e12], 2 e_other [MPa] in (0, 1e30), 3 normal_axis 1, 2 or 3,
 !>   4 slip_axis 1, 2 or 3 (/= normal_axis),
-!>   5 .. the interlock PROPS (interlock-query --props). NPROPS from 13 to 24.
-!> **STATEV**: the 2D law's 22 (NSTATV >= 22); with NSTATV >= 26 (`*DEPVAR` 26) also 23, 24 the
-!> separation (normal, slip) [mm] and 25, 26 the traction (normal, slip) [MPa] at the end of the
-!> increment, in the interface's axes (for output: hosts print S in their global axes).
+!>   5 .. the interlock PROPS (interlock-query --props; 21, 22 the RIA with NTENS = 6).
+!>   NPROPS from 13 to 26.
+!> **STATEV**: the law's (NTENS = 4: the 2D law's 22; NTENS = 6: the 3D law's 8 n_planes + 4,
+!> 28 for the paper's RIA); with 4 more (NTENS = 4) or 6 more (NTENS = 6) slots also the
+!> separation (normal, t1) [mm] and the traction (normal, t1) [MPa] at the end of the
+!> increment, in the interface's axes (for output: hosts print S in their global axes), and
+!> with NTENS = 6 then the separation and the traction along t2.
 !> **Energies** per unit volume: the law's SSE and SCD (per unit area) / h, plus the elastic
 !> energy of the other components in SSE; SPD = 0 (nothing is read from them on entry).
 !>
@@ -61,17 +69,20 @@
 module interlock_umat_layer
   use, intrinsic :: iso_fortran_env, only: int64
   use interlock, only: dp, message_len, format_integer, format_real, umat_nstatv, &
-      n_required_properties, n_properties, separation_bound, is_finite_bits
+      n_required_properties, n_properties, separation_bound, is_finite_bits, umat_nstatv_3d, &
+      props_n_planes_3d
   use interlock_numbers, only: key_in_range
   use interlock_umat_body, only: interlock_umat_cohesive, diverged_iteration_message, &
       pnewdt_diverged
+  use interlock_umat_body_3d, only: interlock_umat_cohesive_3d
   use interlock_umat_messages, only: umat_say, said_argument, said_start_strain, &
       said_diverged, said_layer_axes
   implicit none
   private
   public :: interlock_umat_layer_point, host_abaqus, host_calculix, layer_nprops_head, &
             layer_nstatv_extra, pnewdt_calculix_stop, layer_components, layer_h_min, &
-            layer_h_max, axes_suspect_strain, calculix_linear_iteration
+            layer_h_max, axes_suspect_strain, calculix_linear_iteration, layer_frame_3d, &
+            layer_nstatv_extra_3d
 
   integer, parameter :: host_abaqus = 1    !< PNEWDT starts at >= 1 and is only lowered
   integer, parameter :: host_calculix = 2  !< PNEWDT starts at -1 ("no request")
@@ -79,6 +90,8 @@ module interlock_umat_layer
   !> Optional STATEV after the law's 22: separation (normal, slip) and traction (normal, slip)
   !> in the interface's own axes, for output (a host prints stresses in its global axes).
   integer, parameter :: layer_nstatv_extra = 4
+  !> With NTENS = 6: those four, then the separation and the traction along t2.
+  integer, parameter :: layer_nstatv_extra_3d = 6
   !> The cutback factor that makes CalculiX stop on bad input (below any sensible minimum).
   real(dp), parameter :: pnewdt_calculix_stop = 1.0e-6_dp
   !> The admissible layer thickness [mm]: within it, strain bounds (1e6 mm / h), energies per
@@ -111,6 +124,29 @@ contains
       comp = [normal, merge(5, 6, a == 1)]
     end if
   end function layer_components
+
+  !> The frame of a layer with NTENS = 6: the components of (n, t1, t2) in the (11, 22, 33, 12,
+  !> 13, 23) vector, t1 = the slip axis, t2 = n x t1 = sign * (the third axis): `comp` = (the
+  !> normal's direct strain, the shear normal-t1, the shear normal-third axis) and `sign`
+  !> (+1 when (normal, slip, third) is a cyclic order of (1, 2, 3), else -1). `normal` and
+  !> `slip` are distinct axes 1..3 (checked by the caller).
+  pure subroutine layer_frame_3d(normal, slip, comp, sign)
+    integer, intent(in) :: normal, slip
+    integer, intent(out) :: comp(3)
+    real(dp), intent(out) :: sign
+    integer :: third
+    third = 6 - normal - slip
+    comp(1) = normal
+    comp(2) = shear_component(normal, slip)
+    comp(3) = shear_component(normal, third)
+    sign = merge(1.0_dp, -1.0_dp, modulo(slip - normal, 3) == 1)
+  end subroutine layer_frame_3d
+
+  !> The (12, 13, 23) component 4, 5 or 6 of the shear of two distinct axes.
+  pure integer function shear_component(a, b) result(c)
+    integer, intent(in) :: a, b
+    c = a + b + 1          ! 1+2 -> 4, 1+3 -> 5, 2+3 -> 6
+  end function shear_component
 
   !> Whether ccx calls for the tangent of its "linear iteration": the first iteration of the
   !> first increment of a step whose prescribed displacements change (nonlingeo.c, ilin = 1),
@@ -167,10 +203,9 @@ contains
 
     real(dp), parameter :: pnewdt_none = 1.0_dp
     real(dp), parameter :: untouched = -huge(1.0_dp)
-    integer :: comp(2), normal, slip, i
+    integer :: comp2(2), comp(3), m, normal, slip, i, law_nstatv
     integer(int64) :: strain_bits, increment_bits
-    real(dp) :: h, e_other, t(2), s0(2), ds(2), d2(2, 2), sse2, spd2, scd2, rpl2, drpldt2, &
-                ddsddt2(2), drplde2(2), p2, elastic, strain_bound
+    real(dp) :: h, e_other, t(3), s0(3), ds(3), d(3, 3), sgn(3), sse2, scd2, p2, elastic, strain_bound
     ! (fixed size: NTENS is checked to be 4 or 6 first; no automatic array, no heap per call)
     real(dp) :: strain(6)
     logical :: interface_component(6)
@@ -216,8 +251,8 @@ contains
     end do
     normal = nint(PROPS(3))
     slip = nint(PROPS(4))
-    comp = layer_components(NTENS, normal, slip)
-    if (comp(1) == 0) then
+    comp2 = layer_components(NTENS, normal, slip)
+    if (comp2(1) == 0) then
       if (normal == slip) then
         message = "layer PROPS(4): 'slip_axis' = " // format_integer(slip) // ' is ' // &
                   "inadmissible: admissible a local axis other than 'normal_axis' = " // &
@@ -230,6 +265,18 @@ contains
       call fail(message, said_argument + merge(7, 8, normal == slip))
       return
     end if
+    ! The interface components: NTENS = 6 the 3D law on (n, t1, t2), NTENS = 4 the 2D law on
+    ! (n, t1); sgn(3) turns the shear of the third axis into the component along t2 = n x t1.
+    sgn = 1.0_dp
+    if (NTENS == 6) then
+      m = 3
+      call layer_frame_3d(normal, slip, comp, sgn(3))
+    else
+      m = 2
+      comp(1:2) = comp2
+      comp(3) = 0
+    end if
+
     ! --- Every strain component: |h strain| within the admissible separation, on the bits
     ! (the bound's bits order as the magnitudes do; NaN and Inf lie beyond).
     strain_bound = separation_bound / h
@@ -245,6 +292,7 @@ contains
         return
       end if
     end do
+    s0(1:m) = sgn(1:m) * h * STRAN(comp(1:m))
     do i = 1, NTENS
       if (.not. key_in_range(DSTRAN(i), -1_int64 - increment_bits, increment_bits)) exit
       strain(i) = STRAN(i) + DSTRAN(i)
@@ -255,26 +303,13 @@ contains
       return
     end if
 
-    ! --- The 2D law on the interface pair (separation = h * strain; the law sets its energies
-    ! per area: none is read from SSE, SCD on entry).
-    t = STRESS(comp)
-    s0 = h * STRAN(comp)
-    ds = h * DSTRAN(comp)
-    sse2 = 0.0_dp
-    spd2 = 0.0_dp
-    scd2 = 0.0_dp
-    rpl2 = 0.0_dp
-    drpldt2 = 0.0_dp
-    ddsddt2 = 0.0_dp
-    drplde2 = 0.0_dp
-    d2 = untouched   ! the law writes all of DDSDDE when it succeeds, nothing when it fails
+    ! --- The law on the interface components (separation = h * strain; the law sets its
+    ! energies per area: none is read from SSE, SCD on entry).
+    t(1:m) = sgn(1:m) * STRESS(comp(1:m))
+    ds(1:m) = sgn(1:m) * h * DSTRAN(comp(1:m))
     p2 = pnewdt_none
-    call interlock_umat_cohesive(t, STATEV, d2, sse2, spd2, scd2, rpl2, ddsddt2, drplde2, &
-      drpldt2, s0, ds, TIME, DTIME, TEMP, DTEMP, PREDEF, DPRED, CMNAME, 1, 1, 2, NSTATV, &
-      PROPS(layer_nprops_head + 1:NPROPS), NPROPS - layer_nprops_head, COORDS, DROT, p2, &
-      CELENT, DFGRD0, DFGRD1, NOEL, NPT, LAYER, KSPT, JSTEP, KINC, &
-      layer_props_offset=layer_nprops_head)   ! (the law checks its PROPS, named by both indices)
-    if (transfer(d2(1, 1), 0_int64) == transfer(untouched, 0_int64)) then
+    call law(t, STATEV, d, sse2, scd2, s0, ds, p2)
+    if (transfer(d(1, 1), 0_int64) == transfer(untouched, 0_int64)) then
       ! The law failed (it wrote its line and left its arguments alone): so does the layer.
       call request(max(p2, 0.0_dp), p2 <= 0.0_dp)
       return
@@ -282,7 +317,7 @@ contains
 
     ! --- Assemble: the law's block, the other components elastic.
     interface_component = .false.
-    interface_component(comp) = .true.
+    interface_component(comp(1:m)) = .true.
     DDSDDE = 0.0_dp
     elastic = 0.0_dp
     do i = 1, NTENS
@@ -291,8 +326,14 @@ contains
       DDSDDE(i, i) = e_other
       elastic = elastic + 0.5_dp * e_other * strain(i)**2
     end do
-    STRESS(comp) = t
-    DDSDDE(comp, comp) = h * d2
+    do i = 1, m
+      STRESS(comp(i)) = sgn(i) * t(i)
+      DDSDDE(comp(1:m), comp(i)) = (h * sgn(i)) * sgn(1:m) * d(1:m, i)
+    end do
+    ! (the law's STATEV, known now that the law has accepted its PROPS)
+    law_nstatv = umat_nstatv
+    if (m == 3) law_nstatv = umat_nstatv_3d(props_n_planes_3d(NPROPS - layer_nprops_head, &
+                                                              PROPS(layer_nprops_head + 1:NPROPS)))
     SSE = sse2 / h + elastic
     SPD = 0.0_dp
     SCD = scd2 / h
@@ -300,9 +341,13 @@ contains
     DDSDDT = 0.0_dp
     DRPLDE = 0.0_dp
     DRPLDT = 0.0_dp
-    if (NSTATV >= umat_nstatv + layer_nstatv_extra) then
-      STATEV(umat_nstatv + 1:umat_nstatv + 2) = s0 + ds
-      STATEV(umat_nstatv + 3:umat_nstatv + 4) = t
+    if (NSTATV >= law_nstatv + layer_nstatv_extra + (m - 2) * 2) then
+      STATEV(law_nstatv + 1:law_nstatv + 2) = s0(1:2) + ds(1:2)
+      STATEV(law_nstatv + 3:law_nstatv + 4) = t(1:2)
+      if (m == 3) then
+        STATEV(law_nstatv + 5) = s0(3) + ds(3)
+        STATEV(law_nstatv + 6) = t(3)
+      end if
     end if
     if (p2 < pnewdt_none) call request(p2, .false.)
     if (in_plane_strain() > axes_suspect_strain) call check_axes()
@@ -341,14 +386,14 @@ contains
           worst = j
         end if
       end do
-      if (abs(strain(worst)) <= maxval(abs(strain(comp)))) return
+      if (abs(strain(worst)) <= maxval(abs(strain(comp(1:m))))) return
       call umat_say(CMNAME, said_layer_axes, 'interlock UMAT (layer): warning: element ' // &
         format_integer(NOEL) // ', point ' // format_integer(NPT) // " (material '" // &
         trim(CMNAME) // "', increment " // format_integer(KINC) // '): the strain of ' // &
         'component ' // format_integer(worst) // ' = ' // format_real(strain(worst)) // &
         ', which does not involve normal_axis = ' // format_integer(normal) // ', exceeds ' // &
         format_real(axes_suspect_strain) // ' and the interface strains (' // &
-        format_real(strain(comp(1))) // ', ' // format_real(strain(comp(2))) // '): in a ' // &
+        strain_text(strain(comp(1:m))) // '): in a ' // &
         'thin layer only the components of its normal are large; is normal_axis the ' // &
         "layer's thin direction in the element's local axes (*ORIENTATION)?")
     end subroutine check_axes
@@ -358,18 +403,13 @@ contains
     !> STATEV, the start) at a zero increment, on copies; its rejection is the answer.
     subroutine diverged(i)
       integer, intent(in) :: i
-      real(dp) :: statev_copy(NSTATV), t_copy(2), d_copy(2, 2), e(4), p_law, no_increment(2)
-      t_copy = STRESS(comp)
+      real(dp) :: statev_copy(NSTATV), t_copy(3), d_copy(3, 3), e(2), p_law, no_increment(3)
+      t_copy(1:m) = sgn(1:m) * STRESS(comp(1:m))
       statev_copy = STATEV
-      d_copy = untouched
       e = 0.0_dp
       p_law = pnewdt_none
       no_increment = 0.0_dp
-      call interlock_umat_cohesive(t_copy, statev_copy, d_copy, e(1), e(2), e(3), e(4), &
-        ddsddt2, drplde2, drpldt2, h * STRAN(comp), no_increment, TIME, DTIME, TEMP, DTEMP, &
-        PREDEF, DPRED, CMNAME, 1, 1, 2, NSTATV, PROPS(layer_nprops_head + 1:NPROPS), &
-        NPROPS - layer_nprops_head, COORDS, DROT, p_law, CELENT, DFGRD0, DFGRD1, NOEL, NPT, &
-        LAYER, KSPT, JSTEP, KINC, layer_props_offset=layer_nprops_head)
+      call law(t_copy, statev_copy, d_copy, e(1), e(2), s0, no_increment, p_law)
       if (p_law <= 0.0_dp) then
         call request(0.0_dp, .true.)
         return
@@ -382,6 +422,51 @@ contains
         // format_real(h) // ' mm)')))
       call request(pnewdt_diverged, .false.)
     end subroutine diverged
+
+    !> The law on the interface components 1..m (m = 3: the 3D body, m = 2: the 2D one) from
+    !> the separation s_start by ds; `d` untouched when it fails. The thermal and heat
+    !> arguments are the law's own zeros, not the host's.
+    subroutine law(traction, statev_law, d, sse_law, scd_law, s_start, ds_law, p_law)
+      real(dp), intent(inout) :: traction(3), statev_law(NSTATV), d(3, 3), sse_law, scd_law, &
+                                 p_law
+      real(dp), intent(in) :: s_start(3), ds_law(3)
+      real(dp) :: d2(2, 2), spd_law, rpl_law, drpldt_law, ddsddt_law(3), drplde_law(3)
+      sse_law = 0.0_dp
+      scd_law = 0.0_dp
+      spd_law = 0.0_dp
+      rpl_law = 0.0_dp
+      drpldt_law = 0.0_dp
+      ddsddt_law = 0.0_dp
+      drplde_law = 0.0_dp
+      d = untouched   ! the law writes all of DDSDDE when it succeeds, nothing when it fails
+      if (m == 3) then
+        call interlock_umat_cohesive_3d(traction, statev_law, d, sse_law, spd_law, scd_law, &
+          rpl_law, ddsddt_law, drplde_law, drpldt_law, s_start, ds_law, TIME, DTIME, TEMP, &
+          DTEMP, PREDEF, DPRED, CMNAME, 1, 2, 3, NSTATV, PROPS(layer_nprops_head + 1:NPROPS), &
+          NPROPS - layer_nprops_head, COORDS, DROT, p_law, CELENT, DFGRD0, DFGRD1, NOEL, NPT, &
+          LAYER, KSPT, JSTEP, KINC, layer_props_offset=layer_nprops_head)
+      else
+        d2 = untouched
+        call interlock_umat_cohesive(traction(1:2), statev_law, d2, sse_law, spd_law, scd_law, &
+          rpl_law, ddsddt_law(1:2), drplde_law(1:2), drpldt_law, s_start(1:2), ds_law(1:2), &
+          TIME, DTIME, TEMP, DTEMP, PREDEF, DPRED, CMNAME, 1, 1, 2, NSTATV, &
+          PROPS(layer_nprops_head + 1:NPROPS), NPROPS - layer_nprops_head, COORDS, DROT, &
+          p_law, CELENT, DFGRD0, DFGRD1, NOEL, NPT, LAYER, KSPT, JSTEP, KINC, &
+          layer_props_offset=layer_nprops_head)   ! (the law checks its PROPS, named by both indices)
+        if (transfer(d2(1, 1), 0_int64) /= transfer(untouched, 0_int64)) d(1:2, 1:2) = d2
+      end if
+    end subroutine law
+
+    !> "x, y" or "x, y, z".
+    pure function strain_text(x) result(text)
+      real(dp), intent(in) :: x(:)
+      character(len=:), allocatable :: text
+      integer :: j
+      text = format_real(x(1))
+      do j = 2, size(x)
+        text = text // ', ' // format_real(x(j))
+      end do
+    end function strain_text
 
     !> One line naming the point (once per material and `kind`); bad input for the host.
     subroutine fail(why, kind)

@@ -21,13 +21,17 @@
 !> The choice is measured against the plain symmetric part, dropping the coupling in
 !> compression, the clipped symmetric part and a similarity transform of D (which keeps D's
 !> eigenvalues exactly): tests/tangent_newton.f90, docs/calculix.md.
+!> A three-dimensional tangent (normal, shear 1, shear 2) is treated pair by pair, in the order
+!> (N, T1), (N, T2), (T1, T2), each 2 x 2 block by the rule above: with no T2 coupling (a point
+!> in the (n, t1) plane of the paper's RIA) the (N, T1) block is the 2D one to the bit. The pairs
+!> are PSD one by one; the 3 x 3 matrix is not guaranteed to be.
 !> The stress update is not touched: only the matrix handed to the host changes, so the
 !> converged answer of the host's iteration is the same; its rate is no longer quadratic.
 module interlock_host_tangent
   use interlock_kinds, only: dp
   implicit none
   private
-  public :: interlock_symmetric_tangent
+  public :: interlock_symmetric_tangent, interlock_symmetric_tangent_3d
 
 contains
 
@@ -49,5 +53,19 @@ contains
     tangent(1, 2) = coupling
     tangent(2, 1) = coupling
   end subroutine interlock_symmetric_tangent
+
+  !> Replace the 3 x 3 tangent (normal, shear 1, shear 2) by a symmetric one, pair by pair
+  !> (see the header).
+  pure subroutine interlock_symmetric_tangent_3d(tangent)
+    real(dp), intent(inout) :: tangent(3, 3)
+    integer, parameter :: pairs(2, 3) = reshape([1, 2, 1, 3, 2, 3], [2, 3])
+    real(dp) :: block(2, 2)
+    integer :: p
+    do p = 1, 3
+      block = tangent(pairs(:, p), pairs(:, p))
+      call interlock_symmetric_tangent(block)
+      tangent(pairs(:, p), pairs(:, p)) = block
+    end do
+  end subroutine interlock_symmetric_tangent_3d
 
 end module interlock_host_tangent

@@ -6,21 +6,27 @@ module interlock_props
   use interlock_kinds, only: same_value, is_finite_bits
   use interlock_numbers, only: key_in_range, format_integer, format_real
   use interlock_material_table, only: properties, n_properties, n_required_properties, &
-      check_property, all_properties_ok, property_defaults, umat_planes, umat_nstatv, statevars, &
+      check_property, all_properties_ok, property_defaults, umat_planes, umat_nstatv, statevar_t, &
       n_statevars_per_plane, &
       prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
       prop_thetaf, prop_zeta0, prop_prefractured, prop_scheme, prop_substep_tol, prop_max_dd, &
-      prop_max_dtheta, prop_effect_damage, &
+      prop_max_dtheta, prop_effect_damage, n_properties_2d, prop_ria, prop_n_azimuths, &
+      ria_azimuthal, property_ok, umat_nstatv_3d, statevar_index_3d, statevar_3d, &
+      n_statevars_global, sv_frictional_slip_strike, sv_friction_traction_strike, &
       sv_damage, sv_beta, sv_frictional_slip, sv_zeta, sv_theta, sv_friction_traction, &
       sv_work, sv_damage_dissipation, sv_friction_dissipation, sv_initialized
   use interlock_material, only: interlock_material_t, interlock_solver_t, &
-      interlock_paper_material_derive, n_effects
-  use interlock_state, only: interlock_state_t, interlock_state_init
+      interlock_paper_material_derive, n_effects, interlock_azimuthal_ria, &
+      interlock_material_derive
+  use interlock_state, only: interlock_state_t, interlock_state_init, interlock_state_3d_t, &
+      interlock_state_3d_init
   use interlock_status, only: status_ok, status_bad_input
   implicit none
   private
   public :: props_to_material, props_n_to_material, statev_to_state, state_to_statev, umat_controls_t
   public :: statev_bounds, statev_bad_index, statev_message, state_bound
+  public :: props_n_to_material_3d, props_n_planes_3d, statev_bad_index_3d, statev_message_3d, statev_to_state_3d, &
+            state_to_statev_3d
 
   !> Largest magnitude admitted for a state variable that is not otherwise bounded (slips,
   !> works, energies, friction tractions) and for the traction STRESS on entry: far beyond any
@@ -115,6 +121,8 @@ contains
     end if
     ok = all_properties_ok(props)
     if (ok) ok = props(prop_thetaf) <= props(prop_theta0)   ! (no comparison of a NaN)
+    ! (the RIA of a 2D element is the paper's: PROPS(21), when given, must say so)
+    if (n >= prop_ria .and. ok) ok = props(prop_ria) < 0.5_dp
     if (.not. ok) then
       call props_message(props, 1, message)
       return
@@ -152,6 +160,54 @@ contains
     end function value
   end subroutine props_n_to_material
 
+  !> props_n_to_material for a three-dimensional interface (SPEC section 9): PROPS 1-20 as
+  !> there, PROPS(21) `ria` and PROPS(22) `n_azimuths` the RIA. The paper's RIA is the 2D
+  !> material to the bit (every azimuth 0: interlock_update_3d takes the 2D route while the
+  !> point stays in the (n, t1) plane).
+  pure subroutine props_n_to_material_3d(n, props, mat, solver, controls, stat, message)
+    integer, intent(in) :: n
+    real(dp), intent(in) :: props(n)
+    type(interlock_material_t), intent(inout) :: mat
+    type(interlock_solver_t), intent(out) :: solver
+    type(umat_controls_t), intent(out) :: controls
+    integer, intent(out) :: stat
+    character(len=*), intent(out) :: message
+    integer :: i, n_azimuths
+
+    if (n > n_properties) then
+      stat = status_bad_input
+      call props_message(props, 0, message)
+      return
+    end if
+    call props_n_to_material(min(n, n_properties_2d), props, mat, solver, controls, stat, message)
+    if (stat /= status_ok) return
+    do i = n_properties_2d + 1, n
+      if (.not. property_ok(i, props(i))) then
+        stat = status_bad_input
+        call props_message(props, 1, message)
+        return
+      end if
+    end do
+    n_azimuths = (props_n_planes_3d(n, props) - 1) / 2
+    if (n_azimuths <= 1) return
+    call interlock_azimuthal_ria(mat, n_azimuths, props(prop_theta0) * deg_to_rad, &
+                                 props(prop_thetaf) * deg_to_rad, props(prop_zeta0))
+    call interlock_material_derive(mat, stat, message)
+  end subroutine props_n_to_material_3d
+
+  !> The number of planes of the RIA that an admissible PROPS(1:n) selects for a
+  !> three-dimensional interface (props_n_to_material_3d): 3 for the paper's, 1 + 2 N_a for the
+  !> azimuthal one.
+  pure integer function props_n_planes_3d(n, props) result(n_planes)
+    integer, intent(in) :: n
+    real(dp), intent(in) :: props(n)
+    n_planes = 3
+    if (n < prop_ria) return
+    if (props(prop_ria) < ria_azimuthal - 0.5_dp) return
+    n_planes = 1 + 2 * nint(properties(prop_n_azimuths)%default)
+    if (n >= prop_n_azimuths) n_planes = 1 + 2 * nint(props(prop_n_azimuths))
+  end function props_n_planes_3d
+
   !> The message of a PROPS that props_to_material refused (`what` 0: NPROPS, 1: a value).
   pure subroutine props_message(props, what, message)
     real(dp), intent(in) :: props(:)
@@ -172,6 +228,13 @@ contains
         return
       end if
     end do
+    if (props(prop_thetaf) <= props(prop_theta0)) then
+      message = 'PROPS(' // format_integer(prop_ria) // "): property 'ria' = " // &
+                format_real(props(prop_ria)) // ' is inadmissible with a 2D element ' // &
+                '(NTENS = 2): admissible ria = 0 (the paper''s RIA; the azimuthal RIA needs a ' // &
+                '3D element, NTENS = 3)'
+      return
+    end if
     message = "property 'thetaf_deg' must not exceed 'theta0_deg': admissible 0 <= thetaf_deg" &
               // ' <= theta0_deg'
   end subroutine props_message
@@ -267,29 +330,42 @@ contains
     type(interlock_material_t), intent(in) :: mat
     character(len=*), intent(out) :: message
     real(dp) :: lo(umat_nstatv), hi(umat_nstatv)
-    integer :: ivar
-    character(len=:), allocatable :: name
+    integer :: ivar, k
     call statev_bounds(mat, lo, hi)
     if (i <= n_statevars_per_plane * umat_planes) then
       ivar = (i - 1) / umat_planes + 1
-      name = trim(statevars(ivar)%name) // ' of plane ' // &
-             format_integer(i - (ivar - 1) * umat_planes)
+      k = i - (ivar - 1) * umat_planes
     else
       ivar = n_statevars_per_plane + i - n_statevars_per_plane * umat_planes
-      name = trim(statevars(ivar)%name)
+      k = 0
     end if
+    call slot_message(i, statev(i), ivar, k, lo(i), hi(i), mat%prefractured, message)
+  end subroutine statev_message
+
+  !> The message for STATEV(i) = x, variable ivar (statevar_3d) of plane k (0: of the point),
+  !> outside [lo, hi].
+  pure subroutine slot_message(i, x, ivar, k, lo, hi, prefractured, message)
+    integer, intent(in) :: i, ivar, k
+    real(dp), intent(in) :: x, lo, hi
+    logical, intent(in) :: prefractured
+    character(len=*), intent(out) :: message
+    character(len=:), allocatable :: name
+    type(statevar_t) :: row
+    row = statevar_3d(ivar)
+    name = trim(row%name)
+    if (k > 0) name = name // ' of plane ' // format_integer(k)
     if (ivar == sv_initialized) then
-      message = 'STATEV(' // format_integer(i) // ') = ' // format_real(statev(i)) // ' (' // &
+      message = 'STATEV(' // format_integer(i) // ') = ' // format_real(x) // ' (' // &
                 name // ') is inadmissible: admissible 0 (first increment) or 1'
     else
-      message = 'STATEV(' // format_integer(i) // ') = ' // format_real(statev(i)) // ' (' // &
-                name // ') is inadmissible: admissible ' // format_real(lo(i)) // ' <= ' // &
-                trim(statevars(ivar)%name) // ' <= ' // format_real(hi(i)) // ' [' // &
-                trim(statevars(ivar)%unit) // ']' // &
+      message = 'STATEV(' // format_integer(i) // ') = ' // format_real(x) // ' (' // &
+                name // ') is inadmissible: admissible ' // format_real(lo) // ' <= ' // &
+                trim(row%name) // ' <= ' // format_real(hi) // ' [' // &
+                trim(row%unit) // ']' // &
                 trim(merge(' (pre-fractured: PROPS(10) = 1)', '                               ', &
-                           mat%prefractured .and. (ivar == sv_damage .or. ivar == sv_beta)))
+                           prefractured .and. (ivar == sv_damage .or. ivar == sv_beta)))
     end if
-  end subroutine statev_message
+  end subroutine slot_message
 
   !> STATEV -> state; an uninitialised STATEV (all zero, as FE codes start) gives the virgin
   !> state of the material. `state` is intent(inout) only so that the caller's fresh state is
@@ -329,5 +405,136 @@ contains
     statev(slot_diss_friction) = state%diss_friction
     statev(slot_flag) = 1.0_dp
   end subroutine state_to_statev
+
+  ! --- A three-dimensional point (SPEC section 9): STATEV as statevar_index_3d lays it out
+  ! for the material's planes, umat_nstatv_3d(mat%n_planes) slots. Off the 2D UMAT's path:
+  ! plain loops over the planes.
+
+  !> The admissible range of every STATEV slot of a three-dimensional point: the 2D ranges
+  !> (statev_bounds) for its planes, the strike components finite within +-state_bound.
+  pure subroutine statev_bounds_3d(mat, lo, hi)
+    type(interlock_material_t), intent(in) :: mat
+    real(dp), intent(out) :: lo(:), hi(:)
+    integer :: k, n
+    n = mat%n_planes
+    lo = -state_bound
+    hi = state_bound
+    do k = 1, n
+      lo(statevar_index_3d(sv_damage, k, n)) = merge(1.0_dp, 0.0_dp, mat%prefractured)
+      hi(statevar_index_3d(sv_damage, k, n)) = 1.0_dp
+      lo(statevar_index_3d(sv_beta, k, n)) = merge(mat%beta_break, 0.0_dp, mat%prefractured)
+      lo(statevar_index_3d(sv_zeta, k, n)) = 0.0_dp
+      call angle_range(mat, k, lo(statevar_index_3d(sv_theta, k, n)), &
+                       hi(statevar_index_3d(sv_theta, k, n)))
+    end do
+    lo(statevar_index_3d(sv_initialized, 0, n)) = 0.0_dp
+    hi(statevar_index_3d(sv_initialized, 0, n)) = 1.0_dp
+  end subroutine statev_bounds_3d
+
+  !> The first STATEV slot of a three-dimensional point outside its range, 0 when every one
+  !> is admissible (an uninitialised STATEV, flag 0, whatever its other slots); every value
+  !> tested on its bits before it is compared (no comparison of a NaN).
+  pure integer function statev_bad_index_3d(statev, mat) result(bad)
+    real(dp), intent(in) :: statev(:)
+    type(interlock_material_t), intent(in) :: mat
+    real(dp) :: lo(size(statev)), hi(size(statev))
+    integer :: i, flag
+    bad = 0
+    flag = statevar_index_3d(sv_initialized, 0, mat%n_planes)
+    if (.not. is_finite_bits(statev(flag))) then
+      bad = flag
+      return
+    end if
+    if (statev(flag) < 0.5_dp) then
+      if (.not. same_value(statev(flag), 0.0_dp)) bad = flag
+      return
+    end if
+    call statev_bounds_3d(mat, lo, hi)
+    lo(flag) = 1.0_dp
+    do i = 1, size(statev)
+      if (.not. is_finite_bits(statev(i))) then
+        bad = i
+        return
+      else if (.not. (statev(i) >= lo(i) .and. statev(i) <= hi(i))) then
+        bad = i
+        return
+      end if
+    end do
+  end function statev_bad_index_3d
+
+  !> The message for STATEV(i) of a three-dimensional point outside its range.
+  pure subroutine statev_message_3d(statev, i, mat, message)
+    real(dp), intent(in) :: statev(:)
+    integer, intent(in) :: i
+    type(interlock_material_t), intent(in) :: mat
+    character(len=*), intent(out) :: message
+    real(dp) :: lo(size(statev)), hi(size(statev))
+    integer :: ivar, k, n
+    n = mat%n_planes
+    call statev_bounds_3d(mat, lo, hi)
+    if (i <= n_statevars_per_plane * n) then
+      ivar = (i - 1) / n + 1
+      k = i - (ivar - 1) * n
+    else if (i <= n_statevars_per_plane * n + n_statevars_global) then
+      ivar = n_statevars_per_plane + i - n_statevars_per_plane * n
+      k = 0
+    else
+      ivar = sv_frictional_slip_strike + (i - n_statevars_per_plane * n - n_statevars_global - 1) / n
+      k = i - statevar_index_3d(ivar, 0, n)
+    end if
+    call slot_message(i, statev(i), ivar, k, lo(i), hi(i), mat%prefractured, message)
+  end subroutine statev_message_3d
+
+  !> STATEV -> the state of a three-dimensional point (statev_to_state's conventions).
+  pure subroutine statev_to_state_3d(statev, mat, state)
+    real(dp), intent(in) :: statev(:)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_state_3d_t), intent(inout) :: state
+    integer :: n
+    n = mat%n_planes
+    if (statev(statevar_index_3d(sv_initialized, 0, n)) < 0.5_dp) then
+      call interlock_state_3d_init(mat, state)
+      return
+    end if
+    state%damage(1:n) = statev(statevar_index_3d(sv_damage, 1, n):statevar_index_3d(sv_damage, n, n))
+    state%beta(1:n) = statev(statevar_index_3d(sv_beta, 1, n):statevar_index_3d(sv_beta, n, n))
+    state%sf(1:n) = statev(statevar_index_3d(sv_frictional_slip, 1, n): &
+                           statevar_index_3d(sv_frictional_slip, n, n))
+    state%zeta(1:n) = statev(statevar_index_3d(sv_zeta, 1, n):statevar_index_3d(sv_zeta, n, n))
+    state%theta(1:n) = statev(statevar_index_3d(sv_theta, 1, n):statevar_index_3d(sv_theta, n, n))
+    state%tauf(1:n) = statev(statevar_index_3d(sv_friction_traction, 1, n): &
+                             statevar_index_3d(sv_friction_traction, n, n))
+    state%sf_strike(1:n) = statev(statevar_index_3d(sv_frictional_slip_strike, 1, n): &
+                                  statevar_index_3d(sv_frictional_slip_strike, n, n))
+    state%tauf_strike(1:n) = statev(statevar_index_3d(sv_friction_traction_strike, 1, n): &
+                                    statevar_index_3d(sv_friction_traction_strike, n, n))
+    state%work = statev(statevar_index_3d(sv_work, 0, n))
+    state%diss_damage = statev(statevar_index_3d(sv_damage_dissipation, 0, n))
+    state%diss_friction = statev(statevar_index_3d(sv_friction_dissipation, 0, n))
+    state%stored = 0.0_dp
+  end subroutine statev_to_state_3d
+
+  !> The state of a three-dimensional point with n_planes planes -> STATEV.
+  pure subroutine state_to_statev_3d(state, n_planes, statev)
+    type(interlock_state_3d_t), intent(in) :: state
+    integer, intent(in) :: n_planes
+    real(dp), intent(inout) :: statev(:)
+    integer :: n, k
+    n = n_planes
+    do k = 1, n
+      statev(statevar_index_3d(sv_damage, k, n)) = state%damage(k)
+      statev(statevar_index_3d(sv_beta, k, n)) = state%beta(k)
+      statev(statevar_index_3d(sv_frictional_slip, k, n)) = state%sf(k)
+      statev(statevar_index_3d(sv_zeta, k, n)) = state%zeta(k)
+      statev(statevar_index_3d(sv_theta, k, n)) = state%theta(k)
+      statev(statevar_index_3d(sv_friction_traction, k, n)) = state%tauf(k)
+      statev(statevar_index_3d(sv_frictional_slip_strike, k, n)) = state%sf_strike(k)
+      statev(statevar_index_3d(sv_friction_traction_strike, k, n)) = state%tauf_strike(k)
+    end do
+    statev(statevar_index_3d(sv_work, 0, n)) = state%work
+    statev(statevar_index_3d(sv_damage_dissipation, 0, n)) = state%diss_damage
+    statev(statevar_index_3d(sv_friction_dissipation, 0, n)) = state%diss_friction
+    statev(statevar_index_3d(sv_initialized, 0, n)) = 1.0_dp
+  end subroutine state_to_statev_3d
 
 end module interlock_props

@@ -12,6 +12,9 @@ module interlock_material_table
   public :: property_t, statevar_t, properties, statevars
   public :: n_properties, n_required_properties, n_statevars_per_plane, n_statevars_global
   public :: umat_planes, umat_nstatv, property_index, statevar_index
+  public :: n_properties_2d, prop_ria, prop_n_azimuths, ria_paper, ria_azimuthal, &
+            strike_statevars, n_statevars_strike, sv_frictional_slip_strike, &
+            sv_friction_traction_strike, umat_nstatv_3d, statevar_index_3d, statevar_3d
   public :: check_property, property_ok, properties_ok, format_range
   public :: kind_real, kind_flag, kind_choice
   public :: all_properties_ok, property_defaults
@@ -55,7 +58,11 @@ module interlock_material_table
     character(len=96) :: description
   end type statevar_t
 
-  integer, parameter :: n_properties = 20
+  !> PROPS 1 .. n_properties_2d describe the law (any element); the ones after them select
+  !> the RIA of a three-dimensional interface (SPEC section 9), which a 2D element admits
+  !> only as the paper's RIA.
+  integer, parameter :: n_properties_2d = 20
+  integer, parameter :: n_properties = 22
   !> PROPS(1:n_required_properties) must be given; the rest take their defaults.
   integer, parameter :: n_required_properties = 9
 
@@ -65,7 +72,11 @@ module interlock_material_table
                         prop_substep_tol = 12, prop_max_dd = 13, prop_max_dtheta = 14, &
                         prop_effect_damage = 15, prop_effect_friction = 16, &
                         prop_effect_interlocking = 17, prop_effect_finite_depth = 18, &
-                        prop_effect_wear = 19, prop_tangent = 20
+                        prop_effect_wear = 19, prop_tangent = 20, prop_ria = 21, &
+                        prop_n_azimuths = 22
+  !> The codes of property `ria`: the paper's three planes (every azimuth 0: a 2D roughness
+  !> extruded along t2), or the `azimuthal` RIA of SPEC section 9 with n_azimuths directions.
+  integer, parameter :: ria_paper = 0, ria_azimuthal = 1
   !> The codes of property `tangent`: the exact algorithmic tangent, or a symmetric one for
   !> hosts that keep only the symmetric part of DDSDDE (CalculiX).
   integer, parameter :: tangent_exact = 1, tangent_symmetric = 2
@@ -128,7 +139,13 @@ module interlock_material_table
                'effect switch: asperity wear; 0: as zeta_0 = infinity (theta constant)'), &
     property_t('tangent', 'tangent', '-', 'umat', kind_choice, .false., 1.0_dp, &
                1.0_dp, .false., 2.0_dp, .false., .false., &
-               'UMAT: DDSDDE 1 exact, 2 symmetric, for hosts that symmetrize (CalculiX)') ]
+               'UMAT: DDSDDE 1 exact, 2 symmetric, for hosts that symmetrize (CalculiX)'), &
+    property_t('ria', 'RIA', '-', '3d', kind_choice, .false., 0.0_dp, &
+               0.0_dp, .false., 1.0_dp, .false., .false., &
+               '3D element: RIA 0 paper (azimuths 0), 1 azimuthal; a 2D element admits 0 only'), &
+    property_t('n_azimuths', 'N_a', '-', '3d', kind_choice, .false., 3.0_dp, &
+               1.0_dp, .false., 6.0_dp, .false., .false., &
+               'ria = 1: dip directions pi j / N_a, j < N_a: planes 1 + 2 N_a (N_a = 1: paper)') ]
 
   !> The columns of the table that property_ok compares with, as plain arrays.
   real(dp), parameter :: lower(n_properties) = properties%lower
@@ -184,6 +201,19 @@ module interlock_material_table
   integer, parameter :: umat_planes = 3
   integer, parameter :: umat_nstatv = n_statevars_per_plane * umat_planes + n_statevars_global
 
+  !> A three-dimensional point (SPEC section 9) keeps, besides the 2D state (whose
+  !> frictional_slip and friction_traction are then the dip components, along e_k), the strike
+  !> components of each plane (along q_k). Its STATEV: the 2D layout for its planes, then
+  !> these, by variable then plane, so that the paper's RIA in 3D has the 2D STATEV 1-22
+  !> unchanged and the strike components in 23-28.
+  integer, parameter :: n_statevars_strike = 2
+  integer, parameter :: sv_frictional_slip_strike = 11, sv_friction_traction_strike = 12
+  type(statevar_t), parameter :: strike_statevars(n_statevars_strike) = [ &
+    statevar_t('frictional_slip_strike', 'mm', .true., &
+               '3D: frictional slip of plane k along its strike q_k'), &
+    statevar_t('friction_traction_strike', 'MPa', .true., &
+               '3D: friction traction of plane k along its strike q_k') ]
+
 contains
 
   !> Index of a property by name (case-sensitive, trimmed); 0 when unknown.
@@ -209,6 +239,38 @@ contains
       statevar_index = n_statevars_per_plane * umat_planes + (ivar - n_statevars_per_plane)
     end if
   end function statevar_index
+
+  !> The STATEV slots of a three-dimensional point with n_planes planes (SPEC section 9).
+  pure integer function umat_nstatv_3d(n_planes)
+    integer, intent(in) :: n_planes
+    umat_nstatv_3d = (n_statevars_per_plane + n_statevars_strike) * n_planes + n_statevars_global
+  end function umat_nstatv_3d
+
+  !> STATEV slot of state variable `ivar` (1 .. sv_friction_traction_strike; plane `k` for
+  !> per-plane variables) of a three-dimensional point with n_planes planes: the 2D layout for
+  !> n_planes planes, then the strike components by variable, then plane.
+  pure integer function statevar_index_3d(ivar, k, n_planes) result(slot)
+    integer, intent(in) :: ivar, k, n_planes
+    if (ivar <= n_statevars_per_plane) then
+      slot = (ivar - 1) * n_planes + k
+    else if (ivar <= n_statevars_per_plane + n_statevars_global) then
+      slot = n_statevars_per_plane * n_planes + (ivar - n_statevars_per_plane)
+    else
+      slot = n_statevars_per_plane * n_planes + n_statevars_global + &
+             (ivar - sv_frictional_slip_strike) * n_planes + k
+    end if
+  end function statevar_index_3d
+
+  !> The row of state variable `ivar` of a three-dimensional point (statevar_index_3d).
+  pure function statevar_3d(ivar) result(row)
+    integer, intent(in) :: ivar
+    type(statevar_t) :: row
+    if (ivar <= size(statevars)) then
+      row = statevars(ivar)
+    else
+      row = strike_statevars(ivar - size(statevars))
+    end if
+  end function statevar_3d
 
   !> Whether `value` is admissible for property i (rows_ok).
   pure logical function property_ok(i, value) result(ok)
@@ -252,7 +314,7 @@ contains
     real(dp), intent(in), contiguous :: values(:)
     integer :: i
     ok = .false.
-    !GCC$ unroll 20
+    !GCC$ unroll 22
     do i = 1, n_properties
       if (i > n_required_properties) then
         if (i > size(values)) exit
