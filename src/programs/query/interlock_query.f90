@@ -7,7 +7,8 @@ program interlock_query
   use interlock, only: properties, statevars, n_properties, n_required_properties, &
       n_statevars_per_plane, n_statevars_global, umat_planes, umat_nstatv, statevar_index, &
       format_range, format_real, property_t, statevar_t, kind_real, kind_flag, kind_choice, &
-      interlock_version_string, format_integer
+      interlock_version_string, format_integer, statevar_index_3d, statevar_3d, &
+      umat_nstatv_3d, n_statevars_strike, prop_ria, max_azimuths
   implicit none
   character(len=:), allocatable :: arg
   integer :: iarg, n
@@ -64,7 +65,8 @@ contains
       '                     admissible range, description', &
       '  --state-variables  every state variable: name, unit, per plane or not, description', &
       '  --props            the UMAT PROPS layout: index, name, unit, default, range, description', &
-      '  --statev           the UMAT STATEV layout: index, name, plane, unit, description', &
+      '  --statev           the UMAT STATEV layouts (2D and 3D elements): index, name, plane,', &
+      '                     unit, description', &
       '  --markdown         the whole reference page (docs/material.md)', &
       '  --version          the library version', &
       '  --help             this text', &
@@ -158,7 +160,8 @@ contains
         pad(default_text(i), 10) // pad(format_range(i), 58) // trim(p%description)
     end do
     write (output_unit, '(a)') 'NPROPS from ' // format_integer(n_required_properties) // ' to ' // &
-      format_integer(n_properties) // '; properties after NPROPS take their defaults.'
+      format_integer(n_properties) // '; properties after NPROPS take their defaults.', &
+      trim(props_3d_note())
   end subroutine print_props
 
   subroutine print_state_variables()
@@ -166,8 +169,8 @@ contains
     type(statevar_t) :: v
     write (output_unit, '(a)') pad('name', 25) // pad('unit', 6) // pad('per plane', 11) // &
       'description'
-    do i = 1, size(statevars)
-      v = statevars(i)
+    do i = 1, size(statevars) + n_statevars_strike
+      v = statevar_3d(i)
       write (output_unit, '(a)') pad(v%name, 25) // pad(v%unit, 6) // &
         pad(merge('yes', 'no ', v%per_plane), 11) // trim(v%description)
     end do
@@ -187,7 +190,65 @@ contains
     end do
     write (output_unit, '(a)') 'NSTATV >= ' // format_integer(umat_nstatv) // ' (*DEPVAR ' // &
       format_integer(umat_nstatv) // '); all zero before the first increment.'
+    write (output_unit, '(a)') '', '3D cohesive element (NTENS = 3), the paper''s RIA (ria = 0):'
+    write (output_unit, '(a)') pad('STATEV', 8) // pad('name', 25) // pad('plane', 14) // &
+      pad('unit', 6) // 'description'
+    do slot = 1, umat_nstatv_3d(umat_planes)
+      call locate_3d(slot, i, k)
+      v = statevar_3d(i)
+      write (output_unit, '(a)') pad(format_integer(slot), 8) // pad(v%name, 25) // &
+        pad(plane_column(v%per_plane, k), 14) // pad(v%unit, 6) // &
+        trim(v%description)
+    end do
+    write (output_unit, '(a)') trim(statev_3d_note())
   end subroutine print_statev
+
+  !> What PROPS 21-22 mean by element.
+  pure function props_3d_note() result(text)
+    character(len=:), allocatable :: text
+    text = 'PROPS ' // format_integer(prop_ria) // ', ' // format_integer(n_properties) // &
+           ' select the RIA of a 3D cohesive element (NTENS = 3); a 2D element (NTENS = 2) ' // &
+           'admits ria = 0 only.'
+  end function props_3d_note
+
+  !> The size and order of the 3D STATEV for any RIA.
+  pure function statev_3d_note() result(text)
+    character(len=:), allocatable :: text
+    text = 'NSTATV >= ' // format_integer(umat_nstatv_3d(umat_planes)) // ' (*DEPVAR ' // &
+           format_integer(umat_nstatv_3d(umat_planes)) // '); with ria = 1 and N_a azimuths ' // &
+           'the RIA has n = 1 + 2 N_a planes (planes 1-3 as above, then (phi_j, -theta_0), ' // &
+           '(phi_j, +theta_0) for j = 1 .. N_a - 1) and NSTATV >= 8 n + 4 (' // &
+           format_integer(umat_nstatv_3d(1 + 2 * max_azimuths)) // ' at N_a = ' // &
+           format_integer(max_azimuths) // '), in the same order: the 2D variables by ' // &
+           'variable, then plane; the four of the point; the strike components by variable, ' // &
+           'then plane. frictional_slip and friction_traction are the dip components (along ' // &
+           'e_k), the strike ones along q_k (SPEC section 9). All zero before the first increment.'
+  end function statev_3d_note
+
+  !> Which state variable (ivar, statevar_3d) and plane (k, 0 for global ones) STATEV(slot)
+  !> of a 3D point with the paper's RIA holds.
+  subroutine locate_3d(slot, ivar, k)
+    integer, intent(in) :: slot
+    integer, intent(out) :: ivar, k
+    integer :: j, m
+    type(statevar_t) :: row
+    do j = 1, size(statevars) + n_statevars_strike
+      row = statevar_3d(j)
+      do m = 0, umat_planes
+        if (row%per_plane .neqv. (m > 0)) cycle
+        if (statevar_index_3d(j, m, umat_planes) == slot) then
+          ivar = j
+          k = m
+          return
+        end if
+      end do
+    end do
+    ivar = 1
+    k = 0
+    write (error_unit, '(a)') 'interlock-query: 3D STATEV(' // format_integer(slot) // &
+      ') is not in the table'
+    call exit_program(3)
+  end subroutine locate_3d
 
   !> Which state variable (ivar) and plane (k, 0 for global ones) STATEV(slot) holds.
   subroutine locate(slot, ivar, k)
@@ -240,8 +301,8 @@ contains
       '', &
       '| name | unit | per plane | description |', &
       '|---|---|---|---|'
-    do i = 1, size(statevars)
-      v = statevars(i)
+    do i = 1, size(statevars) + n_statevars_strike
+      v = statevar_3d(i)
       write (output_unit, '(a)') '| `' // trim(v%name) // '` | ' // trim(v%unit) // ' | ' // &
         trim(merge('yes', 'no ', v%per_plane)) // ' | ' // trim(v%description) // ' |'
     end do
@@ -250,9 +311,13 @@ contains
       '## UMAT', &
       '', &
       'The UMAT (`umat/interlock_umat.f90`, library `interlock::interlock_umat`, or the single', &
-      'file `interlock_umat_bundle.f90`) is for 2D cohesive elements: NTENS = 2 (1 normal,', &
-      '2 shear), STRAN/DSTRAN are separations (constitutive thickness 1), the three-plane RIA', &
-      'of the paper (planes -theta_0, 0, +theta_0 with area fraction 1/3 each). DDSDDE is not', &
+      'file `interlock_umat_bundle.f90`) is for 2D cohesive elements, NTENS = 2 (1 normal,', &
+      '2 shear), and 3D cohesive elements, NTENS = 3 (Abaqus COH3D8: NDI = 1, NSHR = 2; 1', &
+      'normal, 2 shear along t1, the element''s first local shear direction, 3 shear along', &
+      't2 = n x t1). STRAN/DSTRAN are separations (constitutive thickness 1). The RIA is the', &
+      'three-plane RIA of the paper (planes -theta_0, 0, +theta_0 with area fraction 1/3', &
+      'each; in 3D every azimuth is 0: ridges across t1), or in 3D the `azimuthal` RIA', &
+      '(`ria` = 1, SPEC section 9). A 2D deck''s PROPS give the paper''s RIA in 3D unchanged. DDSDDE is not', &
       'symmetric once friction or wear acts: declare `*USER MATERIAL, UNSYMM` (for a host', &
       'that symmetrizes, e.g. CalculiX, `tangent` = 2: docs/calculix.md). SSE is the', &
       'stored energy, SCD the total dissipation (damage + friction), SPD = 0. PNEWDT is only', &
@@ -266,7 +331,7 @@ contains
       '### PROPS', &
       '', &
       'NPROPS from ' // format_integer(n_required_properties) // ' to ' // format_integer(n_properties) // &
-      '; properties after NPROPS take their defaults.', &
+      '; properties after NPROPS take their defaults. ' // props_3d_note(), &
       '', &
       '| PROPS | name | unit | default | admissible | description |', &
       '|---|---|---|---|---|---|'
@@ -288,6 +353,22 @@ contains
     do slot = 1, umat_nstatv
       call locate(slot, i, k)
       v = statevars(i)
+      write (output_unit, '(a)') '| ' // format_integer(slot) // ' | `' // trim(v%name) // '` | ' // &
+        plane_column(v%per_plane, k) // ' | ' // trim(v%unit) // &
+        ' | ' // trim(v%description) // ' |'
+    end do
+    write (output_unit, '(a)') &
+      '', &
+      '### STATEV of a 3D cohesive element (NTENS = 3)', &
+      '', &
+      'The paper''s RIA (`ria` = 0): STATEV 1-22 as in 2D, then the strike components.', &
+      statev_3d_note(), &
+      '', &
+      '| STATEV | name | plane | unit | description |', &
+      '|---|---|---|---|---|'
+    do slot = 1, umat_nstatv_3d(umat_planes)
+      call locate_3d(slot, i, k)
+      v = statevar_3d(i)
       write (output_unit, '(a)') '| ' // format_integer(slot) // ' | `' // trim(v%name) // '` | ' // &
         plane_column(v%per_plane, k) // ' | ' // trim(v%unit) // &
         ' | ' // trim(v%description) // ' |'
