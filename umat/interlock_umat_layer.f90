@@ -305,7 +305,9 @@ contains
 
     ! --- The law on the interface components (separation = h * strain; the law sets its
     ! energies per area: none is read from SSE, SCD on entry).
-    t(1:m) = sgn(1:m) * STRESS(comp(1:m))
+    t = 0.0_dp
+    t(1:m) = STRESS(comp(1:m))
+    if (sgn(3) < 0.0_dp) t(3) = -t(3)   ! (a sign flip: no arithmetic on what may be garbage)
     ds(1:m) = sgn(1:m) * h * DSTRAN(comp(1:m))
     p2 = pnewdt_none
     call law(t, STATEV, d, sse2, scd2, s0, ds, p2)
@@ -404,7 +406,9 @@ contains
     subroutine diverged(i)
       integer, intent(in) :: i
       real(dp) :: statev_copy(NSTATV), t_copy(3), d_copy(3, 3), e(2), p_law, no_increment(3)
-      t_copy(1:m) = sgn(1:m) * STRESS(comp(1:m))
+      t_copy = 0.0_dp
+      t_copy(1:m) = STRESS(comp(1:m))
+      if (sgn(3) < 0.0_dp) t_copy(3) = -t_copy(3)
       statev_copy = STATEV
       e = 0.0_dp
       p_law = pnewdt_none

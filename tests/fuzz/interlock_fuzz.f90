@@ -10,8 +10,8 @@
 !>   interlock-fuzz --garbage N [--seed S]
 !>   interlock-fuzz --3d N [--seed S] [--fd-every K] [--beyond-bound]
 !>
-!> With --garbage, N calls of the UMAT entries (the external 2D UMAT; the thin layer with
-!> NTENS = 6 and 4, in Abaqus' and CalculiX's PNEWDT conventions) with garbage mixed into valid
+!> With --garbage, N calls of the UMAT entries (the external UMAT with NTENS = 2 and 3, the
+!> latter with the paper's and the azimuthal RIA; the thin layer with NTENS = 6 and 4, in Abaqus' and CalculiX's PNEWDT conventions) with garbage mixed into valid
 !> input instead: NaN (quiet and signalling), +-Inf, denormals, huge and out-of-range values in
 !> every argument the host passes (garbage_calls). Every call must either leave its outputs
 !> untouched or return them finite, and PNEWDT as it came or as a request of its convention;
@@ -35,7 +35,7 @@ program interlock_fuzz
   use test_umat_interface, only: UMAT
   use fuzz_3d, only: fuzz_3d_counts_t, fuzz_3d_run
   use interlock_umat_layer, only: interlock_umat_layer_point, host_abaqus, host_calculix, &
-      layer_nstatv_extra
+      layer_nstatv_extra, layer_nstatv_extra_3d
   implicit none
 
   integer(int64) :: n_updates = 100000_int64, done = 0_int64, n_fd = 0_int64, n_fd_skip = 0_int64
@@ -223,17 +223,19 @@ contains
   !> request of its convention (Abaqus: finite, < 1; CalculiX: in (0, 1)); any trap of the
   !> Debug build ends the run.
   subroutine garbage_calls()
-    integer, parameter :: entry_umat = 1, entry_layer = 2, entry_ntens(4) = [2, 6, 6, 4]
+    integer, parameter :: entry_umat = 1, entry_layer = 2, entry_ntens(5) = [2, 6, 6, 4, 3]
+    !> STATEV slots of a point: the 3D law's with N_a = 6 and the layer's six
+    integer, parameter :: max_statev = 8 * (1 + 2 * max_azimuths) + 4 + 6
     real(dp), parameter :: props_base(14) = [3.0_dp, 3.0_dp, 0.3_dp, 0.9_dp, 0.5_dp, 2.0_dp, &
       30.0_dp, 7.0_dp, 1.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, 0.25_dp, 1.0_dp]
     !> One point of each entry kind (host side): what the host keeps between calls.
     type :: garbage_point_t
-      real(dp) :: stress(6) = 0.0_dp, statev(30) = 0.0_dp, stran(6) = 0.0_dp
+      real(dp) :: stress(6) = 0.0_dp, statev(max_statev) = 0.0_dp, stran(6) = 0.0_dp
     end type garbage_point_t
-    type(garbage_point_t) :: points(4), pt, before
+    type(garbage_point_t) :: points(5), pt, before
     type(host_arguments_t) :: args, args_in
     real(dp) :: props(n_properties + 4), dstran(6), p, h
-    integer :: n_props, k, which, entry, host, ntens, nstatv, owned
+    integer :: n_props, k, which, entry, host, ntens, nstatv, owned, law_nstatv, extra
     integer(int64) :: call_no, n_rejected(2), n_bad, n_calls(2)
     logical :: touched
     n_rejected = 0
@@ -241,19 +243,31 @@ contains
     n_bad = 0
     do call_no = 1, n_garbage
       p = merge(0.005_dp, 0.1_dp, rng_uniform(rng) < 0.5_dp)
-      which = rng_int(rng, 1, 4)          ! 2D UMAT; layer NTENS 6 Abaqus, 6 ccx, 4 either
-      entry = merge(entry_umat, entry_layer, which == 1)
+      which = rng_int(rng, 1, 5)   ! UMAT 2D; layer NTENS 6 Abaqus, 6 ccx, 4 either; UMAT 3D
+      entry = merge(entry_umat, entry_layer, which == 1 .or. which == 5)
       host = host_abaqus
       if (which == 3) host = host_calculix
       if (rng_uniform(rng) < 0.5_dp .and. which == 4) host = host_calculix
       ntens = entry_ntens(which)
-      if (rng_uniform(rng) < p / 8.0_dp) ntens = rng_int(rng, 1, 6)
-      nstatv = merge(umat_nstatv, umat_nstatv + 4, rng_uniform(rng) < 0.5_dp)
-      if (rng_uniform(rng) < p / 8.0_dp) nstatv = rng_int(rng, 1, 30)
-      ! PROPS: the interlock ones after the layer's head (h, e_other, normal, slip).
+      ! PROPS: the interlock ones after the layer's head (h, e_other, normal, slip); a 3D
+      ! point has the azimuthal RIA now and then (the same for the point's whole life).
       n_props = rng_int(rng, n_required_properties, n_properties)
       props = 0.0_dp
       props(5:4 + n_properties) = properties%default
+      law_nstatv = umat_nstatv
+      extra = merge(0, layer_nstatv_extra, entry == entry_umat)
+      if (ntens == 3 .or. ntens == 6) then
+        if (which == 5) then
+          n_props = n_properties
+          props(4 + prop_ria) = real(ria_azimuthal, dp)
+          props(4 + prop_n_azimuths) = 3.0_dp
+        end if
+        law_nstatv = umat_nstatv_3d(props_n_planes_3d(n_props, props(5:4 + n_props)))
+        if (entry == entry_layer) extra = layer_nstatv_extra_3d
+      end if
+      if (rng_uniform(rng) < p / 8.0_dp) ntens = rng_int(rng, 1, 6)
+      nstatv = merge(law_nstatv, law_nstatv + extra, rng_uniform(rng) < 0.5_dp)
+      if (rng_uniform(rng) < p / 8.0_dp) nstatv = rng_int(rng, 1, max_statev)
       props(5:18) = props_base
       props(14) = merge(1.0_dp, 0.0_dp, rng_uniform(rng) < 0.2_dp)
       props(15) = real(rng_int(rng, 1, n_schemes), dp)
@@ -269,10 +283,12 @@ contains
       do k = 1, 4 + n_props
         props(k) = garble(props(k), p / 4.0_dp)
       end do
+      ! (the slots the law writes: a garbled PROPS 21-22 may select another admissible RIA)
+      if (ntens == 3 .or. ntens == 6) law_nstatv = umat_nstatv_3d(planes_3d(props(5:4 + n_props)))
       ! The point: carried on from its last accepted call, with garbage now and then.
       pt = points(which)
       if (rng_uniform(rng) < 0.05_dp) pt = garbage_point_t()       ! a fresh point
-      do k = 1, 30
+      do k = 1, max_statev
         pt%statev(k) = garble(pt%statev(k), p / 8.0_dp)
       end do
       do k = 1, 6
@@ -292,7 +308,7 @@ contains
                   trim(args%cmname), args%ndi, args%nshr, ntens, nstatv, props(5:4 + n_props), &
                   n_props, args%coords, args%drot, args%pnewdt, args%celent, args%dfgrd0, &
                   args%dfgrd1, args%noel, args%npt, args%layer, args%kspt, args%jstep, args%kinc)
-        owned = min(nstatv, umat_nstatv)
+        owned = min(nstatv, law_nstatv)
       case default
         call interlock_umat_layer_point(pt%stress, pt%statev, args%ddsdde, args%sse, args%spd, &
           args%scd, args%rpl, args%ddsddt, args%drplde, args%drpldt, pt%stran, dstran, &
@@ -300,8 +316,8 @@ contains
           trim(args%cmname), args%ndi, args%nshr, ntens, nstatv, props, 4 + n_props, &
           args%coords, args%drot, args%pnewdt, args%celent, args%dfgrd0, args%dfgrd1, &
           args%noel, args%npt, args%layer, args%kspt, args%jstep, args%kinc, host)
-        owned = min(nstatv, umat_nstatv)
-        if (nstatv >= umat_nstatv + layer_nstatv_extra) owned = umat_nstatv + layer_nstatv_extra
+        owned = min(nstatv, law_nstatv)
+        if (nstatv >= law_nstatv + extra) owned = law_nstatv + extra
       end select
       n_calls(entry) = n_calls(entry) + 1
       touched = .not. (all(same_bits(pt%stress(1:ntens), before%stress(1:ntens))) .and. &
@@ -340,12 +356,31 @@ contains
       end if
     end do
     write (output_unit, '(a,i0,a,i0,a,i0,a,i0)') 'interlock-fuzz --garbage: seed ', seed, ', ', &
-      n_calls(entry_umat), ' UMAT calls, ', n_rejected(entry_umat), ' rejected, failures ', n_bad
+      n_calls(entry_umat), ' UMAT calls (NTENS 2 and 3), ', n_rejected(entry_umat), &
+      ' rejected, failures ', n_bad
     write (output_unit, '(a,i0,a,i0,a)') '  thin layer (NTENS 6 and 4, Abaqus and CalculiX): ', &
       n_calls(entry_layer), ' calls, ', n_rejected(entry_layer), ' rejected'
     if (n_bad > 0) error stop 1
 
   end subroutine garbage_calls
+
+  !> The planes of the RIA that PROPS select in 3D (props_n_planes_3d), read by the bits of
+  !> PROPS 21-22 (no comparison of garbage): 3 unless ria is exactly 1 and n_azimuths a whole
+  !> number of range.
+  pure integer function planes_3d(props) result(n_planes)
+    real(dp), intent(in) :: props(:)
+    integer :: a, n_azimuths
+    n_planes = 3
+    if (size(props) < prop_ria) return
+    if (.not. same_bits(props(prop_ria), real(ria_azimuthal, dp))) return
+    n_azimuths = nint(properties(prop_n_azimuths)%default)
+    if (size(props) >= prop_n_azimuths) then
+      do a = 1, max_azimuths
+        if (same_bits(props(prop_n_azimuths), real(a, dp))) n_azimuths = a
+      end do
+    end if
+    n_planes = 1 + 2 * n_azimuths
+  end function planes_3d
 
   !> a and b have the same bits (NaN equals NaN; no comparison of a NaN).
   elemental logical function same_bits(x, y)
