@@ -17,7 +17,7 @@ program interlock_bench
   use interlock_cli, only: exit_program, folder_writable
   use interlock, only: dp, max_planes, interlock_material_t, interlock_solver_t, interlock_state_t, &
       interlock_info_t, interlock_update, interlock_state_init, scheme_explicit, scheme_implicit, &
-      scheme_trapezoidal, scheme_name, status_ok, interlock_version_string, n_properties, &
+      scheme_trapezoidal, scheme_name, status_ok, interlock_version_string, n_properties_2d, &
       props_to_material, umat_controls_t, interlock_state_3d_t, interlock_state_3d_init, &
       interlock_update_3d, interlock_azimuthal_ria, interlock_material_prepare, deg_to_rad
   use interlock_bench_bilinear, only: bilinear_t, bilinear_state_t, bilinear_setup, bilinear_update
@@ -46,7 +46,7 @@ program interlock_bench
   integer, parameter :: n_umat_rows = n_umat_schemes * n_effect_sets
   integer, parameter :: n_umat_cols = 2 * n_umat_rows + n_effect_sets
   type :: umat_rows_t
-    real(dp) :: props(n_properties, n_umat_rows)
+    real(dp) :: props(n_properties_2d, n_umat_rows)
     type(interlock_material_t) :: mats(n_umat_rows)
     type(interlock_solver_t) :: solvers(n_umat_rows)
     type(umat_controls_t) :: controls
@@ -278,7 +278,7 @@ contains
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver
     real(dp), allocatable :: h(:, :, :)
-    real(dp) :: chk, props(n_properties)
+    real(dp) :: chk, props(n_properties_2d)
     integer :: k, stat, fails, nsub, cuts
     character(len=256) :: message
     allocate (h(2, 4000, 3))

@@ -3,7 +3,7 @@
 !> (PROPS parsed every call, STATEV and STRESS kept by the host and passed in and out, STRAN
 !> and DSTRAN), and the floor of what any UMAT must do per call besides its law.
 module interlock_bench_umat
-  use interlock, only: dp, n_properties, properties, umat_nstatv, prop_mu, prop_h_n, &
+  use interlock, only: dp, n_properties_2d, properties, umat_nstatv, prop_mu, prop_h_n, &
       prop_theta0, prop_thetaf, prop_zeta0, prop_scheme, prop_effect_interlocking
   use interlock_bench_umat_floor, only: umat_floor_call
   ! (the explicit interface of the external UMAT, as a host written in modern Fortran declares it)
@@ -16,12 +16,13 @@ module interlock_bench_umat
 contains
 
   !> PROPS of effect set `iset` (the materials of interlock_bench_scenes:make_effect_set) with
-  !> the given scheme. The UMAT always has the paper's three-plane RIA: the flat sets 1 and 2
-  !> switch interlocking off (three flat planes sharing one history).
+  !> the given scheme: a 2D element's deck, PROPS 1-20. The UMAT always has the paper's
+  !> three-plane RIA: the flat sets 1 and 2 switch interlocking off (three flat planes sharing
+  !> one history).
   pure subroutine umat_props(iset, scheme, props)
     integer, intent(in) :: iset, scheme
-    real(dp), intent(out) :: props(n_properties)
-    props = properties%default
+    real(dp), intent(out) :: props(n_properties_2d)
+    props = properties(1:n_properties_2d)%default
     props(1:4) = [3.0_dp, 3.0_dp, 0.3_dp, 0.9_dp]
     props(prop_mu) = merge(0.5_dp, 0.0_dp, iset >= 2)
     props(prop_h_n) = merge(1.0_dp, 1.0e30_dp, iset >= 4)
