@@ -9,7 +9,7 @@ Copies the deck into WORK_DIR, runs ccx (on --threads threads, default 1) and ch
   --stops               ccx stops before the end (bad input must stop the host);
   --count REGEX N       exactly N lines of ccx's output match REGEX (the UMAT's messages:
                         one per material and kind of message);
-  --normal-traction T   the layer's normal traction (STATEV 25, *DEPVAR 26) equals -T at
+  --normal-traction T   the layer's normal traction (STATEV 31, *DEPVAR 34) equals -T at
                         every printed point of the last step to 1e-3 relative (the applied
                         pressure: equilibrium of the block, a closed form).
 Prints per step the increments, the failed attempts (cutbacks) and the iterations of the
@@ -53,7 +53,8 @@ def read_cvg(job):
 
 
 def layer_normal_tractions(job):
-    """STATEV 25 of every printed layer point in the last step (*EL PRINT SDV)."""
+    """STATEV 31 of every printed layer point in the last step (*EL PRINT SDV; the decks are
+    C3D8: the 3D law's 28 STATEV, then the layer's separation and traction (normal, slip))."""
     blocks, current = [], None
     for line in job.with_suffix(".dat").read_text().splitlines():
         if "internal state variables" in line:
@@ -61,8 +62,8 @@ def layer_normal_tractions(job):
             blocks.append(current)
             continue
         parts = line.split()
-        if current is not None and len(parts) >= 28 and parts[0].isdigit():
-            current.append(float(parts[2 + 24]))
+        if current is not None and len(parts) >= 2 + 34 and parts[0].isdigit():
+            current.append(float(parts[2 + 30]))
         elif current is not None and parts and not parts[0].isdigit():
             current = None
     return blocks
