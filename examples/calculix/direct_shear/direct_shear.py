@@ -12,9 +12,9 @@ local 1 = radial and slip = local 3 = axial of *ORIENTATION, SYSTEM=CYLINDRICAL)
                         [--tangent 1|2] [--out DIR] [--tolerance 1e-5]
 
 `run` writes the deck, runs ccx, reads the layer's separations, tractions and state per
-increment (*EL PRINT SDV: STATEV_EXTRA[element] + 1 .. + 4 are the separation and the traction
-(normal, slip) in the interface's axes: 23-26 of *DEPVAR 26 for CPE4 and CAX4, the 2D law; 29-32
-of *DEPVAR 34 for C3D8, the 3D law, whose STATEV 1-22 mean what the 2D law's do), replays the separation history of one layer point through
+increment (*EL PRINT SDV: *DEPVAR 34; ccx calls every element's material with NTENS = 6, so the
+layer runs the 3D law, whose STATEV 1-22 mean what the 2D law's do; STATEV 29-32 are the
+separation and the traction (normal, slip) in the interface's axes), replays the separation history of one layer point through
 interlock-history (a deck with one step per ccx increment) and asserts that the tractions and
 the state agree to the tolerance (relative, floor: the largest traction / the largest value of
 the variable over the run). It also writes convergence.txt: the global iterations of every
@@ -43,11 +43,10 @@ INTERLOCK = {"sigma0_n": 3.0, "sigma0_t": 3.0, "gc": 0.3, "eta": 0.9, "mu": 0.5,
              "max_angle_increment_deg": 90.0, "damage": 1, "friction": 1, "interlocking": 1,
              "finite_depth": 1, "wear": 1}
 AXES = {"C3D8": (3, 1), "CPE4": (2, 1), "CAX4": (1, 3)}   # (normal, slip) local axes
-# The law's STATEV (NTENS = 4: the 2D law's 22; NTENS = 6: the 3D law's 28 with the paper's
-# RIA), after them the layer's: (normal, slip) separation and traction, and with NTENS = 6 the
-# separation and traction along t2.
-STATEV_EXTRA = {"C3D8": 28, "CPE4": 22, "CAX4": 22}
-NSTATV = {"C3D8": 34, "CPE4": 26, "CAX4": 26}
+# The 3D law's STATEV (28 with the paper's RIA), then the layer's: (normal, slip) separation and
+# traction, the separation and traction along t2.
+STATEV_EXTRA = 28
+NSTATV = 34
 # STATEV 1-22 of the law (interlock-query --statev) (interlock-query --statev) and the history file's datasets.
 STATEV_NAMES = [("damage", 3), ("beta", 3), ("frictional_slip", 3), ("zeta", 3), ("theta", 3),
                 ("friction_traction", 3), ("work", 1), ("damage_dissipation", 1),
@@ -63,7 +62,7 @@ def user_material(element, tangent, interlock):
     if len(values) % 8 == 0:
         lines.append("0.")     # ccx reads a temperature after the constants: its own line here
     return (f"*MATERIAL, NAME=ABAQUSLAYER\n*USER MATERIAL, CONSTANTS={len(values)}\n"
-            + "\n".join(lines) + f"\n*DEPVAR\n{NSTATV[element]}\n")
+            + "\n".join(lines) + f"\n*DEPVAR\n{NSTATV}\n")
 
 
 def grid_3d():
@@ -317,7 +316,7 @@ def run(args):
     point = min(rows)
     sdv = rows[point]
     n = len(sdv)
-    extra = STATEV_EXTRA[args.element]
+    extra = STATEV_EXTRA
     s_ccx = [r[extra:extra + 2] for r in sdv]
     t_ccx = [r[extra + 2:extra + 4] for r in sdv]
 

@@ -226,7 +226,7 @@ def main(argv):
             if len(props) % 8 == 0:
                 w("0.")          # ccx reads a temperature after the constants
             w("*DEPVAR")
-            w("26")            # the law's 22, then separation and traction (normal, slip)
+            w("34")            # the 3D law's 28, then separations and tractions
         else:
             # Stand-in: isotropic elastic of the interface's initial stiffness K h.
             k = s0 / ((1.0 - eta) * 2.0 * gc / s0)

@@ -191,8 +191,9 @@ def analyse(job):
         opening = c[:, 1] - b[:, 1]
         state = next(rows for x, rows in layer if x == tm)
         # STATEV 1-3 damage, 10-12 zeta, 13-15 theta of the planes -theta0, 0, +theta0,
-        # 23-24 separation, 25-26 traction (normal, slip) in the interface's axes
-        means = element_means(state, list(range(26)))
+        # 29-30 separation, 31-32 traction (normal, slip) in the interface's axes (ccx calls
+        # the layer with NTENS = 6: the 3D law's 28 STATEV come first)
+        means = element_means(state, list(range(34)))
         es = sorted(means, key=lambda e: heights[e])
         ye = np.array([heights[e] for e in es])
         damage = np.array([means[e][0:3].mean() for e in es])
@@ -200,7 +201,7 @@ def analyse(job):
         theta0 = np.where(ye > sleeve_start, 1.75, 45.0) * math.pi / 180.0
         wear = 1.0 - np.min(np.abs(theta[:, [0, 2]]), axis=1) / theta0
         zeta = np.array([means[e][9:12].max() for e in es])
-        bond = np.array([means[e][25] for e in es])
+        bond = np.array([means[e][31] for e in es])
         profiles.append(dict(level=level, s_top=tm * top, y=b[:, 0], ym=ym, strain=strain,
                              slip=slip, opening=opening, ye=ye, damage=damage, wear=wear,
                              zeta=zeta, bond=bond))
