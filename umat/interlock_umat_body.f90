@@ -108,7 +108,7 @@ module interlock_umat_body
   ! messages and PNEWDT rules)
   public :: pnewdt_bad_input, pnewdt_local_failure, keep_fraction, pnewdt_min_factor, &
             separation_bits, increment_bits, state_bits, bad_precision, bad_ntens, bad_nstatv, bad_stress, &
-            report, separation_text, lower_pnewdt, step_factor, property_index, name_layer_property, &
+            report, report_update_failure, separation_text, lower_pnewdt, step_factor, property_index, name_layer_property, &
             reject_argument, reject_start_separation
 
   real(dp), parameter :: pnewdt_bad_input = -1.0_dp
@@ -252,13 +252,7 @@ contains
     old%sigma = STRESS(1:2)
     call interlock_update(mat, solver, s, old, new, sigma, tangent, info)
     if (info%status /= status_ok) then
-      if (info%status == status_local_failure) then
-        call report(info%message, pnewdt_local_failure, said_local_failure, NOEL, NPT, KINC, &
-                    CMNAME, PNEWDT)
-      else
-        call report(info%message, pnewdt_bad_input, said_argument, NOEL, NPT, KINC, CMNAME, &
-                    PNEWDT)
-      end if
+      call report_update_failure(info, NOEL, NPT, KINC, CMNAME, PNEWDT)
       if (info%status == status_local_failure) &
         call write_replay(info%message, mat, solver, old, s, NOEL, NPT, KINC, CMNAME)
       return
@@ -388,6 +382,21 @@ contains
       pnewdt = proposal
     end if
   end subroutine lower_pnewdt
+
+  !> A failed update: one line with its message; PNEWDT 0.5 for a local failure (a shorter
+  !> increment may pass), -1 for bad input.
+  subroutine report_update_failure(info, noel, npt, kinc, cmname, pnewdt)
+    type(interlock_info_t), intent(in) :: info
+    integer, intent(in) :: noel, npt, kinc
+    character(len=*), intent(in) :: cmname
+    real(dp), intent(inout) :: pnewdt
+    if (info%status == status_local_failure) then
+      call report(info%message, pnewdt_local_failure, said_local_failure, noel, npt, kinc, &
+                  cmname, pnewdt)
+    else
+      call report(info%message, pnewdt_bad_input, said_argument, noel, npt, kinc, cmname, pnewdt)
+    end if
+  end subroutine report_update_failure
 
   !> Write one line naming the point, lower PNEWDT; STRESS and STATEV stay as they came.
   !> A bad interlock property of the thin layer, named by its index in the layer's PROPS too

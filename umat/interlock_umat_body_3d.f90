@@ -25,16 +25,15 @@
 !> its lock); `recursive`: every local on the stack.
 module interlock_umat_body_3d
   use interlock_numbers, only: key_in_range
-  use interlock_umat_messages, only: said_argument, said_property, said_statev, said_diverged, &
-      said_local_failure
-  use interlock_umat_body, only: pnewdt_bad_input, pnewdt_local_failure, pnewdt_diverged, &
+  use interlock_umat_messages, only: said_argument, said_property, said_statev, said_diverged
+  use interlock_umat_body, only: pnewdt_bad_input, pnewdt_diverged, &
       keep_fraction, pnewdt_min_factor, separation_bits, increment_bits, state_bits, &
-      bad_precision, bad_ntens, bad_nstatv, bad_stress, report, lower_pnewdt, step_factor, property_index, &
+      bad_precision, bad_ntens, bad_nstatv, bad_stress, report, report_update_failure, lower_pnewdt, step_factor, property_index, &
       name_layer_property, reject_argument, reject_start_separation, separation_text, &
       diverged_iteration_message
   use interlock, only: dp, separation_bound, interlock_material_t, interlock_solver_t, &
       interlock_state_3d_t, interlock_info_t, interlock_update_3d, umat_controls_t, status_ok, &
-      status_local_failure, scheme_explicit
+      scheme_explicit
   implicit none
   private
   public :: interlock_umat_cohesive_3d
@@ -155,13 +154,7 @@ contains
     old%sigma_t2 = STRESS(3)
     call interlock_update_3d(mat, solver, s, old, new, sigma, tangent, info)
     if (info%status /= status_ok) then
-      if (info%status == status_local_failure) then
-        call report(info%message, pnewdt_local_failure, said_local_failure, NOEL, NPT, KINC, &
-                    CMNAME, PNEWDT)
-      else
-        call report(info%message, pnewdt_bad_input, said_argument, NOEL, NPT, KINC, CMNAME, &
-                    PNEWDT)
-      end if
+      call report_update_failure(info, NOEL, NPT, KINC, CMNAME, PNEWDT)
       return
     end if
     if (NPROPS >= prop_tangent) then

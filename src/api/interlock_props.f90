@@ -312,16 +312,25 @@ contains
     ! Which one: the first slot outside its range.
     call statev_bounds(mat, lo, hi)
     lo(slot_flag) = 1.0_dp
-    do i = 1, umat_nstatv
-      if (.not. is_finite_bits(statev(i))) then
+    bad = first_out_of_range(statev, lo, hi)
+  end function statev_bad_index
+
+  !> The first i with values(i) not finite or outside [lo(i), hi(i)], 0 when none (each value
+  !> tested on its bits before it is compared: no comparison of a NaN).
+  pure integer function first_out_of_range(values, lo, hi) result(bad)
+    real(dp), intent(in) :: values(:), lo(:), hi(:)
+    integer :: i
+    bad = 0
+    do i = 1, size(values)
+      if (.not. is_finite_bits(values(i))) then
         bad = i
         return
-      else if (.not. (statev(i) >= lo(i) .and. statev(i) <= hi(i))) then
+      else if (.not. (values(i) >= lo(i) .and. values(i) <= hi(i))) then
         bad = i
         return
       end if
     end do
-  end function statev_bad_index
+  end function first_out_of_range
 
   !> The message for STATEV(i) outside its range: index, name, plane, value, range.
   pure subroutine statev_message(statev, i, mat, message)
@@ -438,7 +447,7 @@ contains
     real(dp), intent(in) :: statev(:)
     type(interlock_material_t), intent(in) :: mat
     real(dp) :: lo(size(statev)), hi(size(statev))
-    integer :: i, flag
+    integer :: flag
     bad = 0
     flag = statevar_index_3d(sv_initialized, 0, mat%n_planes)
     if (.not. is_finite_bits(statev(flag))) then
@@ -451,15 +460,7 @@ contains
     end if
     call statev_bounds_3d(mat, lo, hi)
     lo(flag) = 1.0_dp
-    do i = 1, size(statev)
-      if (.not. is_finite_bits(statev(i))) then
-        bad = i
-        return
-      else if (.not. (statev(i) >= lo(i) .and. statev(i) <= hi(i))) then
-        bad = i
-        return
-      end if
-    end do
+    bad = first_out_of_range(statev, lo, hi)
   end function statev_bad_index_3d
 
   !> The message for STATEV(i) of a three-dimensional point outside its range.

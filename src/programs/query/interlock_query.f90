@@ -5,8 +5,8 @@ program interlock_query
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
   use interlock_cli, only: exit_program, command_argument
   use interlock, only: properties, statevars, n_properties, n_required_properties, &
-      n_statevars_per_plane, n_statevars_global, umat_planes, umat_nstatv, statevar_index, &
-      format_range, format_real, property_t, statevar_t, kind_real, kind_flag, kind_choice, &
+      umat_planes, umat_nstatv, format_range, format_real, property_t, statevar_t, kind_real, &
+      kind_flag, kind_choice, &
       interlock_version_string, format_integer, statevar_index_3d, statevar_3d, &
       umat_nstatv_3d, n_statevars_strike, prop_ria, max_azimuths
   implicit none
@@ -182,7 +182,7 @@ contains
     write (output_unit, '(a)') pad('STATEV', 8) // pad('name', 25) // pad('plane', 14) // &
       pad('unit', 6) // 'description'
     do slot = 1, umat_nstatv
-      call locate(slot, i, k)
+      call locate(slot, .false., i, k)
       v = statevars(i)
       write (output_unit, '(a)') pad(format_integer(slot), 8) // pad(v%name, 25) // &
         pad(plane_column(v%per_plane, k), 14) // pad(v%unit, 6) // &
@@ -194,7 +194,7 @@ contains
     write (output_unit, '(a)') pad('STATEV', 8) // pad('name', 25) // pad('plane', 14) // &
       pad('unit', 6) // 'description'
     do slot = 1, umat_nstatv_3d(umat_planes)
-      call locate_3d(slot, i, k)
+      call locate(slot, .true., i, k)
       v = statevar_3d(i)
       write (output_unit, '(a)') pad(format_integer(slot), 8) // pad(v%name, 25) // &
         pad(plane_column(v%per_plane, k), 14) // pad(v%unit, 6) // &
@@ -226,13 +226,18 @@ contains
   end function statev_3d_note
 
   !> Which state variable (ivar, statevar_3d) and plane (k, 0 for global ones) STATEV(slot)
-  !> of a 3D point with the paper's RIA holds.
-  subroutine locate_3d(slot, ivar, k)
+  !> holds with the paper's RIA: of a 2D point (three_d false: the variables of `statevars`), or
+  !> of a 3D point (the strike ones too); statevar_index_3d with the paper's planes is the 2D
+  !> layout for the 2D variables.
+  subroutine locate(slot, three_d, ivar, k)
     integer, intent(in) :: slot
+    logical, intent(in) :: three_d
     integer, intent(out) :: ivar, k
-    integer :: j, m
+    integer :: j, m, n_vars
     type(statevar_t) :: row
-    do j = 1, size(statevars) + n_statevars_strike
+    n_vars = size(statevars)
+    if (three_d) n_vars = n_vars + n_statevars_strike
+    do j = 1, n_vars
       row = statevar_3d(j)
       do m = 0, umat_planes
         if (row%per_plane .neqv. (m > 0)) cycle
@@ -245,31 +250,11 @@ contains
     end do
     ivar = 1
     k = 0
-    write (error_unit, '(a)') 'interlock-query: 3D STATEV(' // format_integer(slot) // &
+    write (error_unit, '(a)') 'interlock-query: STATEV(' // format_integer(slot) // &
       ') is not in the table'
     call exit_program(3)
-  end subroutine locate_3d
-
-  !> Which state variable (ivar) and plane (k, 0 for global ones) STATEV(slot) holds.
-  subroutine locate(slot, ivar, k)
-    integer, intent(in) :: slot
-    integer, intent(out) :: ivar, k
-    integer :: j, m
-    do j = 1, n_statevars_per_plane + n_statevars_global
-      do m = 0, umat_planes
-        if (statevars(j)%per_plane .neqv. (m > 0)) cycle
-        if (statevar_index(j, m) == slot) then
-          ivar = j
-          k = m
-          return
-        end if
-      end do
-    end do
-    ivar = 1
-    k = 0
-    write (error_unit, '(a)') 'interlock-query: STATEV(' // format_integer(slot) // ') is not in the table'
-    call exit_program(3)
   end subroutine locate
+
 
   subroutine print_markdown()
     integer :: i, k, slot
@@ -351,7 +336,7 @@ contains
       '| STATEV | name | plane | unit | description |', &
       '|---|---|---|---|---|'
     do slot = 1, umat_nstatv
-      call locate(slot, i, k)
+      call locate(slot, .false., i, k)
       v = statevars(i)
       write (output_unit, '(a)') '| ' // format_integer(slot) // ' | `' // trim(v%name) // '` | ' // &
         plane_column(v%per_plane, k) // ' | ' // trim(v%unit) // &
@@ -367,7 +352,7 @@ contains
       '| STATEV | name | plane | unit | description |', &
       '|---|---|---|---|---|'
     do slot = 1, umat_nstatv_3d(umat_planes)
-      call locate_3d(slot, i, k)
+      call locate(slot, .true., i, k)
       v = statevar_3d(i)
       write (output_unit, '(a)') '| ' // format_integer(slot) // ' | `' // trim(v%name) // '` | ' // &
         plane_column(v%per_plane, k) // ' | ' // trim(v%unit) // &
