@@ -26,10 +26,10 @@
 module interlock_umat_body_3d
   use interlock_numbers, only: key_in_range
   use interlock_umat_messages, only: said_argument, said_property, said_statev, said_diverged
-  use interlock_umat_body, only: pnewdt_bad_input, pnewdt_diverged, &
-      keep_fraction, pnewdt_min_factor, separation_bits, increment_bits, state_bits, &
-      bad_precision, bad_ntens, bad_nstatv, bad_stress, report, report_update_failure, lower_pnewdt, step_factor, property_index, &
-      name_layer_property, reject_argument, reject_start_separation, separation_text, &
+  use interlock_umat_body, only: pnewdt_bad_input, pnewdt_diverged, keep_fraction, &
+      pnewdt_min_factor, separation_bits, increment_bits, state_bits, bad_precision, bad_ntens, &
+      bad_nstatv, bad_stress, report, report_update_failure, lower_pnewdt, step_factor, &
+      property_index, name_layer_property, reject_argument, reject_start_separation, separation_text, &
       diverged_iteration_message
   use interlock, only: dp, separation_bound, interlock_material_t, interlock_solver_t, &
       interlock_state_3d_t, interlock_info_t, interlock_update_3d, umat_controls_t, status_ok, &
