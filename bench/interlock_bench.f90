@@ -23,7 +23,7 @@ program interlock_bench
   use interlock_bench_bilinear, only: bilinear_t, bilinear_state_t, bilinear_setup, bilinear_update
   use interlock_bench_scenes, only: scene_t, make_scene, run_scene, slip_at, n_effect_sets, &
       effect_set_names, make_effect_set, make_histories
-  use interlock_bench_umat, only: umat_props, time_umat, time_umat_floor
+  use interlock_bench_umat, only: umat_props, time_umat, time_umat_floor, time_umat_3d
   implicit none
 
   integer, parameter :: n_scenes = 3
@@ -612,17 +612,20 @@ contains
   !> in one run, for the full model (effect set 5) and each scheme: the 2D update; the 3D update
   !> of the same material with every azimuth 0 and no T2 loading (the histories in the (n, t1)
   !> plane: target <= 1.5 x the 2D update); the same histories turned by 30 deg in the
-  !> interface plane (T2 loading, the general 3D path); and the `azimuthal` RIA with N_a = 3 on
-  !> the turned histories. Writes DIR/cost3d.csv.
+  !> interface plane (T2 loading, the general 3D path); the `azimuthal` RIA with N_a = 3 on
+  !> the turned histories; and the external UMAT with the full model's PROPS: as a 2D element
+  !> on the histories, as a 3D element (NTENS = 3) on the turned ones. Writes DIR/cost3d.csv.
   subroutine cost_study_3d()
-    integer, parameter :: n_kinds = 4
+    integer, parameter :: n_kinds = 6
     integer, parameter :: n_schemes = 3   !< explicit, implicit, trapezoidal
     character(len=32), parameter :: kind_names(n_kinds) = [character(len=32) :: '2D', &
-      '3D, in the (n, t1) plane', '3D, turned 30 deg', '3D azimuthal N_a = 3, turned']
+      '3D, in the (n, t1) plane', '3D, turned 30 deg', '3D azimuthal N_a = 3, turned', &
+      'UMAT NTENS = 2', 'UMAT NTENS = 3, turned 30 deg']
     type(interlock_material_t) :: mat, mat_az
     type(interlock_solver_t) :: solver
-    integer :: npts, reps, rep, stat, u, fails, kind, scheme, k, inner(0:n_kinds)
-    real(dp) :: min_rep, t0, t1, calls, chk(0:n_kinds), ns(n_kinds, n_schemes), ang
+    integer :: npts, reps, rep, stat, u, fails, kind, scheme, k, inner(0:n_kinds), cuts
+    real(dp) :: min_rep, t0, t1, calls, chk(0:n_kinds), ns(n_kinds, n_schemes), ang, &
+                props(n_properties_2d)
     real(dp), allocatable :: h(:, :, :), h3(:, :, :), h3t(:, :, :), times(:, :)
     character(len=256) :: message
 
@@ -650,8 +653,10 @@ contains
       npts, ' points, median of ', reps, ' interleaved repetitions (CPU time)'
     call open_csv('cost3d.csv', u, 'scheme,update,ns_per_call,ratio_to_2d,calls_per_rep,reps')
     fails = 0
+    cuts = 0
     do scheme = 1, n_schemes
       solver%scheme = scheme
+      call umat_props(n_effect_sets, scheme, props)
       chk = 0.0_dp
       inner = 1
       do rep = 0, reps
@@ -668,8 +673,12 @@ contains
               call time_interlock_3d(mat, solver, h3, chk(kind), fails)
             else if (kind == 3) then
               call time_interlock_3d(mat, solver, h3t, chk(kind), fails)
-            else
+            else if (kind == 4) then
               call time_interlock_3d(mat_az, solver, h3t, chk(kind), fails)
+            else if (kind == 5) then
+              call time_umat(props, h, chk(kind), fails, cuts)
+            else
+              call time_umat_3d(props, h3t, chk(kind), fails)
             end if
           end do
           call cpu_time(t1)

@@ -3,14 +3,14 @@
 !> (PROPS parsed every call, STATEV and STRESS kept by the host and passed in and out, STRAN
 !> and DSTRAN), and the floor of what any UMAT must do per call besides its law.
 module interlock_bench_umat
-  use interlock, only: dp, n_properties_2d, properties, umat_nstatv, prop_mu, prop_h_n, &
+  use interlock, only: dp, n_properties_2d, properties, umat_nstatv, n_statevars_strike, umat_planes, prop_mu, prop_h_n, &
       prop_theta0, prop_thetaf, prop_zeta0, prop_scheme, prop_effect_interlocking
   use interlock_bench_umat_floor, only: umat_floor_call
   ! (the explicit interface of the external UMAT, as a host written in modern Fortran declares it)
   use test_umat_interface, only: UMAT
   implicit none
   private
-  public :: umat_props, time_umat, time_umat_floor
+  public :: umat_props, time_umat, time_umat_floor, time_umat_3d
 
 
 contains
@@ -108,5 +108,46 @@ contains
     call run_umat_histories(props, h, chk, fails, cuts, .true.)
     chk = chk + fails   ! (states the floor's checks refused: none on these histories)
   end subroutine time_umat_floor
+
+  !> Every history h(3, :, :) through the UMAT as a 3D cohesive element (NTENS = 3) with the
+  !> PROPS of a 2D element (the paper's RIA), from a virgin STATEV, one call per point.
+  subroutine time_umat_3d(props, h, chk, fails)
+    real(dp), intent(in) :: props(:), h(:, :, :)
+    real(dp), intent(inout) :: chk
+    integer, intent(inout) :: fails
+    !> (umat_nstatv_3d for the paper's RIA, as a constant)
+    integer, parameter :: nstatv = umat_nstatv + n_statevars_strike * umat_planes
+    real(dp) :: stress(3), statev(nstatv), ddsdde(3, 3), sse, spd, scd, rpl, ddsddt(3), &
+                drplde(3), drpldt, stran(3), time(2), zero1(1), coords(3), eye(3, 3), pnewdt, acc
+    integer :: ih, i
+    time = 0.0_dp
+    zero1 = 0.0_dp
+    coords = 0.0_dp
+    eye = reshape([1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [3, 3])
+    sse = 0.0_dp
+    spd = 0.0_dp
+    scd = 0.0_dp
+    rpl = 0.0_dp
+    ddsddt = 0.0_dp
+    drplde = 0.0_dp
+    drpldt = 0.0_dp
+    acc = 0.0_dp
+    do ih = 1, size(h, 3)
+      statev = 0.0_dp
+      stress = 0.0_dp
+      stran = 0.0_dp
+      do i = 1, size(h, 2)
+        pnewdt = 1.0_dp
+        call UMAT(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpldt, stran, &
+                  h(:, i, ih) - stran, time, 1.0_dp, 0.0_dp, 0.0_dp, zero1, zero1, 'BENCH3D', 1, &
+                  2, 3, nstatv, props, size(props), coords, eye, pnewdt, 1.0_dp, eye, eye, 1, 1, &
+                  1, 1, [1, 1, 0, 0], i)
+        if (pnewdt < 0.0_dp) fails = fails + 1
+        stran = h(:, i, ih)
+        acc = acc + sum(stress) + sum(ddsdde)
+      end do
+    end do
+    chk = chk + acc
+  end subroutine time_umat_3d
 
 end module interlock_bench_umat
