@@ -14,8 +14,8 @@ local 1 = radial and slip = local 3 = axial of *ORIENTATION, SYSTEM=CYLINDRICAL)
 `run` writes the deck, runs ccx, reads the layer's separations, tractions and state per
 increment (*EL PRINT SDV: *DEPVAR 34; ccx calls every element's material with NTENS = 6, so the
 layer runs the 3D law, whose STATEV 1-22 mean what the 2D law's do; STATEV 29-32 are the
-separation and the traction (normal, slip) in the interface's axes), replays the separation history of one layer point through
-interlock-history (a deck with one step per ccx increment) and asserts that the tractions and
+separation and the traction (normal, slip) in the interface's axes), replays the separation history (s_N, s_T1, s_T2) of one layer point through
+interlock-history (a 3D deck with one step per ccx increment: ccx's layer runs the 3D law) and asserts that the tractions and
 the state agree to the tolerance (relative, floor: the largest traction / the largest value of
 the variable over the run). It also writes convergence.txt: the global iterations of every
 increment and the residual sequence (ccx's .cvg and .sta). Exit status 0 when all agree.
@@ -47,10 +47,11 @@ AXES = {"C3D8": (3, 1), "CPE4": (2, 1), "CAX4": (1, 3)}   # (normal, slip) local
 # traction, the separation and traction along t2.
 STATEV_EXTRA = 28
 NSTATV = 34
-# STATEV 1-22 of the law (interlock-query --statev) (interlock-query --statev) and the history file's datasets.
+# STATEV 1-22 of the law, then 23-28 the strike components (interlock-query --statev) (interlock-query --statev) and the history file's datasets.
 STATEV_NAMES = [("damage", 3), ("beta", 3), ("frictional_slip", 3), ("zeta", 3), ("theta", 3),
                 ("friction_traction", 3), ("work", 1), ("damage_dissipation", 1),
-                ("friction_dissipation", 1)]
+                ("friction_dissipation", 1), ("initialized", 1), ("sf_strike", 3),
+                ("tauf_strike", 3)]
 
 
 def user_material(element, tangent, interlock):
@@ -317,8 +318,9 @@ def run(args):
     sdv = rows[point]
     n = len(sdv)
     extra = STATEV_EXTRA
-    s_ccx = [r[extra:extra + 2] for r in sdv]
-    t_ccx = [r[extra + 2:extra + 4] for r in sdv]
+    # (normal, slip, t2) separations and tractions: the layer's STATEV after the law's
+    s_ccx = [r[extra:extra + 2] + [r[extra + 4]] for r in sdv]
+    t_ccx = [r[extra + 2:extra + 4] + [r[extra + 5]] for r in sdv]
 
     # The replay deck: the separations of the point at every ccx increment, one step each.
     deck = out / f"{job.name}_replay.nml"
@@ -327,6 +329,7 @@ def run(args):
     tpts = ", ".join(str(i) for i in range(n + 1))
     normal = ", ".join(["0"] + [repr(s[0]) for s in s_ccx])
     tangential = ", ".join(["0"] + [repr(s[1]) for s in s_ccx])
+    t2 = ", ".join(["0"] + [repr(s[2]) for s in s_ccx])
     deck.write_text(
         f"! Replay of {job.name}.inp, element {point[0]} point {point[1]}: ccx's separations\n"
         f"&interface\n  sigma0_n = {p['sigma0_n']}, sigma0_t = {p['sigma0_t']}, gc = {p['gc']},"
@@ -334,8 +337,9 @@ def run(args):
         f" prefractured = {'.true.' if args.prefractured else '.false.'}\n/\n"
         f"&microplanes\n  theta0_deg = {p['theta0_deg']}, thetaf_deg = {p['thetaf_deg']},"
         f" zeta0 = {p['zeta0']}\n/\n"
-        f"&loading\n  normal_control = 'separation', tangential_control = 'separation'\n"
-        f"  times = {tpts}\n  normal = {normal}\n  tangential = {tangential}\n"
+        f"&loading\n  normal_control = 'separation', tangential_control = 'separation',"
+        f" t2_control = 'separation'\n"
+        f"  times = {tpts}\n  normal = {normal}\n  tangential = {tangential}\n  t2 = {t2}\n"
         f"  steps = {', '.join(['1'] * n)}\n/\n"
         f"&solver\n  scheme = 'implicit'\n/\n"
         f"&output\n  file = '{h5.name}'\n/\n")
@@ -356,8 +360,8 @@ def run(args):
 
     # Tractions relative to the largest traction (norm of the vector) of the run.
     trac = data["traction"]
-    t_scale = max(math.hypot(*t) for t in t_ccx)
-    for c, label in enumerate(["normal traction", "shear traction"]):
+    t_scale = max(math.sqrt(sum(x * x for x in t)) for t in t_ccx)
+    for c, label in enumerate(["normal traction", "shear traction", "t2 traction"]):
         compare(label, [t[c] for t in t_ccx], [trac[i][c] for i in range(n)], t_scale)
     col = 0
     for name, count in STATEV_NAMES:
