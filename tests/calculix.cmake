@@ -2,9 +2,10 @@
 # -DINTERLOCK_CCX=<path> (scripts/build_calculix.sh prints it; scripts/test.sh passes it to the
 # Release build).
 #  - direct shear in C3D8, CPE4 and CAX4: ccx's layer tractions and state per increment equal
-#    interlock-history's replay of the same separations to 1e-5 (relative), for the exact
-#    tangent (1) and the symmetric one (2); the runs' iterations and residuals are written
-#    to <build>/tests/calculix/*_convergence.txt;
+#    interlock-history's replay of the same separations (a 3D deck: ccx runs every layer
+#    through the 3D law) to 1e-5 (relative), for the exact tangent (1) and the symmetric one
+#    (2); C3D8 also with the slip at 45 deg between the in-plane axes; the runs' iterations
+#    and residuals are written to <build>/tests/calculix/*_convergence.txt;
 #  - shear by force on a debonded interface with the symmetric tangent reaches the full load.
 set(INTERLOCK_CCX "" CACHE FILEPATH "ccx built with interlock's umat (scripts/build_calculix.sh)")
 if(INTERLOCK_CCX AND TARGET interlock-history)
@@ -38,6 +39,20 @@ if(INTERLOCK_CCX AND TARGET interlock-history)
         PASS_REGULAR_EXPRESSION "agrees with interlock-history to 1e-05"
         FAIL_REGULAR_EXPRESSION "FAIL|Traceback")
     endforeach()
+  endforeach()
+  # C3D8, slip at 45 deg between the layer's in-plane axes (both shear components through the
+  # 3D law): the layer's tractions equal interlock-history's 3D replay of its separations
+  # (s_N, s_T1, s_T2) to 1e-5; the state to 5e-5 (ccx prints the separations with 7 digits, and
+  # a friction traction K_t (s - sf) replayed from them carries K_t times that rounding).
+  foreach(tangent 1 2)
+    add_test(NAME calculix_direct_shear_C3D8_45deg_tangent${tangent}
+      COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/examples/calculix/direct_shear/direct_shear.py
+              run --element C3D8 --tangent ${tangent} --angle-deg 45 --state-tolerance 5e-5
+              --ccx ${INTERLOCK_CCX} --history $<TARGET_FILE:interlock-history> --out ${calculix_work})
+    set_tests_properties(calculix_direct_shear_C3D8_45deg_tangent${tangent} PROPERTIES
+      LABELS calculix TIMEOUT 300 FIXTURES_REQUIRED calculix_binary
+      PASS_REGULAR_EXPRESSION "agrees with interlock-history to 1e-05"
+      FAIL_REGULAR_EXPRESSION "FAIL|Traceback")
   endforeach()
   # Shear by force on a fully debonded interface (friction and interlocking only): with the
   # symmetric tangent ccx reaches the full load; with the exact one (which ccx symmetrizes) it
