@@ -19,7 +19,7 @@ interlock_add_pfunit_suite(umat_3d LABEL umat TEST_SOURCES test_umat_3d.pf
   OTHER_SOURCES test_umat_interface.f90 LINK_LIBRARIES interlock_umat)
 target_include_directories(umat_3d PRIVATE ${PROJECT_BINARY_DIR}/umat/mod_umat)
 set_tests_properties(umat_3d PROPERTIES
-  PASS_REGULAR_EXPRESSION "PROPS\\(21\\): property 'ria' = 2 is inadmissible: admissible ria an integer from 0 to 1.*PROPS\\(21\\): property 'ria' = NaN is inadmissible.*PROPS\\(22\\): property 'n_azimuths' = 0 is inadmissible: admissible n_azimuths an integer from 1 to 3.*NSTATV = 28 is inadmissible: admissible NSTATV >= 60 for NTENS = 3 with a RIA of 7 planes.*STATEV\\(24\\) = NaN \\(frictional_slip_strike of plane 2\\) is inadmissible.*STRAN = \\(0, 0, NaN\\) mm is inadmissible: admissible \\|s_N\\|, \\|s_T1\\|, \\|s_T2\\| <= 1000000 mm.*PROPS\\(21\\): property 'ria' = 1 is inadmissible with a 2D element \\(NTENS = 2\\).*OK\n \\([0-9]+ tests?\\)"
+  PASS_REGULAR_EXPRESSION "PROPS\\(21\\): property 'ria' = 2 is inadmissible: admissible ria an integer from 0 to 1.*PROPS\\(21\\): property 'ria' = NaN is inadmissible.*PROPS\\(22\\): property 'n_azimuths' = 0 is inadmissible: admissible n_azimuths an integer from 1 to 3.*NSTATV = 28 is inadmissible: admissible NSTATV >= 60 for a 3D interface \\(the 3D law\\) with a RIA of 7 planes.*STATEV\\(24\\) = NaN \\(frictional_slip_strike of plane 2\\) is inadmissible.*STRAN = \\(0, 0, NaN\\) mm is inadmissible: admissible \\|s_N\\|, \\|s_T1\\|, \\|s_T2\\| <= 1000000 mm.*PROPS\\(21\\): property 'ria' = 1 is inadmissible with a 2D element \\(NTENS = 2\\).*OK\n \\([0-9]+ tests?\\)"
   FAIL_REGULAR_EXPRESSION "FAIL|ERROR STOP|Encountered 1 or more failures")
 
 # --- The table tells the truth (defaults, PROPS slots, STATEV layout).

@@ -112,9 +112,9 @@ contains
     nsv = umat_nstatv_3d(mat%n_planes)
     if (NSTATV < nsv) then
       call report('NSTATV = ' // format_integer(NSTATV) // ' is inadmissible: admissible ' // &
-                  'NSTATV >= ' // format_integer(nsv) // ' for NTENS = 3 with a RIA of ' // &
-                  format_integer(mat%n_planes) // ' planes (*DEPVAR; see interlock-query ' // &
-                  '--statev)', pnewdt_bad_input, said_argument + bad_nstatv, NOEL, NPT, KINC, CMNAME, &
+                  'NSTATV >= ' // format_integer(nsv) // ' for a 3D interface (the 3D law) ' // &
+                  'with a RIA of ' // format_integer(mat%n_planes) // ' planes (*DEPVAR; see ' // &
+                  'interlock-query --statev)', pnewdt_bad_input, said_argument + bad_nstatv, NOEL, NPT, KINC, CMNAME, &
                   PNEWDT)
       return
     end if
