@@ -101,12 +101,28 @@ contains
   end function format_real
 
   !> An integer as text, without blanks: 42 -> "42".
+  !> Digit by digit, without an internal write: messages are built by a UMAT that several
+  !> threads of a host call at once, and gfortran's run-time library (12) can garble an
+  !> internal write made inside a function called from concurrent threads.
   pure function format_integer(i) result(text)
     integer, intent(in) :: i
     character(len=:), allocatable :: text
-    character(len=16) :: buf
-    write (buf, '(i0)') i
-    text = trim(buf)
+    character(len=24) :: buf
+    integer(int64) :: n
+    integer :: p
+    n = abs(int(i, int64))
+    p = len(buf) + 1
+    do
+      p = p - 1
+      buf(p:p) = achar(iachar('0') + int(mod(n, 10_int64)))
+      n = n / 10_int64
+      if (n == 0_int64) exit
+    end do
+    if (i < 0) then
+      p = p - 1
+      buf(p:p) = '-'
+    end if
+    text = buf(p:)
   end function format_integer
 
   !> "1.500000" -> "1.5", "2.000" -> "2".
