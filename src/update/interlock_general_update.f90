@@ -17,14 +17,12 @@ module interlock_general_update
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
   use interlock_ria, only: ria_step
   use interlock_kernels, only: kernel_step
+  use interlock_substep_control, only: next_sub_increment, count_attempt, after_failure, &
+      keep_trial, next_size, check_chain
   implicit none
   private
   public :: general_update, kernel_update
 
-  real(dp), parameter :: smallest_fraction = 1.0e-12_dp
-  !> Error control accepts a sub-increment of this fraction of the increment whatever its
-  !> estimate (2^-12: at most ~4096 sub-increments to pass a kink).
-  real(dp), parameter :: smallest_controlled_fraction = 2.0_dp**(-12)
 
 contains
 
@@ -198,9 +196,9 @@ contains
     type(interlock_state_t) :: cur, trial
     real(dp) :: ds(2), alpha, h, a_end, err, s_end(2), t_trial(2, 2)
     real(dp) :: jac(4, 2, max_planes), jac_trial(4, 2, max_planes)
-    real(dp) :: stiffness_scale, chain_peak
+    real(dp) :: chain_peak
     integer :: it, n_accepted
-    logical :: solved, stable, control
+    logical :: solved, stable, control, kept, give_up, allowed
 
     control = tol < huge(1.0_dp)
     ds = s - old%s
@@ -210,72 +208,39 @@ contains
     jac = 0.0_dp
     n_accepted = 0
     info%attempts = 0
-    ! The largest stiffness the law can show (penalty, or traction over the asperity depth).
-    stiffness_scale = max(mat%kn, mat%kt) + max(mat%sigma0_n, mat%sigma0_t) * mat%inv_h_n
     chain_peak = 0.0_dp
     do while (alpha < 1.0_dp)
-      h = min(h, 1.0_dp - alpha)
-      a_end = alpha + h
-      if (a_end >= 1.0_dp - smallest_fraction) then
-        a_end = 1.0_dp
-        h = 1.0_dp - alpha
+      call next_sub_increment(alpha, h, a_end)
+      if (a_end >= 1.0_dp) then
         s_end = s
       else
         s_end = old%s + a_end * ds
       end if
-      info%attempts = info%attempts + 1
-      if (info%attempts > solver%max_substeps) then
-        info%status = status_local_failure
-        write (info%message, '(a,i0,a)') 'substepping needed more than ', solver%max_substeps, &
-          ' sub-increments: retry with a smaller increment'
-        return
-      end if
+      call count_attempt(info, solver%max_substeps, allowed)
+      if (.not. allowed) return
       call ria_step(mat, solver, s_end, cur, trial, t_trial, it, solved, jac, a_end, jac_trial, &
                     alpha, err)
       info%newton_iterations = max(info%newton_iterations, it)
       stable = .true.
       if (solved) stable = bounded(jac_trial, mat%n_planes)
       if (.not. (solved .and. stable)) then
-        h = 0.25_dp * h
-        if (h < smallest_fraction) then
-          info%status = status_local_failure
-          if (.not. solved) then
-            info%message = 'the local wear equation has no solution on any sub-increment: ' // &
-                           'retry with a smaller increment'
-          else
-            info%message = 'the update is unstable on small sub-increments (its derivative ' // &
-                           'grows without bound): use the implicit scheme or a smaller increment'
-          end if
-          return
-        end if
+        call after_failure(solved, h, info, give_up)
+        if (give_up) return
         cycle
       end if
-      if (.not. control .or. err <= tol .or. h <= smallest_controlled_fraction) then
+      kept = keep_trial(control, err, tol, h)
+      if (kept) then
         cur = trial
         jac(:, :, 1:mat%n_planes) = jac_trial(:, :, 1:mat%n_planes)
         tangent = t_trial
         chain_peak = max(chain_peak, maxval(abs(t_trial)))
         alpha = a_end
         n_accepted = n_accepted + 1
-        if (control) then
-          h = h * min(4.0_dp, max(1.0_dp, 0.9_dp * sqrt(tol / max(err, tiny(1.0_dp)))))
-        else
-          h = 2.0_dp * h
-        end if
-      else
-        h = h * max(0.1_dp, 0.9_dp * sqrt(tol / err))
       end if
-      h = scale(1.0_dp, exponent(h) - 1)
+      call next_size(kept, control, err, tol, h)
     end do
-    if (chain_peak > 1.0e6_dp * stiffness_scale) then
-      ! Far beyond any stiffness of the law: the chain through the sub-increments amplifies
-      ! (and a product of such factors that cancels down to a normal tangent has lost its
-      ! accuracy to round-off).
-      info%status = status_local_failure
-      info%message = 'the update is unstable on small sub-increments (its derivative grows ' // &
-                     'without bound): use the implicit scheme or a smaller increment'
-      return
-    end if
+    call check_chain(mat, chain_peak, info, allowed)
+    if (.not. allowed) return
     new = cur
     info%substeps = n_accepted
   end subroutine substep

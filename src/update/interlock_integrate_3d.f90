@@ -23,14 +23,12 @@ module interlock_integrate_3d
   use interlock_plane_law_3d, only: plane_dual_t, plane_response_3d_t, plane_law_3d, &
       plane_angle_frame, worn_angle_3d, start_pressure_3d, azimuths_t, azimuths_of
   use interlock_integrate, only: interlock_update
+  use interlock_substep_control, only: next_sub_increment, count_attempt, after_failure, &
+      keep_trial, next_size, check_chain
   implicit none
   private
   public :: interlock_update_3d, general_update_3d
 
-  real(dp), parameter :: smallest_fraction = 1.0e-12_dp
-  !> Error control accepts a sub-increment of this fraction of the increment whatever its
-  !> estimate (as the 2D update: interlock_general_update).
-  real(dp), parameter :: smallest_controlled_fraction = 2.0_dp**(-12)
 
 contains
 
@@ -245,9 +243,9 @@ contains
     type(interlock_state_3d_t) :: cur, trial
     type(plane_dual_t) :: planes(max_planes), planes_trial(max_planes)
     type(dual_t) :: s_end(3), s_start(3), sig(3)
-    real(dp) :: ds(3), s_old(3), alpha, h, a_end, err, stiffness_scale, chain_peak
+    real(dp) :: ds(3), s_old(3), alpha, h, a_end, err, chain_peak
     integer :: it, n_accepted, i, k
-    logical :: solved, stable, control, single
+    logical :: solved, stable, control, single, kept, give_up, allowed
 
     single = tol < 0.0_dp
     control = tol >= 0.0_dp .and. tol < huge(1.0_dp)
@@ -262,15 +260,9 @@ contains
     n_accepted = 0
     info%attempts = 0
     tangent = 0.0_dp
-    stiffness_scale = max(mat%kn, mat%kt) + max(mat%sigma0_n, mat%sigma0_t) * mat%inv_h_n
     chain_peak = 0.0_dp
     do while (alpha < 1.0_dp)
-      h = min(h, 1.0_dp - alpha)
-      a_end = alpha + h
-      if (a_end >= 1.0_dp - smallest_fraction) then
-        a_end = 1.0_dp
-        h = 1.0_dp - alpha
-      end if
+      call next_sub_increment(alpha, h, a_end)
       do i = 1, 3
         s_end(i) = constant(s_old(i) + a_end * ds(i))
         if (a_end >= 1.0_dp) s_end(i)%v = s(i)
@@ -278,13 +270,8 @@ contains
         s_start(i) = constant(cur_separation(cur, i))
         s_start(i)%d(i) = alpha
       end do
-      info%attempts = info%attempts + 1
-      if (info%attempts > solver%max_substeps) then
-        info%status = status_local_failure
-        write (info%message, '(a,i0,a)') 'substepping needed more than ', solver%max_substeps, &
-          ' sub-increments: retry with a smaller increment'
-        return
-      end if
+      call count_attempt(info, solver%max_substeps, allowed)
+      if (.not. allowed) return
       call ria_step(mat, az, solver, s_end, s_start, cur, planes, trial, planes_trial, sig, it, &
                     solved, .not. single, err)
       info%newton_iterations = max(info%newton_iterations, it)
@@ -296,21 +283,12 @@ contains
       stable = .true.
       if (solved .and. .not. single) stable = bounded(planes_trial, mat%n_planes)
       if (.not. (solved .and. stable)) then
-        h = 0.25_dp * h
-        if (h < smallest_fraction) then
-          info%status = status_local_failure
-          if (.not. solved) then
-            info%message = 'the local wear equation has no solution on any sub-increment: ' // &
-                           'retry with a smaller increment'
-          else
-            info%message = 'the update is unstable on small sub-increments (its derivative ' // &
-                           'grows without bound): use the implicit scheme or a smaller increment'
-          end if
-          return
-        end if
+        call after_failure(solved, h, info, give_up)
+        if (give_up) return
         cycle
       end if
-      if (.not. control .or. err <= tol .or. h <= smallest_controlled_fraction) then
+      kept = keep_trial(control, err, tol, h)
+      if (kept) then
         cur = trial
         planes(1:mat%n_planes) = planes_trial(1:mat%n_planes)
         do i = 1, 3
@@ -319,22 +297,11 @@ contains
         chain_peak = max(chain_peak, maxval(abs(tangent)))
         alpha = a_end
         n_accepted = n_accepted + 1
-        if (control) then
-          h = h * min(4.0_dp, max(1.0_dp, 0.9_dp * sqrt(tol / max(err, tiny(1.0_dp)))))
-        else
-          h = 2.0_dp * h
-        end if
-      else
-        h = h * max(0.1_dp, 0.9_dp * sqrt(tol / err))
       end if
-      h = scale(1.0_dp, exponent(h) - 1)
+      call next_size(kept, control, err, tol, h)
     end do
-    if (chain_peak > 1.0e6_dp * stiffness_scale) then
-      info%status = status_local_failure
-      info%message = 'the update is unstable on small sub-increments (its derivative grows ' // &
-                     'without bound): use the implicit scheme or a smaller increment'
-      return
-    end if
+    call check_chain(mat, chain_peak, info, allowed)
+    if (.not. allowed) return
     new = cur
     info%substeps = n_accepted
   end subroutine substep
