@@ -200,6 +200,41 @@ def finish(fig, axes, title, png):
     print(png)
 
 
+def plot_polar(paths, png):
+    """One polar figure of the peak (and residual) shear against the slip direction for
+    several direction sweeps, one curve per file (labelled by its RIA): how the direction
+    dependence of a RIA changes with its azimuths. Mirrored about t1 and t2 (the RIAs are
+    symmetric under s_T1 -> -s_T1 and s_T2 -> -s_T2) to a full turn."""
+    fig = plt.figure(figsize=(7.5, 7.5))
+    ax = fig.add_subplot(1, 1, 1, projection="polar")
+    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    for i, path in enumerate(paths):
+        sweep = direction_sweep(path)
+        if not sweep:
+            raise SystemExit(f"plot_history.py: {path} is not a sweep over the slip direction")
+        with h5py.File(path, "r") as f:
+            g = f["cases"][sorted(f["cases"])[0]]
+            ria = text(g.attrs.get("ria", ""))
+            n_a = g.attrs.get("n_azimuths", None)
+        label = ria + (f" N_a = {int(n_a)}" if ria == "azimuthal" and n_a is not None else "")
+        deg = np.array([r[0] for r in sweep])
+        peak = np.array([r[1] for r in sweep])
+        resid = np.array([r[2] for r in sweep])
+        full = np.concatenate([deg, 180.0 - deg[::-1], 180.0 + deg, 360.0 - deg[::-1]])
+        c = colors[i % len(colors)]
+        ax.plot(np.radians(full), np.concatenate([peak, peak[::-1], peak, peak[::-1]]), "-",
+                color=c, lw=1.6, label=f"{label}: peak")
+        ax.plot(np.radians(full), np.concatenate([resid, resid[::-1], resid, resid[::-1]]), ":",
+                color=c, lw=1.0, label=f"{label}: residual")
+    ax.set_title("shear traction $|\\sigma_T|$ [MPa] against the slip direction "
+                 "(deg from $t_1$)", fontsize=10)
+    ax.legend(fontsize=8, loc="lower left", bbox_to_anchor=(-0.1, -0.12))
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
+    print(png)
+
+
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("files", nargs="+", help="HDF5 files written by interlock-history")
@@ -207,7 +242,14 @@ def main(argv):
     parser.add_argument("--compare", help="HDF5 file or reference CSV to overlay")
     parser.add_argument("--axis", choices=["t1", "t2"],
                         help="3D files: traction and dilation against s_T1 or s_T2 (last leg)")
+    parser.add_argument("--polar", action="store_true",
+                        help="direction sweeps: one polar figure of all the files (needs -o)")
     args = parser.parse_args(argv)
+    if args.polar:
+        if not args.output:
+            parser.error("--polar needs -o PNG")
+        plot_polar(args.files, args.output)
+        return 0
     if args.output and len(args.files) > 1:
         parser.error("-o needs exactly one input file")
     for path in args.files:

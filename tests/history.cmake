@@ -171,6 +171,14 @@ add_test(NAME history_plot_3d
           ${history_out}/fig13.h5)
 set_tests_properties(history_plot_3d PROPERTIES LABELS history
   FIXTURES_REQUIRED "history_granite_3d_sweep_az3;history_granite_3d_circle;history_fig13")
+# The polar figure of several direction sweeps (docs/three-dimensions.md).
+add_test(NAME history_plot_polar
+  COMMAND ${INTERLOCK_TEST_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/plot_history.py --polar
+          ${history_out}/granite_3d_sweep_paper.h5 ${history_out}/granite_3d_sweep_az2.h5
+          ${history_out}/granite_3d_sweep_az3.h5 -o ${history_out}/granite_3d_polar.png)
+set_tests_properties(history_plot_polar PROPERTIES LABELS history
+  FIXTURES_REQUIRED "history_granite_3d_sweep_paper;history_granite_3d_sweep_az2;history_granite_3d_sweep_az3"
+  PASS_REGULAR_EXPRESSION "granite_3d_polar.png")
 add_test(NAME history_plot_3d_compare
   COMMAND ${INTERLOCK_TEST_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/plot_history.py
           ${history_out}/granite_3d_anisotropy.h5 --compare
