@@ -135,13 +135,16 @@ def grid_2d(levels, xs):
 
 def slip_path(path, increments, angle_deg=0.0, side=None, radius=None):
     """The slip (s_T1, s_T2) [mm] of the loaded face at the end of every increment of the slip
-    step, from (0, 0), as the interlock-history deck's paths (docs/deck-format.md): `square`
+    step, from (0, 0), as the interlock-history deck's paths (docs/deck-format.md): `straight`
+    SLIP along t1; `square`
     0 -> (a, 0) -> (a, a) -> (0, a) -> 0, `increments` / 4 per side; `circle` out to radius r,
     then one counter-clockwise turn, the increments shared in proportion to the lengths (r and
     2 pi r), every increment's end on the circle (a polyline of chords); both turned by
     angle_deg."""
     points = [(0.0, 0.0)]
-    if path == "square":
+    if path == "straight":
+        points += [(SLIP * k / increments, 0.0) for k in range(1, increments + 1)]
+    elif path == "square":
         if increments % 4:
             sys.exit(f"direct_shear: --increments {increments} with --path square: a multiple of 4")
         m = increments // 4
@@ -372,32 +375,40 @@ def convergence_lines(job):
     return lines
 
 
-def run(args):
-    out = pathlib.Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-    job = out / f"direct_shear_{args.element.lower()}_t{args.tangent}"
+def imposed_slip(args):
+    """The options checked; the slip at every increment end (C3D8 with imposed slip, else
+    None) and the path that the model imposes by amplitudes (None: straight)."""
     three_d = args.angle_deg or args.path != "straight" or args.ria != "paper"
     if three_d and (args.element != "C3D8" or args.shear_traction is not None):
         sys.exit("direct_shear: --angle-deg, --path and --ria azimuthal are for C3D8 with "
                  "imposed slip")
-    if args.ria == "azimuthal":
-        job = job.with_name(job.name + f"_azimuthal{args.n_azimuths}")
-    path = None
-    if args.path != "straight":
-        size = args.side if args.path == "square" else args.radius
-        path = slip_path(args.path, args.increments or 200, args.angle_deg, args.side,
-                         args.radius)
-        job = job.with_name(job.name + f"_{args.path}{round(size * 1000)}um")
-    elif args.increments:
+    if args.path == "straight" and args.increments:
         sys.exit("direct_shear: --increments is for --path square or circle (straight: "
                  f"{round(SLIP / INCREMENT)} increments)")
-    # the slip at every increment end, to check the layer's against (C3D8, imposed slip)
-    vertices = path
-    if vertices is None and args.element == "C3D8" and args.shear_traction is None:
-        n_inc = round(SLIP / INCREMENT)
-        a = math.radians(args.angle_deg)
-        vertices = [(SLIP * math.cos(a) * k / n_inc, SLIP * math.sin(a) * k / n_inc)
-                    for k in range(n_inc + 1)]
+    if args.increments is not None and args.increments < 4:
+        sys.exit(f"direct_shear: --increments {args.increments}: at least 4")
+    if not (args.side > 0.0 and args.radius > 0.0):
+        sys.exit(f"direct_shear: --side {args.side}, --radius {args.radius}: both > 0 mm")
+    if args.element != "C3D8" or args.shear_traction is not None:
+        return None, None
+    if args.path == "straight":
+        return slip_path("straight", round(SLIP / INCREMENT), args.angle_deg), None
+    vertices = slip_path(args.path, args.increments or 200, args.angle_deg, args.side,
+                         args.radius)
+    return vertices, vertices
+
+
+def run(args):
+    out = pathlib.Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    job = out / f"direct_shear_{args.element.lower()}_t{args.tangent}"
+    # the slip at every increment end, to check the layer's against
+    vertices, path = imposed_slip(args)
+    if args.ria == "azimuthal":
+        job = job.with_name(job.name + f"_azimuthal{args.n_azimuths}")
+    if path:
+        size = args.side if args.path == "square" else args.radius
+        job = job.with_name(job.name + f"_{args.path}{round(size * 1000)}um")
     if args.angle_deg:
         job = job.with_name(job.name + f"_{args.angle_deg:g}deg")
     force = None
@@ -569,12 +580,9 @@ def main():
     args = parser.parse_args()
     if args.command == "write":
         path = pathlib.Path(args.out) / f"direct_shear_{args.element.lower()}.inp"
-        shape = None
-        if args.path != "straight":
-            shape = slip_path(args.path, args.increments or 200, args.angle_deg, args.side,
-                              args.radius)
         path.write_text(model(args.element, args.tangent, angle_deg=args.angle_deg,
-                              ria=args.ria, n_azimuths=args.n_azimuths, path=shape))
+                              ria=args.ria, n_azimuths=args.n_azimuths,
+                              path=imposed_slip(args)[1]))
         print(path)
         return
     if not (args.ccx and args.history):
