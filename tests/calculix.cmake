@@ -4,8 +4,9 @@
 #  - direct shear in C3D8, CPE4 and CAX4: ccx's layer tractions and state per increment equal
 #    interlock-history's replay of the same separations (a 3D deck: ccx runs every layer
 #    through the 3D law) to 1e-5 (relative), for the exact tangent (1) and the symmetric one
-#    (2); C3D8 also with the slip at 45 deg between the in-plane axes; the runs' iterations
-#    and residuals are written to <build>/tests/calculix/*_convergence.txt;
+#    (2); C3D8 also with the slip at 45 and 90 deg between the in-plane axes, along a square
+#    and a circle, on the paper's and the azimuthal RIA; the runs' iterations and residuals
+#    are written to <build>/tests/calculix/*_convergence.txt;
 #  - shear by force on a debonded interface with the symmetric tangent reaches the full load.
 set(INTERLOCK_CCX "" CACHE FILEPATH "ccx built with interlock's umat (scripts/build_calculix.sh)")
 if(INTERLOCK_CCX AND TARGET interlock-history)
@@ -40,20 +41,36 @@ if(INTERLOCK_CCX AND TARGET interlock-history)
         FAIL_REGULAR_EXPRESSION "FAIL|Traceback")
     endforeach()
   endforeach()
-  # C3D8, slip at 45 deg between the layer's in-plane axes (both shear components through the
-  # 3D law): the layer's tractions equal interlock-history's 3D replay of its separations
-  # (s_N, s_T1, s_T2) to 1e-5; the state to 5e-5 (ccx prints the separations with 7 digits, and
-  # a friction traction K_t (s - sf) replayed from them carries K_t times that rounding).
-  foreach(tangent 1 2)
-    add_test(NAME calculix_direct_shear_C3D8_45deg_tangent${tangent}
-      COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/examples/calculix/direct_shear/direct_shear.py
-              run --element C3D8 --tangent ${tangent} --angle-deg 45 --state-tolerance 5e-5
-              --ccx ${INTERLOCK_CCX} --history $<TARGET_FILE:interlock-history> --out ${calculix_work})
-    set_tests_properties(calculix_direct_shear_C3D8_45deg_tangent${tangent} PROPERTIES
-      LABELS calculix TIMEOUT 300 FIXTURES_REQUIRED calculix_binary
-      PASS_REGULAR_EXPRESSION "agrees with interlock-history to 1e-05"
-      FAIL_REGULAR_EXPRESSION "FAIL|Traceback")
-  endforeach()
+  # C3D8, the slip in the layer's plane (both shear components through the 3D law): straight at
+  # 45 and 90 deg to t1 (0 deg: calculix_direct_shear_C3D8_tangent<1|2> above), a square
+  # (side 0.75 mm) and a circle (radius 0.5 mm, one turn) in 200 fixed increments, on the
+  # paper's RIA and on the azimuthal RIA with N_a = 3 (7 planes, *DEPVAR 66); the tangent
+  # option 1 throughout, 2 as well for one case of each path kind. The layer's tractions equal
+  # interlock-history's 3D replay of its separations (s_N, s_T1, s_T2) to 1e-5; the state to
+  # 5e-5 (ccx prints the separations with 7 digits, and a friction traction K_t (s - sf)
+  # replayed from them carries K_t times that rounding: 1.7e-5 seen at 45 deg); the layer's
+  # slip follows the imposed path (within twice the blocks' elastic shear).
+  function(calculix_direct_shear_3d name tangents)
+    foreach(tangent ${tangents})
+      add_test(NAME calculix_direct_shear_C3D8_${name}_tangent${tangent}
+        COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/examples/calculix/direct_shear/direct_shear.py
+                run --element C3D8 --tangent ${tangent} ${ARGN} --state-tolerance 5e-5
+                --ccx ${INTERLOCK_CCX} --history $<TARGET_FILE:interlock-history> --out ${calculix_work})
+      set_tests_properties(calculix_direct_shear_C3D8_${name}_tangent${tangent} PROPERTIES
+        LABELS calculix TIMEOUT 300 FIXTURES_REQUIRED calculix_binary
+        PASS_REGULAR_EXPRESSION "agrees with interlock-history to 1e-05"
+        FAIL_REGULAR_EXPRESSION "FAIL|Traceback")
+    endforeach()
+  endfunction()
+  calculix_direct_shear_3d(45deg "1;2" --angle-deg 45)
+  calculix_direct_shear_3d(90deg 1 --angle-deg 90)
+  calculix_direct_shear_3d(square "1;2" --path square)
+  calculix_direct_shear_3d(circle "1;2" --path circle)
+  calculix_direct_shear_3d(azimuthal3_0deg 1 --ria azimuthal --n-azimuths 3)
+  calculix_direct_shear_3d(azimuthal3_45deg "1;2" --ria azimuthal --n-azimuths 3 --angle-deg 45)
+  calculix_direct_shear_3d(azimuthal3_90deg 1 --ria azimuthal --n-azimuths 3 --angle-deg 90)
+  calculix_direct_shear_3d(azimuthal3_square "1;2" --ria azimuthal --n-azimuths 3 --path square)
+  calculix_direct_shear_3d(azimuthal3_circle "1;2" --ria azimuthal --n-azimuths 3 --path circle)
   # Shear by force on a fully debonded interface (friction and interlocking only): with the
   # symmetric tangent ccx reaches the full load; with the exact one (which ccx symmetrizes) it
   # stops at 61-73 % (docs/calculix.md). A guard for the option.
