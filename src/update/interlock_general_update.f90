@@ -21,7 +21,7 @@ module interlock_general_update
       keep_trial, next_size, check_chain
   implicit none
   private
-  public :: general_update, kernel_update
+  public :: general_update, kernel_update, largest_increments
 
 
 contains

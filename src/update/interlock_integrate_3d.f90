@@ -23,6 +23,7 @@ module interlock_integrate_3d
   use interlock_plane_law_3d, only: plane_dual_t, plane_response_3d_t, plane_law_3d, &
       plane_angle_frame, worn_angle_3d, start_pressure_3d, azimuths_t, azimuths_of
   use interlock_integrate, only: interlock_update
+  use interlock_general_update, only: largest_increments
   use interlock_substep_control, only: next_sub_increment, count_attempt, after_failure, &
       keep_trial, next_size, check_chain
   implicit none
@@ -157,7 +158,6 @@ contains
     real(dp), intent(out) :: sigma(3), tangent(3, 3)
     type(interlock_info_t), intent(inout) :: info
     type(azimuths_t) :: az
-    integer :: k
 
     if (.not. mat%prepared) then
       call fail(old, new, sigma, tangent, info, status_bad_input, &
@@ -200,12 +200,7 @@ contains
                 'the traction or tangent is not finite: retry with a smaller increment')
       return
     end if
-    info%max_damage_increment = new%damage(1) - old%damage(1)
-    info%max_angle_increment = abs(new%theta(1) - old%theta(1))
-    do k = 2, mat%n_planes
-      info%max_damage_increment = max(info%max_damage_increment, new%damage(k) - old%damage(k))
-      info%max_angle_increment = max(info%max_angle_increment, abs(new%theta(k) - old%theta(k)))
-    end do
+    call largest_increments(mat%n_planes, old%interlock_state_t, new%interlock_state_t, info)
   end subroutine general_update_3d
 
   !> Report a failure: `new` = `old`, the traction at the start, no tangent.
