@@ -10,8 +10,8 @@ module interlock_dual
   use interlock_kinds, only: dp
   implicit none
   private
-  public :: dual_t, n_dual, dual, constant, operator(+), operator(-), operator(*), operator(/)
-  public :: sqrt, exp, cos, sin, abs, max, min, dot3
+  public :: dual_t, n_dual, constant, operator(+), operator(-), operator(*), operator(/)
+  public :: sqrt, exp, cos, sin, abs, max, min
 
   integer, parameter :: n_dual = 4
 
@@ -58,27 +58,13 @@ module interlock_dual
 
 contains
 
-  !> The independent variable i (1..n_dual) at value v; i = 0: a constant.
-  elemental type(dual_t) function dual(v, i) result(r)
-    real(dp), intent(in) :: v
-    integer, intent(in) :: i
-    r%v = v
-    r%d = 0.0_dp
-    if (i >= 1 .and. i <= n_dual) r%d(i) = 1.0_dp
-  end function dual
-
+  !> A number without derivatives (a constant, or the start of an independent variable whose
+  !> derivative column the caller sets).
   elemental type(dual_t) function constant(v) result(r)
     real(dp), intent(in) :: v
     r%v = v
     r%d = 0.0_dp
   end function constant
-
-  pure type(dual_t) function dot3(a, b) result(r)
-    real(dp), intent(in) :: a(3)
-    type(dual_t), intent(in) :: b(3)
-    r%v = a(1) * b(1)%v + a(2) * b(2)%v + a(3) * b(3)%v
-    r%d = a(1) * b(1)%d + a(2) * b(2)%d + a(3) * b(3)%d
-  end function dot3
 
   elemental type(dual_t) function add_dd(a, b) result(r)
     type(dual_t), intent(in) :: a, b
