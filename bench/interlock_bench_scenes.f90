@@ -5,7 +5,8 @@
 module interlock_bench_scenes
   use interlock, only: dp, deg_to_rad, interlock_material_t, interlock_solver_t, &
       interlock_state_t, interlock_info_t, interlock_update, interlock_state_init, &
-      interlock_material_prepare, interlock_paper_ria, status_ok, is_nan_value, same_value, &
+      interlock_material_prepare, interlock_paper_ria, interlock_general_ria, status_ok, &
+      is_nan_value, same_value, &
       scheme_implicit
   implicit none
   private
@@ -293,11 +294,7 @@ contains
     if (iset >= 3) then
       call interlock_paper_ria(mat, 30.0_dp * deg_to_rad, 30.0_dp * deg_to_rad, huge(1.0_dp))
     else
-      mat%n_planes = 1
-      mat%gamma_hat(1) = 1.0_dp
-      mat%theta0(1) = 0.0_dp
-      mat%thetaf(1) = 0.0_dp
-      mat%zeta0(1) = huge(1.0_dp)
+      call interlock_general_ria(mat, 1, [1.0_dp], [0.0_dp], [0.0_dp])
     end if
     if (iset >= 4) mat%h_n = 1.0_dp
     if (iset >= 5) call interlock_paper_ria(mat, 30.0_dp * deg_to_rad, 7.0_dp * deg_to_rad, 1.0_dp)

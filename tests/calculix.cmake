@@ -71,6 +71,8 @@ if(INTERLOCK_CCX AND TARGET interlock-history)
   calculix_direct_shear_3d(azimuthal3_90deg 1 --ria azimuthal --n-azimuths 3 --angle-deg 90)
   calculix_direct_shear_3d(azimuthal3_square "1;2" --ria azimuthal --n-azimuths 3 --path square)
   calculix_direct_shear_3d(azimuthal3_circle "1;2" --ria azimuthal --n-azimuths 3 --path circle)
+  # the largest RIA a material holds: N_a = 6, 13 planes, *DEPVAR 114
+  calculix_direct_shear_3d(azimuthal6_45deg 1 --ria azimuthal --n-azimuths 6 --angle-deg 45)
   # Shear by force on a fully debonded interface (friction and interlocking only): with the
   # symmetric tangent ccx reaches the full load; with the exact one (which ccx symmetrizes) it
   # stops at 61-73 % (docs/calculix.md). A guard for the option.

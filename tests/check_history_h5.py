@@ -111,7 +111,7 @@ def check_file(path, allow_stopped):
             if text(g.attrs.get("sweep_parameter", "")) and "sweep_value" not in g.attrs:
                 errors.append(f"{where}: a sweep without 'sweep_value'")
             n_planes = int(g.attrs.get("n_planes", 0))
-            if not 1 <= n_planes <= 8:
+            if not 1 <= n_planes <= 13:
                 errors.append(f"{where}: n_planes = {n_planes}")
             # A 3D case (SPEC section 9) says so: the frame, N, T1, T2 columns; a 2D case has
             # none of its attributes and datasets.

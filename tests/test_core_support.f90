@@ -85,10 +85,7 @@ contains
     mat%eta = 0.9_dp
     mat%mu = mu
     mat%h_n = h_n
-    mat%n_planes = 1
-    mat%gamma_hat(1) = 1.0_dp
-    mat%theta0(1) = 0.0_dp
-    mat%thetaf(1) = 0.0_dp
+    call interlock_general_ria(mat, 1, [1.0_dp], [0.0_dp], [0.0_dp])
     call prepare_or_fail(mat)
   end subroutine flat_material
 

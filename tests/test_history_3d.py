@@ -22,6 +22,13 @@ MODE
                traction, every per-plane dataset) within 1e-14 of each dataset's largest value,
                with sigma_T2, sf_strike and tauf_strike exactly 0; paper RIA with wear, a
                general RIA, the implicit and trapezoidal schemes.
+  sweep        the shipped direction sweeps (inputs/granite_3d_sweep_{paper,az2,az3,az6}.nml)
+               against the figures of SPEC section 9's independent implementation (granite,
+               sigma_N = -1.5 MPa): paper peak shear 2.89 MPa along t1 and 1.13 MPa along t2
+               (+-0.01 MPa: 3 digits quoted), a traction across the slip up to 0.75 MPa at 45 deg
+               (+-0.01), and the spread of the peak over the directions, (max - min) / max,
+               about 4 %, 7 % and 1.6 % at N_a = 2, 3, 6 (+-0.5, +-0.5 and +-0.2 points: the
+               quoted digits); the spread falls from N_a = 3 to 6.
   layout       a 2D deck's HDF5 layout (datasets, shapes, dtypes, chunks, attributes with their
                values) is the stored one (tests/data/layout, written by the program before it
                knew three dimensions).
@@ -223,6 +230,57 @@ def mode_reduction(program, work):
     return failures
 
 
+def sweep_peaks(h5):
+    """[(angle_deg, peak |sigma_T|, peak |traction across the slip|)] of a direction sweep."""
+    rows = []
+    with h5py.File(h5, "r") as f:
+        for name in sorted(f["cases"]):
+            g = f["cases"][name]
+            a = float(g.attrs["sweep_value"])
+            tr = g["traction"][()]
+            across = -math.sin(math.radians(a)) * tr[:, 1] + math.cos(math.radians(a)) * tr[:, 2]
+            rows.append((a, float(np.max(np.hypot(tr[:, 1], tr[:, 2]))),
+                         float(np.max(np.abs(across)))))
+    return rows
+
+
+def mode_sweep(program, work):
+    inputs = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "inputs")
+    failures = 0
+
+    def check(ok, text):
+        nonlocal failures
+        failures += not ok
+        print(f"{'ok  ' if ok else 'FAIL'} {text}")
+
+    spreads = {}
+    for ria, quoted, tol in (("paper", None, None), ("az2", 4.0, 0.5), ("az3", 7.0, 0.5),
+                             ("az6", 1.6, 0.2)):
+        deck = os.path.join(inputs, f"granite_3d_sweep_{ria}.nml")
+        with open(deck) as f:
+            h5 = run(program, os.path.join(work, os.path.basename(deck)), f.read(), work)
+        rows = sweep_peaks(h5)
+        peaks = [r[1] for r in rows]
+        spread = 100.0 * (max(peaks) - min(peaks)) / max(peaks)
+        spreads[ria] = spread
+        print(f"     {ria}: {len(rows)} directions, peak {min(peaks):.3f}..{max(peaks):.3f} MPa, "
+              f"spread {spread:.2f} %")
+        if ria == "paper":
+            by_angle = {round(r[0], 6): r for r in rows}
+            check(abs(by_angle[0.0][1] - 2.89) <= 0.01,
+                  f"paper: peak along t1 {by_angle[0.0][1]:.4f} MPa (2.89)")
+            check(abs(by_angle[90.0][1] - 1.13) <= 0.01,
+                  f"paper: peak along t2 {by_angle[90.0][1]:.4f} MPa (1.13)")
+            check(abs(by_angle[45.0][2] - 0.75) <= 0.01,
+                  f"paper: traction across the slip at 45 deg up to {by_angle[45.0][2]:.4f} MPa "
+                  f"(0.75)")
+        else:
+            check(abs(spread - quoted) <= tol,
+                  f"{ria}: spread {spread:.2f} % ({quoted} +- {tol})")
+    check(spreads["az6"] < spreads["az3"], "the spread falls from N_a = 3 to 6")
+    return failures
+
+
 def mode_layout(program, data, work):
     failures = 0
     folder = os.path.join(data, "layout")
@@ -260,6 +318,8 @@ def main(argv):
         failures = mode_reduction(program, work)
     elif mode == "layout":
         failures = mode_layout(program, data, work)
+    elif mode == "sweep":
+        failures = mode_sweep(program, work)
     else:
         print(__doc__)
         return 2

@@ -247,13 +247,10 @@ contains
     case (1)
       call interlock_paper_ria(mat, th0, thf, z0)
     case (2)
-      mat%n_planes = 1
-      mat%gamma_hat(1) = 1.0_dp
-      mat%theta0(1) = th0
-      mat%thetaf(1) = thf
-      mat%zeta0(1) = z0
+      call interlock_general_ria(mat, 1, [1.0_dp], [th0], [thf], [z0])
     case default
       mat%n_planes = 4
+      mat%phi(1:4) = 0.0_dp
       mat%gamma_hat(1:4) = [0.1_dp, 0.2_dp, 0.3_dp, 0.4_dp]
       mat%theta0(1:4) = th0 * [-1.0_dp, -0.3_dp, 0.6_dp, 1.0_dp]
       mat%thetaf(1:4) = thf * [-1.0_dp, -0.3_dp, 0.6_dp, 1.0_dp]
@@ -491,8 +488,7 @@ contains
     mat%gc = 0.3_dp
     mat%eta = 0.9_dp
     mat%mu = 0.5_dp
-    mat%n_planes = 1
-    mat%gamma_hat(1) = 1.0_dp
+    call interlock_general_ria(mat, 1, [1.0_dp], [0.0_dp], [0.0_dp])
     call interlock_material_prepare(mat, stat, message)
     call assert_equal(status_ok, stat, 'prepare')
     p = 0.2_dp

@@ -174,6 +174,7 @@ contains
     d%mat%theta0 = theta0_deg * deg_to_rad
     d%mat%thetaf = thetaf_deg * deg_to_rad
     d%mat%zeta0 = zeta0
+    d%mat%phi = 0.0_dp
   end subroutine read_microplanes
 
   subroutine read_effects(u, d, ios)

@@ -12,7 +12,7 @@ module interlock
   use interlock_material_table
   use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, &
       max_azimuths, interlock_material_prepare, interlock_paper_ria, &
-      interlock_azimuthal_ria, scheme_explicit, scheme_implicit, &
+      interlock_azimuthal_ria, interlock_general_ria, scheme_explicit, scheme_implicit, &
       scheme_trapezoidal, scheme_name, effect_damage, effect_friction, effect_interlocking, &
       effect_finite_depth, effect_wear, effect_names, n_effects, kernel_general, kernel_flat, &
       kernel_inclined, kernel_cohesive

@@ -10,7 +10,8 @@
 module interlock_deck
   use interlock, only: dp, deg_to_rad, pi, max_planes, max_azimuths, n_effects, &
       interlock_material_t, interlock_solver_t, interlock_state_t, interlock_state_init, &
-      interlock_material_prepare, interlock_paper_ria, interlock_azimuthal_ria, scheme_explicit, scheme_implicit, &
+      interlock_material_prepare, interlock_paper_ria, interlock_azimuthal_ria, &
+      interlock_general_ria, scheme_explicit, scheme_implicit, &
       scheme_trapezoidal, properties, property_index, check_property, format_range, &
       format_integer, format_real, &
       prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
@@ -396,12 +397,14 @@ contains
                                d%zeta0(1))
     else
       n = d%n_planes
-      mat%n_planes = n
-      mat%gamma_hat(1:n) = d%gamma_hat(1:n)
-      mat%theta0(1:n) = d%theta0_deg(1:n) * deg_to_rad
-      mat%thetaf(1:n) = d%thetaf_deg(1:n) * deg_to_rad
-      mat%zeta0(1:n) = d%zeta0(1:n)
-      if (deck%azimuths_given) mat%phi(1:n) = deck%phi_deg(1:n) * deg_to_rad
+      if (deck%azimuths_given) then
+        call interlock_general_ria(mat, n, d%gamma_hat(1:n), d%theta0_deg(1:n) * deg_to_rad, &
+                                   d%thetaf_deg(1:n) * deg_to_rad, d%zeta0(1:n), &
+                                   deck%phi_deg(1:n) * deg_to_rad)
+      else
+        call interlock_general_ria(mat, n, d%gamma_hat(1:n), d%theta0_deg(1:n) * deg_to_rad, &
+                                   d%thetaf_deg(1:n) * deg_to_rad, d%zeta0(1:n))
+      end if
     end if
     why = scale_check(mat)
     if (len_trim(why) == 0) call interlock_material_prepare(mat, stat, why)

@@ -26,7 +26,7 @@ module interlock_deck_checks
     character(len=24) :: name
     character(len=72) :: what
   end type var_t
-  character(len=*), parameter :: real_list = 'real numbers, one per microplane (at most 8)'
+  character(len=*), parameter :: real_list = 'real numbers, one per microplane (at most 13)'
   type(var_t), parameter :: deck_vars(*) = [ &
     var_t(1, 'sigma0_n', 'a real number [MPa]'), var_t(1, 'sigma0_t', 'a real number [MPa]'), &
     var_t(1, 'gc', 'a real number [N/mm]'), var_t(1, 'eta', 'a real number [-]'), &
@@ -34,7 +34,7 @@ module interlock_deck_checks
     var_t(1, 'prefractured', 'a logical (.true. or .false.)'), &
     var_t(2, 'theta0_deg', real_list // ' [deg]'), var_t(2, 'thetaf_deg', real_list // ' [deg]'), &
     var_t(2, 'zeta0', real_list // ' [N/mm] (or Inf)'), &
-    var_t(2, 'n_planes', 'an integer (1 to 8)'), var_t(2, 'gamma_hat', real_list // ' [-]'), &
+    var_t(2, 'n_planes', 'an integer (1 to 13)'), var_t(2, 'gamma_hat', real_list // ' [-]'), &
     var_t(3, 'damage', 'a logical (.true. or .false.)'), &
     var_t(3, 'friction', 'a logical (.true. or .false.)'), &
     var_t(3, 'interlocking', 'a logical (.true. or .false.)'), &
@@ -64,7 +64,7 @@ module interlock_deck_checks
     var_t(8, 'title', 'a quoted string (at most 1024 characters)'), &
     var_t(8, 'every', 'an integer (1 to 2000000)'), &
     var_t(8, 'store', "a quoted string: 'all', 'curves' or a list of dataset names"), &
-    var_t(2, 'n_azimuths', 'an integer (1 to 3): the azimuthal RIA'), &
+    var_t(2, 'n_azimuths', 'an integer (1 to 6): the azimuthal RIA'), &
     var_t(2, 'phi_deg', real_list // ' [deg]'), &
     var_t(4, 't2_control', "a quoted string: 'traction' or 'separation'"), &
     var_t(4, 't2', 'real numbers, one per point (at most 10001) [MPa or mm]'), &

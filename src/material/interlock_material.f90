@@ -11,7 +11,8 @@ module interlock_material
   private
   public :: interlock_material_t, interlock_solver_t, max_planes, max_azimuths
   public :: interlock_material_prepare, interlock_paper_ria, interlock_azimuthal_ria, &
-            interlock_material_derive, interlock_paper_material_derive, derived_range_message
+            interlock_general_ria, interlock_material_derive, interlock_paper_material_derive, &
+            derived_range_message
   public :: scheme_explicit, scheme_implicit, scheme_trapezoidal, scheme_name, n_schemes, &
             scheme_names, scheme_list
   public :: effect_damage, effect_friction, effect_interlocking, effect_finite_depth, effect_wear
@@ -20,9 +21,9 @@ module interlock_material
 
   !> Planes of a RIA (the `azimuthal` RIA of SPEC section 9 has 1 + 2 N_a planes). Every
   !> point's material and state hold this many (the UMAT builds them on every call).
-  integer, parameter :: max_planes = 8
+  integer, parameter :: max_planes = 13
   !> The largest number of azimuths of interlock_azimuthal_ria (1 + 2 N_a <= max_planes).
-  integer, parameter :: max_azimuths = 3
+  integer, parameter :: max_azimuths = 6
   !> Integration schemes (SPEC section 5, D11): the paper's explicit one, backward Euler, and
   !> the trapezoidal rule on the wear equation (second order, consistent at a zero increment).
   integer, parameter :: scheme_explicit = 1, scheme_implicit = 2, scheme_trapezoidal = 3
@@ -55,14 +56,19 @@ module interlock_material
     real(dp) :: mu = 0.0_dp         !< friction coefficient [-]
     real(dp) :: h_n = huge(1.0_dp)  !< asperity depth [mm]; infinite by default
     logical  :: prefractured = .false.
+    !> The RIA: planes 1..n_planes, each with all five values below. They have no default
+    !> value (a default would cost every UMAT call, which declares its material anew, a
+    !> component-wise copy of the whole material); interlock_paper_ria,
+    !> interlock_azimuthal_ria and interlock_general_ria set them all. Values beyond n_planes
+    !> are never read.
     integer  :: n_planes = 0
-    real(dp) :: gamma_hat(max_planes) = 0.0_dp  !< area fractions, sum 1
-    real(dp) :: theta0(max_planes) = 0.0_dp     !< initial inclinations [rad]
-    real(dp) :: thetaf(max_planes) = 0.0_dp     !< final inclinations [rad]
-    real(dp) :: zeta0(max_planes) = huge(1.0_dp) !< wear energy scales [N/mm]
+    real(dp) :: gamma_hat(max_planes)  !< area fractions, sum 1
+    real(dp) :: theta0(max_planes)     !< initial inclinations [rad]
+    real(dp) :: thetaf(max_planes)     !< final inclinations [rad]
+    real(dp) :: zeta0(max_planes)      !< wear energy scales [N/mm]; huge(1.0_dp): no wear
     !> azimuths [rad] (SPEC section 9): plane k dips along cos(phi) t1 + sin(phi) t2; they
     !> matter only to the three-dimensional update
-    real(dp) :: phi(max_planes) = 0.0_dp
+    real(dp) :: phi(max_planes)
     logical  :: effect(n_effects) = .true.       !< user switches, see effect_*
     ! --- derived by interlock_material_prepare (interlock_material_derive sets every one;
     ! no default value, so that a material declared on every call, the UMAT's, is not filled
@@ -151,6 +157,27 @@ contains
     mat%zeta0(1:3) = [zeta0, huge(1.0_dp), zeta0]
     mat%phi = 0.0_dp
   end subroutine interlock_paper_ria
+
+  !> A general RIA of n_planes = n planes (n <= max_planes; interlock_material_prepare checks
+  !> n and every value): area fractions, initial and final inclinations [rad], and optionally
+  !> the wear energy scales [N/mm] (default huge(1.0_dp): no plane wears) and the azimuths
+  !> [rad] (default 0: every plane dips along t1).
+  pure subroutine interlock_general_ria(mat, n, gamma_hat, theta0, thetaf, zeta0, phi)
+    type(interlock_material_t), intent(inout) :: mat
+    integer, intent(in) :: n
+    real(dp), intent(in) :: gamma_hat(n), theta0(n), thetaf(n)
+    real(dp), intent(in), optional :: zeta0(n), phi(n)
+    integer :: m
+    mat%n_planes = n
+    m = max(0, min(n, max_planes))
+    mat%gamma_hat(1:m) = gamma_hat(1:m)
+    mat%theta0(1:m) = theta0(1:m)
+    mat%thetaf(1:m) = thetaf(1:m)
+    mat%zeta0(1:m) = huge(1.0_dp)
+    if (present(zeta0)) mat%zeta0(1:m) = zeta0(1:m)
+    mat%phi(1:m) = 0.0_dp
+    if (present(phi)) mat%phi(1:m) = phi(1:m)
+  end subroutine interlock_general_ria
 
   !> The `azimuthal` RIA of SPEC section 9 with n_azimuths = N_a directions (1 <= N_a <=
   !> max_azimuths; the caller checks): the planes (phi_0, -theta_0), flat, (phi_0, +theta_0),
@@ -312,9 +339,9 @@ contains
 
   !> interlock_paper_ria and interlock_material_derive in one (the same values to the bit), for
   !> the UMAT, which builds its material on every call: the three planes written out, one sine
-  !> and cosine, no loop over the planes. `mat` must be fresh (declared without a value: the
-  !> given per-plane values beyond the third keep their defaults, as interlock_paper_ria sets
-  !> them); its scalar given parameters and switches are set. Angles in radians.
+  !> and cosine, no loop over the planes (the given per-plane values beyond the third are
+  !> left as they are: never read). Its scalar given parameters and switches must be set.
+  !> Angles in radians.
   pure subroutine interlock_paper_material_derive(mat, theta0, thetaf, zeta0, stat, message)
     type(interlock_material_t), intent(inout) :: mat
     real(dp), intent(in) :: theta0, thetaf, zeta0
@@ -327,6 +354,7 @@ contains
     mat%theta0(1:3) = [-theta0, 0.0_dp, theta0]
     mat%thetaf(1:3) = [-thetaf, 0.0_dp, thetaf]
     mat%zeta0(1:3) = [zeta0, huge(1.0_dp), zeta0]
+    mat%phi(1:3) = 0.0_dp
     mat%prepared = .false.
     mat%kernel = kernel_general
     stat = status_bad_input

@@ -146,7 +146,7 @@ module interlock_material_table
     ! (upper bound: interlock_material's max_azimuths, which this module cannot use; umat_3d
     ! checks that they agree)
     property_t('n_azimuths', 'N_a', '-', '3d', kind_choice, .false., 3.0_dp, &
-               1.0_dp, .false., 3.0_dp, .false., .false., &
+               1.0_dp, .false., 6.0_dp, .false., .false., &
                'ria = 1: dip directions pi j / N_a, j < N_a: planes 1 + 2 N_a (N_a = 1: paper)') ]
 
   !> The columns of the table that property_ok compares with, as plain arrays.

@@ -550,6 +550,7 @@ contains
           g(k) = 0.05_dp + rng_uniform(rng)
         end do
         mat%gamma_hat = 0.0_dp
+        mat%phi = 0.0_dp
         mat%gamma_hat(1:n) = g(1:n) / sum(g(1:n))
         mat%gamma_hat(n) = 1.0_dp - sum(mat%gamma_hat(1:n - 1))
         do k = 1, n

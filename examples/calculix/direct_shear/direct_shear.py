@@ -310,26 +310,35 @@ def model(element, tangent, shear_force=None, prefractured=0, angle_deg=0.0, ria
 
 # ---------------------------------------------------------------- reading ccx's output
 def read_dat_sdv(path):
-    """{(element, point): [row of SDV per printed increment]} and the step times."""
+    """{(element, point): [row of SDV per printed increment]} and the step times. ccx prints
+    a point's values on one line, wrapped on continuation lines when there are many (over
+    100: the 13-plane RIA's 114)."""
     rows, times = {}, []
-    block = False
+    block, key = False, None
     for line in path.read_text().splitlines():
         m = re.match(r"\s*internal state variables \(elem, integ\.pnt\.,values\) for set "
                      r"(\S+) and time\s+(\S+)", line)
         if m:
-            block = True
+            block, key = True, None
             times.append(float(m.group(2)))
             continue
         if block:
             parts = line.split()
             if not parts:
                 continue
+            if re.fullmatch(r"\d+", parts[0]) and len(parts) > 1 and re.fullmatch(r"\d+", parts[1]):
+                key = (int(parts[0]), int(parts[1]))
+                rows.setdefault(key, []).append([float(v) for v in parts[2:]])
+                continue
             try:
-                e, p = int(parts[0]), int(parts[1])
+                values = [float(v) for v in parts]
             except ValueError:
+                block, key = False, None
+                continue
+            if key is None:
                 block = False
                 continue
-            rows.setdefault((e, p), []).append([float(v) for v in parts[2:]])
+            rows[key][-1].extend(values)
     return rows, times
 
 
@@ -573,7 +582,7 @@ def main():
                              "(default 200)")
     parser.add_argument("--ria", choices=["paper", "azimuthal"], default="paper",
                         help="C3D8: the RIA (layer PROPS 25 `ria`)")
-    parser.add_argument("--n-azimuths", type=int, default=3, choices=[1, 2, 3],
+    parser.add_argument("--n-azimuths", type=int, default=3, choices=range(1, 7),
                         help="--ria azimuthal: N_a (layer PROPS 26), 1 + 2 N_a planes")
     parser.add_argument("--prefractured", action="store_true",
                         help="the interface fully debonded from the start (D = 1)")
