@@ -29,6 +29,12 @@ MODE
                (+-0.01), and the spread of the peak over the directions, (max - min) / max,
                about 4 %, 7 % and 1.6 % at N_a = 2, 3, 6 (+-0.5, +-0.5 and +-0.2 points: the
                quoted digits); the spread falls from N_a = 3 to 6.
+  restart      a 3D history restarted from one of its rows (&initial_state with every per-plane
+               dataset, the strike components sf_strike and tauf_strike, and the three
+               separations and tractions, as a replay deck gives them) continues it: the rows
+               after agree within 1e-12 of each dataset's largest value (the restart's path
+               points are rounded differently); restarted without the strike components it
+               does not (> 1e-3): they are read and they matter.
   layout       a 2D deck's HDF5 layout (datasets, shapes, dtypes, chunks, attributes with their
                values) is the stored one (tests/data/layout, written by the program before it
                knew three dimensions).
@@ -281,6 +287,55 @@ def mode_sweep(program, work):
     return failures
 
 
+RESTART_PLANES = ("damage", "beta", "frictional_slip", "zeta", "theta", "friction_traction",
+                  "sf_strike", "tauf_strike")
+
+
+def mode_restart(program, work):
+    granite = ("&interface\n  sigma0_n = 0.025, sigma0_t = 0.025, gc = 0.0005, eta = 0.99, "
+               "mu = 0.6898538, h_n = 4.0\n/\n&microplanes\n  theta0_deg = 30.0, "
+               "thetaf_deg = 9.0, zeta0 = 6.666, n_azimuths = 3\n/\n&output\n  store = 'all'\n/\n")
+    control = ("  normal_control = 'traction', tangential_control = 'separation', "
+               "t2_control = 'separation'\n")
+    deck = (granite + "&loading\n" + control + "  times = 0.0, 1.0, 2.0\n"
+            "  normal = 0.0, -1.5, -1.5\n  tangential = 0.0, 0.0, 0.8\n  t2 = 0.0, 0.0, 0.5\n"
+            "  steps = 1, 40\n/\n")
+    h5 = run(program, os.path.join(work, "restart_whole.nml"), deck, work)
+    with h5py.File(h5, "r") as f:
+        g = f["cases"]["0001"]
+        whole = {k: g[k][()] for k in RESTART_PLANES + ("separation", "traction")}
+    k = 20   # the row after step 21: halfway along the oblique segment
+    failures = 0
+    for with_strike in (True, False):
+        lines = []
+        for name in RESTART_PLANES:
+            values = whole[name][k] if with_strike or "strike" not in name else 0 * whole[name][k]
+            lines.append(f"  {name} = " + ", ".join(repr(float(v)) for v in values))
+        for name in ("separation", "traction"):
+            lines.append(f"  {name} = " + ", ".join(repr(float(v)) for v in whole[name][k]))
+        sep = whole["separation"][k]
+        deck = (granite + "&initial_state\n" + "\n".join(lines) + "\n/\n&loading\n" + control +
+                "  times = 0.0, 1.0\n  normal = -1.5, -1.5\n"
+                f"  tangential = {float(sep[1])!r}, 0.8\n  t2 = {float(sep[2])!r}, 0.5\n"
+                "  steps = 20\n/\n")
+        name = "restart_part" if with_strike else "restart_part_no_strike"
+        h5 = run(program, os.path.join(work, name + ".nml"), deck, work)
+        worst = 0.0
+        with h5py.File(h5, "r") as f:
+            g = f["cases"]["0001"]
+            for q in RESTART_PLANES + ("separation", "traction"):
+                a, b = g[q][()], whole[q][k + 1:]
+                scale = max(np.max(np.abs(whole[q])), 1e-300)
+                worst = max(worst, float(np.max(np.abs(a - b))) / scale)
+        ok = worst <= 1e-12 if with_strike else worst > 1e-3
+        failures += not ok
+        print(f"{'ok  ' if ok else 'FAIL'} restart from row {k + 1} "
+              f"{'with' if with_strike else 'without'} the strike components: rows after "
+              f"within {worst:.1e} of each dataset's largest value "
+              f"({'<= 1e-12' if with_strike else '> 1e-3: they matter'})")
+    return failures
+
+
 def mode_layout(program, data, work):
     failures = 0
     folder = os.path.join(data, "layout")
@@ -320,6 +375,8 @@ def main(argv):
         failures = mode_layout(program, data, work)
     elif mode == "sweep":
         failures = mode_sweep(program, work)
+    elif mode == "restart":
+        failures = mode_restart(program, work)
     else:
         print(__doc__)
         return 2

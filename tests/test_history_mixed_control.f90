@@ -192,14 +192,15 @@ contains
   subroutine separated_interface_stops_history()
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver
-    type(interlock_state_t) :: initial, old, new
+    type(interlock_state_t) :: old, new
+    type(interlock_state_3d_t) :: initial
     type(control_t) :: ctl
     type(history_t) :: hist
     real(dp) :: sigma(2)
     integer :: it, sub, stat
     character(len=512) :: message
     call flat_material(mat, 1.0_dp, .false.)
-    call interlock_state_init(mat, initial)
+    call interlock_state_3d_init(mat, initial)
     ctl%traction(1:2) = [.false., .true.]
     call run_history(mat, solver, ctl, [0.0_dp, 1.0_dp, 2.0_dp], &
                      reshape([0.0_dp, 0.0_dp, -0.001_dp, 0.01_dp, 2.0_dp, 0.01_dp], [2, 3]), &
@@ -210,7 +211,7 @@ contains
     call assert_true(index(hist%status, 'no s_T carries sigma_T') > 0, 'reason: ' // hist%status)
     call assert_equal(0.01_dp, hist%traction(2, 2), 1.0e-13_dp, 'row 2 carries sigma_T')
     ! Beyond H_N the traction is identically 0: the reason names the separation (SPEC D7).
-    old = initial
+    old = initial%interlock_state_t
     call solve_step(mat, solver, ctl, old, [0.0_dp, 0.0_dp], [1.5_dp, 0.0_dp], new, sigma, it, &
                     sub, stat, message)
     call assert_true(stat == status_ok, 'zero shear beyond H_N: ' // trim(message))
@@ -265,7 +266,7 @@ contains
   subroutine extrapolated_history_is_composed_of_both_runs()
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver
-    type(interlock_state_t) :: initial
+    type(interlock_state_3d_t) :: initial
     type(control_t) :: ctl
     type(history_t) :: coarse, fine, extra
     real(dp), parameter :: times(3) = [0.0_dp, 1.0_dp, 3.0_dp]
@@ -286,7 +287,7 @@ contains
     call interlock_material_prepare(mat, stat, message)
     call assert_true(stat == status_ok, 'material prepared: ' // trim(message))
     solver%scheme = scheme_implicit
-    call interlock_state_init(mat, initial)
+    call interlock_state_3d_init(mat, initial)
     ctl%traction(1:2) = [.true., .false.]
     call run_history(mat, solver, ctl, times, values, [1, 20], initial, coarse)
     call run_history(mat, solver, ctl, times, values, [1, 40], initial, fine)
@@ -340,11 +341,11 @@ contains
   subroutine extrapolated_history_stops_naming_the_run()
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver
-    type(interlock_state_t) :: initial
+    type(interlock_state_3d_t) :: initial
     type(control_t) :: ctl
     type(history_t) :: hist
     call flat_material(mat, 1.0_dp, .false.)
-    call interlock_state_init(mat, initial)
+    call interlock_state_3d_init(mat, initial)
     ctl%traction(1:2) = [.false., .true.]
     call run_history_extrapolated(mat, solver, ctl, [0.0_dp, 1.0_dp, 2.0_dp], &
                      reshape([0.0_dp, 0.0_dp, -0.001_dp, 0.01_dp, 2.0_dp, 0.01_dp], [2, 3]), &

@@ -84,7 +84,7 @@ add_test(NAME umat_install
 set_tests_properties(umat_install PROPERTIES TIMEOUT 300 LABELS umat)
 
 # --- A local failure writes a replay deck (INTERLOCK_REPLAY_DIR); interlock-history replays it
-#     and stops with the same reason.
+#     and stops with the same reason (2D and 3D).
 interlock_add_suite(umat_replay umat test_umat_interface.f90 test_umat_replay.f90)
 target_link_libraries(umat_replay PRIVATE interlock_umat)
 set(umat_replay_dir ${CMAKE_CURRENT_BINARY_DIR}/umat_replay_decks)
@@ -100,6 +100,14 @@ if(TARGET interlock-history)
   set_tests_properties(umat_history_replay PROPERTIES LABELS umat
     FIXTURES_REQUIRED umat_replay_deck
     PASS_REGULAR_EXPRESSION "unstable on small sub-increments"
+    FAIL_REGULAR_EXPRESSION "completed")
+  # the 3D UMAT's deck: strike components, s_T2 and the azimuths in it
+  add_test(NAME umat_history_replay_3d
+    COMMAND interlock-history --output-dir ${umat_replay_dir}
+            ${umat_replay_dir}/interlock_replay_e6_p1_k3.nml)
+  set_tests_properties(umat_history_replay_3d PROPERTIES LABELS umat
+    FIXTURES_REQUIRED umat_replay_deck
+    PASS_REGULAR_EXPRESSION "s_T2 = 0.007 mm at the end of the step.*unstable on small sub-increments"
     FAIL_REGULAR_EXPRESSION "completed")
 endif()
 

@@ -109,7 +109,7 @@ module interlock_umat_body
   public :: pnewdt_bad_input, pnewdt_local_failure, keep_fraction, pnewdt_min_factor, &
             separation_bits, increment_bits, state_bits, bad_precision, bad_ntens, bad_nstatv, bad_stress, &
             report, report_update_failure, separation_text, lower_pnewdt, step_factor, property_index, name_layer_property, &
-            reject_argument, reject_start_separation
+            reject_argument, reject_start_separation, write_replay
 
   real(dp), parameter :: pnewdt_bad_input = -1.0_dp
   real(dp), parameter :: pnewdt_local_failure = 0.5_dp
@@ -534,14 +534,15 @@ contains
     call report(message, pnewdt_bad_input, said_statev + bad, noel, npt, kinc, cmname, pnewdt)
   end subroutine reject_statev
 
-  !> The replay deck of a failed increment, when INTERLOCK_REPLAY_DIR asks for it.
+  !> The replay deck of a failed increment, when INTERLOCK_REPLAY_DIR asks for it (a 3D state
+  !> and s = (s_N, s_T1, s_T2): a 3D deck).
   subroutine write_replay(why, mat, solver, old, s, noel, npt, kinc, cmname)
     use interlock, only: interlock_write_replay_deck, format_integer
     character(len=*), intent(in) :: why, cmname
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
-    type(interlock_state_t), intent(in) :: old
-    real(dp), intent(in) :: s(2)
+    class(interlock_state_t), intent(in) :: old
+    real(dp), intent(in) :: s(:)
     integer, intent(in) :: noel, npt, kinc
     character(len=4096) :: dir
     character(len=:), allocatable :: name

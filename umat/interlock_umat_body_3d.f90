@@ -30,10 +30,10 @@ module interlock_umat_body_3d
       pnewdt_min_factor, separation_bits, increment_bits, state_bits, bad_precision, bad_ntens, &
       bad_nstatv, bad_stress, report, report_update_failure, lower_pnewdt, step_factor, &
       property_index, name_layer_property, reject_argument, reject_start_separation, separation_text, &
-      diverged_iteration_message
+      diverged_iteration_message, write_replay
   use interlock, only: dp, separation_bound, interlock_material_t, interlock_solver_t, &
       interlock_state_3d_t, interlock_info_t, interlock_update_3d, umat_controls_t, status_ok, &
-      scheme_explicit
+      status_local_failure, scheme_explicit
   implicit none
   private
   public :: interlock_umat_cohesive_3d
@@ -155,6 +155,8 @@ contains
     call interlock_update_3d(mat, solver, s, old, new, sigma, tangent, info)
     if (info%status /= status_ok) then
       call report_update_failure(info, NOEL, NPT, KINC, CMNAME, PNEWDT)
+      if (info%status == status_local_failure) &
+        call write_replay(info%message, mat, solver, old, s, NOEL, NPT, KINC, CMNAME)
       return
     end if
     if (NPROPS >= prop_tangent) then

@@ -1,14 +1,16 @@
 !> Replay decks: one failed (or suspicious) update written as an `interlock-history` input deck
 !> (docs/deck-format.md) that reproduces it: every parameter (the RIA as a general one, per
 !> plane), the effect switches, the solver, the state at the start of the update as
-!> `&initial_state`, and a single separation-driven step from `old%s` to `s_new`.
+!> `&initial_state`, and a single separation-driven step from `old%s` to `s_new`. A 3D update
+!> (a 3D state, three separations) gives a 3D deck: the planes' azimuths, the strike
+!> components and t2 as well.
 !> No module state: the routine only writes the file it is given.
 module interlock_replay
   use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char
   use interlock_kinds, only: dp, rad_to_deg, is_infinite_value
   use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_name, &
       effect_damage, effect_friction, effect_interlocking, effect_finite_depth, effect_wear
-  use interlock_state, only: interlock_state_t
+  use interlock_state, only: interlock_state_t, interlock_state_3d_t
   implicit none
   private
   public :: interlock_write_replay_deck
@@ -30,13 +32,14 @@ contains
   !> Write a deck to `path` that replays the update from `old` to the separation `s_new`
   !> with `mat` and `solver`; `reason` goes into the deck as a comment. The deck is written to
   !> `path // '.tmp'` and renamed, so a reader never sees a half-written deck.
-  !> `ios` = 0 on success, else the I/O status (or -1 when the rename failed).
+  !> `ios` = 0 on success, else the I/O status (or -1 when the rename failed). `old` a 2D
+  !> state and s_new (s_N, s_T), or a 3D state and s_new (s_N, s_T1, s_T2).
   subroutine interlock_write_replay_deck(path, mat, solver, old, s_new, reason, ios)
     character(len=*), intent(in) :: path
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
-    type(interlock_state_t), intent(in) :: old
-    real(dp), intent(in) :: s_new(2)
+    class(interlock_state_t), intent(in) :: old
+    real(dp), intent(in) :: s_new(:)
     character(len=*), intent(in) :: reason
     integer, intent(out) :: ios
     character(len=:), allocatable :: tmp
@@ -83,6 +86,10 @@ contains
     call put_reals(u, 'theta0_deg', mat%theta0(1:n) * rad_to_deg)
     call put_reals(u, 'thetaf_deg', mat%thetaf(1:n) * rad_to_deg)
     call put_reals(u, 'zeta0', mat%zeta0(1:n))
+    select type (old)
+    type is (interlock_state_3d_t)
+      call put_reals(u, 'phi_deg', mat%phi(1:n) * rad_to_deg)
+    end select
     write (u, '(a)', iostat=ios) '/'
 
     write (u, '(a)', iostat=ios) '&effects'
@@ -106,8 +113,16 @@ contains
     call put_reals(u, 'zeta', old%zeta(1:n))
     call put_reals(u, 'theta', old%theta(1:n))
     call put_reals(u, 'friction_traction', old%tauf(1:n))
-    call put_reals(u, 'separation', old%s)
-    call put_reals(u, 'traction', old%sigma)
+    select type (old)
+    type is (interlock_state_3d_t)
+      call put_reals(u, 'sf_strike', old%sf_strike(1:n))
+      call put_reals(u, 'tauf_strike', old%tauf_strike(1:n))
+      call put_reals(u, 'separation', [old%s, old%s_t2])
+      call put_reals(u, 'traction', [old%sigma, old%sigma_t2])
+    class default
+      call put_reals(u, 'separation', old%s)
+      call put_reals(u, 'traction', old%sigma)
+    end select
     write (u, '(a)', iostat=ios) '/'
 
     write (u, '(a)', iostat=ios) '&loading'
@@ -116,6 +131,11 @@ contains
     write (u, '(a)', iostat=ios) '  times = 0.0, 1.0'
     call put_reals(u, 'normal', [old%s(1), s_new(1)])
     call put_reals(u, 'tangential', [old%s(2), s_new(2)])
+    select type (old)
+    type is (interlock_state_3d_t)
+      write (u, '(a)', iostat=ios) "  t2_control = 'separation'"
+      call put_reals(u, 't2', [old%s_t2, s_new(min(3, size(s_new)))])
+    end select
     write (u, '(a)', iostat=ios) '  steps = 1'
     write (u, '(a)', iostat=ios) '  cycles = 1'
     write (u, '(a)', iostat=ios) '/'

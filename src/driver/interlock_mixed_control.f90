@@ -133,17 +133,17 @@ contains
   !> Run a whole history: the path goes through the points (times(i), values(:, i)) in
   !> `steps(i)` uniform steps per segment, each component's value (ctl%n of them: values(1:n,
   !> i)) being a separation [mm] or a traction [MPa] as `ctl%traction` says; `arcs` (optional,
-  !> 3D, one per segment): the segments that are arcs in the (T1, T2) plane. A 3D history starts
-  !> from `initial` with s_T2 = sigma_T2 = 0 and no strike slip or friction traction (point 1
-  !> should match it, as in 2D). Each row goes to `hist` as soon as it is computed. The history
-  !> stops early when a step cannot be solved or a row cannot be kept.
+  !> 3D, one per segment): the segments that are arcs in the (T1, T2) plane. The history starts
+  !> from `initial` (a 2D history from its in-plane part: its strike components and s_T2,
+  !> sigma_T2 are 0; point 1 should match it). Each row goes to `hist` as soon as it is
+  !> computed. The history stops early when a step cannot be solved or a row cannot be kept.
   subroutine run_history(mat, solver, ctl, times, values, steps, initial, hist, arcs)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     type(control_t), intent(in) :: ctl
     real(dp), intent(in) :: times(:), values(:, :)
     integer, intent(in) :: steps(:)
-    type(interlock_state_t), intent(in) :: initial
+    type(interlock_state_3d_t), intent(in) :: initial
     class(history_sink_t), intent(inout) :: hist
     type(arc_t), intent(in), optional :: arcs(:)
     type(interlock_state_3d_t) :: old, new
@@ -152,7 +152,7 @@ contains
     character(len=512) :: message
 
     call begin_history(hist, mat%n_planes, ctl%n, .false.)
-    old = initial_3d(initial)
+    old = initial
     t_end = values(1:ctl%n, 1)
     do iseg = 1, size(steps)
       do j = 1, steps(iseg)
@@ -220,7 +220,7 @@ contains
     type(control_t), intent(in) :: ctl
     real(dp), intent(in) :: times(:), values(:, :)
     integer, intent(in) :: steps(:)
-    type(interlock_state_t), intent(in) :: initial
+    type(interlock_state_3d_t), intent(in) :: initial
     class(history_sink_t), intent(inout) :: hist
     type(arc_t), intent(in), optional :: arcs(:)
     type(interlock_state_3d_t) :: old_c, new_c, old_f, new_f
@@ -232,7 +232,7 @@ contains
 
     n = ctl%n
     call begin_history(hist, mat%n_planes, n, .true.)
-    old_c = initial_3d(initial)
+    old_c = initial
     old_f = old_c
     step_f = 0
     tc_end = values(1:n, 1)

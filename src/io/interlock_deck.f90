@@ -9,7 +9,7 @@
 !> assignment of the group alone, so that the message names the variable.
 module interlock_deck
   use interlock, only: dp, deg_to_rad, pi, max_planes, max_azimuths, n_effects, &
-      interlock_material_t, interlock_solver_t, interlock_state_t, interlock_state_init, &
+      interlock_material_t, interlock_solver_t, interlock_state_3d_t, interlock_state_3d_init, &
       interlock_material_prepare, interlock_paper_ria, interlock_azimuthal_ria, &
       interlock_general_ria, scheme_explicit, scheme_implicit, &
       scheme_trapezoidal, properties, property_index, check_property, format_range, &
@@ -114,8 +114,10 @@ module interlock_deck
     ! &initial_state (unset entries keep the initial state of the material)
     logical :: has_initial_state = .false.
     real(dp), dimension(max_planes) :: init_damage = unset, init_beta = unset, init_sf = unset, &
-                                       init_zeta = unset, init_theta = unset, init_tauf = unset
-    real(dp) :: init_s(2) = unset, init_sigma(2) = unset
+                                       init_zeta = unset, init_theta = unset, init_tauf = unset, &
+                                       init_sf_strike = unset, init_tauf_strike = unset
+    !> (normal, tangential) or, in a 3D deck, (normal, t1, t2)
+    real(dp) :: init_s(3) = unset, init_sigma(3) = unset
   end type deck_t
 
   !> The readers of the groups, one per group (submodules interlock_deck_material,
@@ -229,7 +231,7 @@ contains
     character(len=512) :: iomsg
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver
-    type(interlock_state_t) :: state
+    type(interlock_state_3d_t) :: state
     character(len=:), allocatable :: label
 
     stat = status_bad_input
@@ -320,7 +322,7 @@ contains
     integer, intent(in) :: icase
     type(interlock_material_t), intent(out) :: mat
     type(interlock_solver_t), intent(out) :: solver
-    type(interlock_state_t), intent(out) :: state
+    type(interlock_state_3d_t), intent(out) :: state
     character(len=:), allocatable, intent(out) :: label
     integer, intent(out) :: stat
     character(len=*), intent(out) :: message
@@ -422,7 +424,7 @@ contains
     end if
     solver = d%solver
 
-    call interlock_state_init(mat, state)
+    call interlock_state_3d_init(mat, state)
     n = mat%n_planes
     if (deck%has_initial_state) then
       call apply_initial(deck%init_damage, state%damage, 'damage', why)
@@ -431,14 +433,20 @@ contains
       if (len_trim(why) == 0) call apply_initial(deck%init_zeta, state%zeta, 'zeta', why)
       if (len_trim(why) == 0) call apply_initial(deck%init_theta, state%theta, 'theta', why)
       if (len_trim(why) == 0) call apply_initial(deck%init_tauf, state%tauf, 'friction_traction', why)
+      if (len_trim(why) == 0) call apply_initial(deck%init_sf_strike, state%sf_strike, &
+                                                 'sf_strike', why)
+      if (len_trim(why) == 0) call apply_initial(deck%init_tauf_strike, state%tauf_strike, &
+                                                 'tauf_strike', why)
       if (len_trim(why) == 0 .and. .not. mat%use_friction) call no_friction_traction(why)
       if (len_trim(why) > 0) then
         message = deck%path // ': &initial_state: ' // trim(case_text(deck, icase)) // trim(why)
         stat = status_bad_input
         return
       end if
-      if (.not. same_value(deck%init_s(1), unset)) state%s = deck%init_s
-      if (.not. same_value(deck%init_sigma(1), unset)) state%sigma = deck%init_sigma
+      if (.not. same_value(deck%init_s(1), unset)) state%s = deck%init_s(1:2)
+      if (.not. same_value(deck%init_s(3), unset)) state%s_t2 = deck%init_s(3)
+      if (.not. same_value(deck%init_sigma(1), unset)) state%sigma = deck%init_sigma(1:2)
+      if (.not. same_value(deck%init_sigma(3), unset)) state%sigma_t2 = deck%init_sigma(3)
     end if
     stat = status_ok
     message = ''
@@ -473,6 +481,12 @@ contains
           why = 'friction_traction(' // format_integer(k) // ') = ' // &
                 format_real(state%tauf(k)) // ' is inadmissible: without friction (mu = 0 ' // &
                 'or friction switched off) admissible friction_traction = 0'
+          return
+        end if
+        if (abs(state%tauf_strike(k)) > 0.0_dp) then
+          why = 'tauf_strike(' // format_integer(k) // ') = ' // &
+                format_real(state%tauf_strike(k)) // ' is inadmissible: without friction ' // &
+                '(mu = 0 or friction switched off) admissible tauf_strike = 0'
           return
         end if
       end do

@@ -58,8 +58,8 @@ module interlock_deck_checks
     var_t(7, 'frictional_slip', real_list // ' [mm]'), var_t(7, 'zeta', real_list // ' [N/mm]'), &
     var_t(7, 'theta', real_list // ' [rad]'), &
     var_t(7, 'friction_traction', real_list // ' [MPa]'), &
-    var_t(7, 'separation', 'two real numbers (normal, tangential) [mm]'), &
-    var_t(7, 'traction', 'two real numbers (normal, tangential) [MPa]'), &
+    var_t(7, 'separation', 'two real numbers (normal, tangential) [mm]; 3D: three (t2 last)'), &
+    var_t(7, 'traction', 'two real numbers (normal, tangential) [MPa]; 3D: three (t2 last)'), &
     var_t(8, 'file', 'a quoted string: a file path (at most 4096 characters)'), &
     var_t(8, 'title', 'a quoted string (at most 1024 characters)'), &
     var_t(8, 'every', 'an integer (1 to 2000000)'), &
@@ -74,7 +74,9 @@ module interlock_deck_checks
     var_t(4, 'side', 'a real number [mm]: the square''s side'), &
     var_t(4, 'radius', 'a real number [mm]: the circle''s radius'), &
     var_t(4, 'turns', 'a real number [-]: the circle''s turns'), &
-    var_t(6, 'range', 'three real numbers: first value, last value, number of values')]
+    var_t(6, 'range', 'three real numbers: first value, last value, number of values'), &
+    var_t(7, 'sf_strike', real_list // ' [mm]: 3D, strike slip'), &
+    var_t(7, 'tauf_strike', real_list // ' [MPa]: 3D, strike friction')]
 
 contains
 
@@ -174,7 +176,8 @@ contains
                                        'thetaf_deg', 'zeta0', 'phi_deg'])
     case ('initial_state')
       is_plane_variable = any(name == [character(len=17) :: 'damage', 'beta', 'frictional_slip', &
-                                       'zeta', 'theta', 'friction_traction'])
+                                       'zeta', 'theta', 'friction_traction', 'sf_strike', &
+                                       'tauf_strike'])
     case default
       is_plane_variable = .false.
     end select

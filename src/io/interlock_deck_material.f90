@@ -243,20 +243,23 @@ contains
   end procedure read_effects
 
   module procedure read_initial_state
-    real(dp), dimension(max_planes) :: damage, beta, frictional_slip, zeta, theta, friction_traction
-    real(dp) :: separation(2), traction(2)
-    integer :: ios
+    real(dp), dimension(max_planes) :: damage, beta, frictional_slip, zeta, theta, &
+                                       friction_traction, sf_strike, tauf_strike
+    real(dp) :: separation(3), traction(3)
+    integer :: ios, nc
     character(len=512) :: iomsg, iomsg2
     character(len=:), allocatable :: probe
     integer :: kp
     namelist /initial_state/ damage, beta, frictional_slip, zeta, theta, friction_traction, &
-      separation, traction
+      separation, traction, sf_strike, tauf_strike
     damage = unset
     beta = unset
     frictional_slip = unset
     zeta = unset
     theta = unset
     friction_traction = unset
+    sf_strike = unset
+    tauf_strike = unset
     separation = unset
     traction = unset
     message = ''
@@ -271,12 +274,27 @@ contains
       return
     end if
     if (has_gaps(damage) .or. has_gaps(beta) .or. has_gaps(frictional_slip) .or. has_gaps(zeta) &
-        .or. has_gaps(theta) .or. has_gaps(friction_traction)) then
-      message = 'per-plane values must be given from the first plane on, without gaps'
+        .or. has_gaps(theta) .or. has_gaps(friction_traction) .or. has_gaps(sf_strike) .or. &
+        has_gaps(tauf_strike) .or. has_gaps(separation) .or. has_gaps(traction)) then
+      message = 'values must be given from the first on, without gaps'
       return
     end if
-    if (count_given(separation) == 1 .or. count_given(traction) == 1) then
-      message = 'separation and traction take two values each (normal, tangential)'
+    ! (the groups before this one have said whether the deck is 3D)
+    nc = deck%n_components
+    if (any(count_given(separation) == [1, 5 - nc]) .or. &
+        any(count_given(traction) == [1, 5 - nc])) then
+      if (nc == 3) then
+        message = 'separation and traction take three values each (normal, t1, t2) in a 3D deck'
+      else
+        message = 'separation and traction take two values each (normal, tangential) in a ' // &
+                  '2D deck (three, with t2, in a 3D one: T2 loading, a path, azimuths or the ' // &
+                  'azimuthal RIA)'
+      end if
+      return
+    end if
+    if (nc == 2 .and. (count_given(sf_strike) > 0 .or. count_given(tauf_strike) > 0)) then
+      message = 'sf_strike and tauf_strike are the strike components of a 3D deck (T2 ' // &
+                'loading, a path, azimuths or the azimuthal RIA): this deck is 2D'
       return
     end if
     message = range_message('damage', damage, 0.0_dp, 1.0_dp, '0 <= damage <= 1')
@@ -291,6 +309,8 @@ contains
     message = not_finite_message('frictional_slip', 'mm', frictional_slip)
     if (len_trim(message) == 0) message = not_finite_message('friction_traction', 'MPa', &
                                                               friction_traction)
+    if (len_trim(message) == 0) message = not_finite_message('sf_strike', 'mm', sf_strike)
+    if (len_trim(message) == 0) message = not_finite_message('tauf_strike', 'MPa', tauf_strike)
     if (len_trim(message) == 0) message = not_finite_message('separation', 'mm', separation)
     if (len_trim(message) == 0) message = not_finite_message('traction', 'MPa', traction)
     if (len_trim(message) > 0) return
@@ -301,6 +321,8 @@ contains
     deck%init_zeta = zeta
     deck%init_theta = theta
     deck%init_tauf = friction_traction
+    deck%init_sf_strike = sf_strike
+    deck%init_tauf_strike = tauf_strike
     deck%init_s = separation
     deck%init_sigma = traction
   end procedure read_initial_state

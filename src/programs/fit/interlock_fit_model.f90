@@ -8,7 +8,7 @@
 !> so that a window (one cycle) keeps its place in the history.
 module interlock_fit_model
   use, intrinsic :: iso_fortran_env, only: output_unit
-  use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
+  use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_3d_t, &
       prop_theta0, prop_thetaf, status_ok, format_integer, format_real
   use interlock_deck, only: deck_t, deck_case, deck_set_property, deck_loading
   use interlock_mixed_control, only: history_t, run_history, run_history_extrapolated, arc_t
@@ -53,7 +53,7 @@ contains
     type(deck_t) :: d
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver
-    type(interlock_state_t) :: state
+    type(interlock_state_3d_t) :: state
     real(dp), allocatable :: points(:, :)
     type(arc_t), allocatable :: arcs(:)
     character(len=:), allocatable :: label

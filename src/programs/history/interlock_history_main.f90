@@ -8,7 +8,7 @@
 program interlock_history
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
   use interlock_cli, only: exit_program, command_argument, command_text
-  use interlock, only: interlock_material_t, interlock_solver_t, interlock_state_t, &
+  use interlock, only: interlock_material_t, interlock_solver_t, interlock_state_3d_t, &
       interlock_version_string, status_ok
   use interlock, only: dp
   use interlock_deck, only: deck_t, read_deck, deck_case, deck_n_cases, deck_loading
@@ -104,7 +104,7 @@ contains
     type(output_t) :: out
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver
-    type(interlock_state_t) :: state
+    type(interlock_state_3d_t) :: state
     type(case_writer_t) :: writer
     character(len=:), allocatable :: label, final_name, origin, folder
     character(len=1024) :: message
