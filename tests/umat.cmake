@@ -94,21 +94,20 @@ set_tests_properties(umat_replay PROPERTIES
   FIXTURES_SETUP umat_replay_deck
   PASS_REGULAR_EXPRESSION "unstable on small sub-increments.*test_umat_replay: [0-9]+ checks, 0 failed")
 if(TARGET interlock-history)
-  add_test(NAME umat_history_replay
-    COMMAND interlock-history --output-dir ${umat_replay_dir}
-            ${umat_replay_dir}/interlock_replay_e5_p2_k3.nml)
-  set_tests_properties(umat_history_replay PROPERTIES LABELS umat
-    FIXTURES_REQUIRED umat_replay_deck
-    PASS_REGULAR_EXPRESSION "unstable on small sub-increments"
-    FAIL_REGULAR_EXPRESSION "completed")
-  # the 3D UMAT's deck: strike components, s_T2 and the azimuths in it
-  add_test(NAME umat_history_replay_3d
-    COMMAND interlock-history --output-dir ${umat_replay_dir}
-            ${umat_replay_dir}/interlock_replay_e6_p1_k3.nml)
-  set_tests_properties(umat_history_replay_3d PROPERTIES LABELS umat
-    FIXTURES_REQUIRED umat_replay_deck
-    PASS_REGULAR_EXPRESSION "s_T2 = 0.007 mm at the end of the step.*unstable on small sub-increments"
-    FAIL_REGULAR_EXPRESSION "completed")
+  # the 2D UMAT's deck (element 5), and the 3D UMAT's (element 6: strike components, s_T2 and
+  # the azimuths in it)
+  foreach(replay "umat_history_replay;e5_p2_k3;s_T = 0.01 mm"
+                 "umat_history_replay_3d;e6_p1_k3;s_T2 = 0.007 mm")
+    list(GET replay 0 name)
+    list(GET replay 1 deck)
+    list(GET replay 2 target)
+    add_test(NAME ${name}
+      COMMAND interlock-history --output-dir ${umat_replay_dir}
+              ${umat_replay_dir}/interlock_replay_${deck}.nml)
+    set_tests_properties(${name} PROPERTIES LABELS umat FIXTURES_REQUIRED umat_replay_deck
+      PASS_REGULAR_EXPRESSION "${target} at the end of the step.*unstable on small sub-increments"
+      FAIL_REGULAR_EXPRESSION "completed")
+  endforeach()
 endif()
 
 # --- The symmetric tangent for hosts that symmetrize (PROPS 20 tangent = 2): the interface

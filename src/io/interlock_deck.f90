@@ -471,26 +471,28 @@ contains
     end subroutine apply_initial
 
     !> Without friction (mu = 0, or the effect off) an admissible state carries no friction
-    !> traction (|tau_f| <= mu p = 0); the laws rely on it.
+    !> traction, along the dip or the strike (|tau_f| <= mu p = 0); the laws rely on it.
     subroutine no_friction_traction(why)
+      character(len=*), intent(out) :: why
+      call first_nonzero('friction_traction', state%tauf(1:n), why)
+      if (len_trim(why) == 0) call first_nonzero('tauf_strike', state%tauf_strike(1:n), why)
+    end subroutine no_friction_traction
+
+    subroutine first_nonzero(name, tauf, why)
+      character(len=*), intent(in) :: name
+      real(dp), intent(in) :: tauf(:)
       character(len=*), intent(out) :: why
       integer :: k
       why = ''
-      do k = 1, n
-        if (abs(state%tauf(k)) > 0.0_dp) then
-          why = 'friction_traction(' // format_integer(k) // ') = ' // &
-                format_real(state%tauf(k)) // ' is inadmissible: without friction (mu = 0 ' // &
-                'or friction switched off) admissible friction_traction = 0'
-          return
-        end if
-        if (abs(state%tauf_strike(k)) > 0.0_dp) then
-          why = 'tauf_strike(' // format_integer(k) // ') = ' // &
-                format_real(state%tauf_strike(k)) // ' is inadmissible: without friction ' // &
-                '(mu = 0 or friction switched off) admissible tauf_strike = 0'
+      do k = 1, size(tauf)
+        if (abs(tauf(k)) > 0.0_dp) then
+          why = name // '(' // format_integer(k) // ') = ' // format_real(tauf(k)) // &
+                ' is inadmissible: without friction (mu = 0 or friction switched off) ' // &
+                'admissible ' // name // ' = 0'
           return
         end if
       end do
-    end subroutine no_friction_traction
+    end subroutine first_nonzero
 
   end subroutine deck_case
 
