@@ -28,13 +28,19 @@ add_test(NAME fit_discretization_granite
           $<TARGET_FILE:interlock-fit> $<TARGET_FILE:interlock-history> discretization
           ${PROJECT_SOURCE_DIR}/inputs/fit/granite_staged.nml)
 set_tests_properties(fit_discretization_granite PROPERTIES LABELS fit TIMEOUT 600)
-# 3D: the shipped deck (the azimuthal RIA at 45 deg; its CSV checked against interlock-history)
-# and a circular slip path, each fitted history equal to interlock-history's.
+# 3D: the shipped deck (the azimuthal RIA at 45 deg; its CSV checked against interlock-history),
+# without and with 2 % noise, and a circular slip path, each fitted history equal to
+# interlock-history's.
 add_test(NAME fit_recovery_3d_granite
   COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_fit.py
           $<TARGET_FILE:interlock-fit> $<TARGET_FILE:interlock-history> recovery3d
           ${PROJECT_SOURCE_DIR}/inputs/fit/granite_3d_45.nml)
 set_tests_properties(fit_recovery_3d_granite PROPERTIES LABELS fit TIMEOUT 300)
+add_test(NAME fit_recovery_3d_granite_noise_0.02
+  COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_fit.py
+          $<TARGET_FILE:interlock-fit> $<TARGET_FILE:interlock-history> recovery3d
+          ${PROJECT_SOURCE_DIR}/inputs/fit/granite_3d_45.nml 0.02)
+set_tests_properties(fit_recovery_3d_granite_noise_0.02 PROPERTIES LABELS fit TIMEOUT 300)
 add_test(NAME fit_circle_3d
   COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_fit.py
           $<TARGET_FILE:interlock-fit> $<TARGET_FILE:interlock-history> circle)

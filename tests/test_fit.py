@@ -9,7 +9,9 @@ usage: test_fit.py FIT HISTORY recovery SET NOISE   SET: granite | table5; NOISE
        test_fit.py FIT HISTORY inputs               inputs read as they are written
        test_fit.py FIT HISTORY deckfail             the fitted deck cannot be written: no file
        test_fit.py FIT HISTORY discretization DECK  the discretization check of the staged deck
-       test_fit.py FIT HISTORY recovery3d DECK      the 3D deck of inputs/fit/ (azimuthal RIA, 45 deg)
+       test_fit.py FIT HISTORY recovery3d DECK [NOISE]
+                                                    the 3D deck of inputs/fit/ (azimuthal RIA,
+                                                    45 deg); NOISE 0.02: its curves with noise
        test_fit.py FIT HISTORY circle               a 3D deck on a circular slip path
 
 The data are the curves of a history with known parameters (scripts/fit_make_data.py; noise:
@@ -452,10 +454,12 @@ def same_as_history(fit_h5, history_h5):
     return worst
 
 
-def recovery3d(fit, history, deck_src):
+def recovery3d(fit, history, deck_src, noise=0.0):
     """The shipped 3D deck: its CSV is what interlock-history computes with the deck's values (a
     regression guard: regenerated here and compared), the fit recovers mu and theta_0 from 35 %
-    off to 1e-6 relative, and its model history is interlock-history's for the fitted deck."""
+    off to 1e-6 relative, and its model history is interlock-history's for the fitted deck.
+    With noise > 0 the curves get noise (seed 12) and each parameter must come back within two
+    of its standard errors."""
     truth = {"mu": 0.6898538, "theta0_deg": 30.0}
     with tempfile.TemporaryDirectory() as work:
         stem = os.path.splitext(os.path.basename(deck_src))[0]
@@ -471,13 +475,25 @@ def recovery3d(fit, history, deck_src):
         drift = float(np.max(np.abs(shipped - made) / scale))
         print(f"shipped CSV against interlock-history now: {drift:.1e} relative (regression guard)")
         assert drift <= 1e-9, drift
+        if noise > 0:
+            run([sys.executable, MAKE_DATA, history, deck, os.path.join(work, stem + ".csv"),
+                 "--noise", str(noise), "--seed", "12"], work)
         out, wall = run([fit, deck], work)
         print(out)
         got, cpu = check_outputs(os.path.join(work, stem + "_fit.h5"),
                                  os.path.join(work, stem + "_fitted.nml"), history, work)
         same_as_history(os.path.join(work, stem + "_fit.h5"),
                         os.path.join(work, stem + "_fitted.h5"))
-    bad = not_recovered(got, truth, 1e-6, "true")
+    if noise > 0:
+        bad = []
+        for name, true in truth.items():
+            value, se = got[name]
+            print(f"{name}: {value!r} true {true} standard error {se:.3e} "
+                  f"off by {abs(value - true) / se:.2f} standard errors")
+            if not abs(value - true) <= 2 * se:
+                bad.append(name)
+    else:
+        bad = not_recovered(got, truth, 1e-6, "true")
     print(f"3D fit: {cpu:.2f} s CPU, {wall:.2f} s wall")
     if bad:
         sys.exit(f"FAIL: not recovered: {bad}")
@@ -521,6 +537,8 @@ def main():
              "inputs": inputs, "deckfail": deckfail, "circle": circle}
     if mode == "recovery":
         recovery(fit, history, sys.argv[4], float(sys.argv[5]))
+    elif mode == "recovery3d" and len(sys.argv) > 5:
+        recovery3d(fit, history, sys.argv[4], float(sys.argv[5]))
     elif mode in ("staged", "discretization", "recovery3d"):
         {"staged": staged, "discretization": discretization,
          "recovery3d": recovery3d}[mode](fit, history, sys.argv[4])
