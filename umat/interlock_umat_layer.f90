@@ -395,7 +395,7 @@ contains
         'component ' // format_integer(worst) // ' = ' // format_real(strain(worst)) // &
         ', which does not involve normal_axis = ' // format_integer(normal) // ', exceeds ' // &
         format_real(axes_suspect_strain) // ' and the interface strains (' // &
-        strain_text(strain(comp(1:m))) // '): in a ' // &
+        trim(strain_text(strain(comp(1:m)))) // '): in a ' // &
         'thin layer only the components of its normal are large; is normal_axis the ' // &
         "layer's thin direction in the element's local axes (*ORIENTATION)?")
     end subroutine check_axes
@@ -462,14 +462,16 @@ contains
     end subroutine law
 
     !> "x, y" or "x, y, z".
-    pure function strain_text(x) result(text)
+    pure function strain_text(x) result(padded)
       real(dp), intent(in) :: x(:)
+      character(len=240) :: padded
       character(len=:), allocatable :: text
       integer :: j
       text = format_real(x(1))
       do j = 2, size(x)
         text = text // ', ' // format_real(x(j))
       end do
+      padded = text
     end function strain_text
 
     !> One line naming the point (once per material and `kind`); bad input for the host.

@@ -66,10 +66,10 @@ contains
     is_whole = .not. ((x + whole) - whole < x .or. (x + whole) - whole > x)
   end function is_whole
 
-  !> A compact, exact-enough rendering of a real for messages and tables.
-  pure function format_real(x) result(text)
+  !> format_real's text, blank-padded.
+  pure function real_text(x) result(text)
     real(dp), intent(in) :: x
-    character(len=:), allocatable :: text
+    character(len=32) :: text
     character(len=32) :: buf
     ! (from the bits first: a signalling NaN, which a host may pass, traps in any float test)
     if (.not. is_finite_bits(x)) then
@@ -79,8 +79,7 @@ contains
         text = merge('-Inf', '+Inf', transfer(x, 0_int64) < 0_int64)
       end if
     else if (same_value(x, anint(x)) .and. abs(x) < 1.0e9_dp) then
-      write (buf, '(i0)') nint(x, kind=8)
-      text = trim(buf)
+      text = format_integer_8(nint(x, kind=int64))
     else
       ! Six significant digits, trailing zeros dropped: 0.3, -0.0015, 2.5e-07, 1e+200.
       if (abs(x) >= 1.0e-3_dp .and. abs(x) < 1.0e6_dp) then
@@ -90,7 +89,7 @@ contains
         if (buf(1:1) == '.') buf = '0' // buf(1:len(buf) - 1)
         if (buf(1:2) == '-.') buf = '-0' // buf(2:len(buf) - 1)
         if (len_trim(strip_zeros(buf)) == 0) buf = '0'
-        text = trim(buf)
+        text = buf
       else
         write (buf, '(es14.5e3)') x
         buf = adjustl(buf)
@@ -98,19 +97,29 @@ contains
                trim(exponent_text(buf(index(buf, 'E') + 1:)))
       end if
     end if
+  end function real_text
+
+  !> A compact, exact-enough rendering of a real for messages and tables.
+  !> The text functions here (and every function whose text a UMAT call may build) declare
+  !> their result's length by a specification expression, never as deferred (`len=:`): at a
+  !> call of a function with a deferred-length result, gfortran 12 keeps the result's length
+  !> in a static variable of the caller, which concurrent threads overwrite (garbled messages
+  !> from a UMAT called on several threads; test umat_omp). The text is built twice (once
+  !> for its length): on the messages' path only.
+  pure function format_real(x) result(text)
+    real(dp), intent(in) :: x
+    character(len=len_trim(real_text(x))) :: text
+    text = real_text(x)
   end function format_real
 
-  !> An integer as text, without blanks: 42 -> "42".
-  !> Digit by digit, without an internal write: messages are built by a UMAT that several
-  !> threads of a host call at once, and gfortran's run-time library (12) can garble an
-  !> internal write made inside a function called from concurrent threads.
-  pure function format_integer(i) result(text)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: text
+  !> format_integer's text for a 64-bit integer, blank-padded.
+  pure function format_integer_8(i) result(text)
+    integer(int64), intent(in) :: i
+    character(len=24) :: text
     character(len=24) :: buf
     integer(int64) :: n
     integer :: p
-    n = abs(int(i, int64))
+    n = abs(i)   ! (|i| < 2^63: the integers of a message)
     p = len(buf) + 1
     do
       p = p - 1
@@ -123,6 +132,15 @@ contains
       buf(p:p) = '-'
     end if
     text = buf(p:)
+  end function format_integer_8
+
+  !> An integer as text, without blanks: 42 -> "42".
+  !> Digit by digit, without an internal write (no run-time library call on a UMAT's message
+  !> path).
+  pure function format_integer(i) result(text)
+    integer, intent(in) :: i
+    character(len=len_trim(format_integer_8(int(i, int64)))) :: text
+    text = format_integer_8(int(i, int64))
   end function format_integer
 
   !> "1.500000" -> "1.5", "2.000" -> "2".
@@ -139,15 +157,16 @@ contains
     if (r(n:n) == '.') r(n:n) = ' '
   end function strip_zeros
 
-  !> "+005" -> "+05" (at least two digits), "-010" -> "-10".
+  !> "+005" -> "+05" (at least two digits), "-010" -> "-10"; blank-padded.
   pure function exponent_text(s) result(r)
     character(len=*), intent(in) :: s
-    character(len=:), allocatable :: r
-    integer :: i
-    r = trim(adjustl(s))
-    i = 2
-    do while (len(r) > 3 .and. r(i:i) == '0')
-      r = r(1:i - 1) // r(i + 1:)
+    character(len=len(s)) :: r
+    integer :: n
+    r = adjustl(s)
+    n = len_trim(r)
+    do while (n > 3 .and. r(2:2) == '0')
+      r = r(1:1) // r(3:)
+      n = n - 1
     end do
   end function exponent_text
 

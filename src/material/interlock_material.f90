@@ -6,7 +6,7 @@ module interlock_material
   use interlock_numbers, only: format_real, format_integer
   use interlock_material_table, only: check_property, &
       prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_zeta0
-  use interlock_status, only: status_ok, status_bad_input
+  use interlock_status, only: status_ok, status_bad_input, message_len
   implicit none
   private
   public :: interlock_material_t, interlock_solver_t, max_planes, max_azimuths
@@ -114,20 +114,27 @@ module interlock_material
 
 contains
 
-  !> The name of scheme code `scheme` ('unknown' outside 1..n_schemes).
-  pure function scheme_name(scheme) result(name)
+  !> scheme_name's text, blank-padded (see interlock_numbers:format_real).
+  pure function scheme_name_padded(scheme) result(name)
     integer, intent(in) :: scheme
-    character(len=:), allocatable :: name
+    character(len=len(scheme_names)) :: name
     if (scheme >= 1 .and. scheme <= n_schemes) then
-      name = trim(scheme_names(scheme))
+      name = scheme_names(scheme)
     else
       name = 'unknown'
     end if
+  end function scheme_name_padded
+
+  !> The name of scheme code `scheme` ('unknown' outside 1..n_schemes).
+  pure function scheme_name(scheme) result(name)
+    integer, intent(in) :: scheme
+    character(len=len_trim(scheme_name_padded(scheme))) :: name
+    name = scheme_name_padded(scheme)
   end function scheme_name
 
-  !> The schemes and their codes, for messages and docs: "1 (explicit), 2 (implicit) or 3
-  !> (trapezoidal)".
-  pure function scheme_list() result(text)
+  !> scheme_list's text, blank-padded (see interlock_numbers:format_real).
+  pure function scheme_list_padded() result(padded)
+    character(len=120) :: padded
     character(len=:), allocatable :: text
     integer :: i
     text = ''
@@ -139,6 +146,14 @@ contains
       end if
       text = text // format_integer(i) // ' (' // trim(scheme_names(i)) // ')'
     end do
+    padded = text
+  end function scheme_list_padded
+
+  !> The schemes and their codes, for messages and docs: "1 (explicit), 2 (implicit) or 3
+  !> (trapezoidal)".
+  pure function scheme_list() result(text)
+    character(len=len_trim(scheme_list_padded())) :: text
+    text = scheme_list_padded()
   end function scheme_list
 
   !> The paper's symmetric three-plane RIA (gamma_hat = 1/3; -theta_0, 0, +theta_0; the middle
@@ -480,9 +495,10 @@ contains
   end subroutine derive_kernel
 
   !> Why interlock_material_derive refused the parameters.
+  !> (a fixed length, blank-padded: see interlock_numbers:format_real)
   pure function derived_range_message(mat) result(message)
     type(interlock_material_t), intent(in) :: mat
-    character(len=:), allocatable :: message
+    character(len=message_len) :: message
     if (.not. inverses_in_range(mat%eta, mat%h_n, minval(mat%zeta0(1:mat%n_planes)))) then
       message = 'eta = ' // format_real(mat%eta) // ', h_n = ' // format_real(mat%h_n) // &
                 ', zeta0 = ' // format_real(minval(mat%zeta0(1:mat%n_planes))) // &
@@ -497,12 +513,10 @@ contains
               'physical interface'
   end function derived_range_message
 
-  !> An angle given in radians, for a message: in degrees, or as given (in rad) where it is not
-  !> finite or so large that the conversion would overflow (tested on the bits first: a
-  !> signalling NaN traps in any comparison).
-  pure function degrees_text(x) result(text)
+  !> degrees_text's text, blank-padded (see interlock_numbers:format_real).
+  pure function degrees_text_padded(x) result(text)
     real(dp), intent(in) :: x
-    character(len=:), allocatable :: text
+    character(len=40) :: text
     logical :: small
     small = is_finite_bits(x)
     if (small) small = abs(x) < 1.0e300_dp
@@ -511,6 +525,15 @@ contains
     else
       text = format_real(x) // ' rad'
     end if
+  end function degrees_text_padded
+
+  !> An angle given in radians, for a message: in degrees, or as given (in rad) where it is not
+  !> finite or so large that the conversion would overflow (tested on the bits first: a
+  !> signalling NaN traps in any comparison).
+  pure function degrees_text(x) result(text)
+    real(dp), intent(in) :: x
+    character(len=len_trim(degrees_text_padded(x))) :: text
+    text = degrees_text_padded(x)
   end function degrees_text
 
   !> same_value of interlock_kinds for derive, where a call into another module would cost more

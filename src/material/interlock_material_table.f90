@@ -348,9 +348,10 @@ contains
     end if
   end subroutine check_property
 
-  !> The admissible range of property i as text, e.g. "0 < eta < 1".
-  pure function format_range(i) result(text)
+  !> format_range's text, blank-padded (see interlock_numbers:format_real).
+  pure function format_range_padded(i) result(padded)
     integer, intent(in) :: i
+    character(len=160) :: padded
     character(len=:), allocatable :: text
     type(property_t) :: p
     p = properties(i)
@@ -372,6 +373,14 @@ contains
       if (p%infinite_ok) text = text // ' (or >= 1e30 / Inf for infinity)'
       text = text // ' [' // trim(p%unit) // ']'
     end select
+    padded = text
+  end function format_range_padded
+
+  !> The admissible range of property i as text, e.g. "0 < eta < 1".
+  pure function format_range(i) result(text)
+    integer, intent(in) :: i
+    character(len=len_trim(format_range_padded(i))) :: text
+    text = format_range_padded(i)
   end function format_range
 
 end module interlock_material_table

@@ -9,7 +9,7 @@
 module interlock_substep_control
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t
-  use interlock_status, only: interlock_info_t, status_local_failure
+  use interlock_status, only: interlock_info_t, status_local_failure, message_len
   implicit none
   private
   public :: smallest_fraction, next_sub_increment, count_attempt, after_failure, keep_trial, &
@@ -117,8 +117,9 @@ contains
     end if
   end subroutine check_chain
 
+  !> (a fixed length: see interlock_numbers:format_real)
   pure function unstable_message() result(message)
-    character(len=:), allocatable :: message
+    character(len=message_len) :: message
     message = 'the update is unstable on small sub-increments (its derivative grows without ' // &
               'bound): use the implicit scheme or a smaller increment'
   end function unstable_message
