@@ -255,7 +255,8 @@ contains
     end do
     do g = 1, size(deck_groups)
       if (.not. scan(g)%present) cycle
-      call check_plane_indices(g, scan(g), planes_in_deck(deck%text, scan(2)), message)
+      call check_plane_indices(g, scan(g), planes_in_deck(deck%text, scan(2), 'n_planes'), &
+                               planes_in_deck(deck%text, scan(2), 'n_azimuths'), message)
       if (len_trim(message) == 0) call check_assignments(g, scan(g), message)
       if (len_trim(message) > 0) then
         message = path // ': &' // trim(deck_groups(g)) // ': ' // trim(message)
@@ -739,16 +740,18 @@ contains
 
   ! ----------------------------------------------------------------- the groups
 
-  !> The number of microplanes the deck declares: &microplanes n_planes when it is given (and
-  !> reads as an integer), else 0 (the paper's RIA, or not readable: left to the namelist read).
-  function planes_in_deck(text, micro) result(n)
+  !> The number of microplanes (name = 'n_planes') or azimuths ('n_azimuths') the deck
+  !> declares in &microplanes when it is given (and reads as an integer), else 0 (not given, or
+  !> not readable: left to the namelist read).
+  function planes_in_deck(text, micro, name) result(n)
     character(len=*), intent(in) :: text
     type(group_scan_t), intent(in) :: micro
+    character(len=*), intent(in) :: name   !< 'n_planes' or 'n_azimuths'
     integer :: n, k, ios
     character(len=:), allocatable :: value
     n = 0
     do k = 1, micro%n
-      if (trim(micro%a(k)%name) /= 'n_planes' .or. len_trim(micro%a(k)%subscript) > 0) cycle
+      if (trim(micro%a(k)%name) /= name .or. len_trim(micro%a(k)%subscript) > 0) cycle
       value = value_text(text, micro%a(k))
       read (value, *, iostat=ios) n
       if (ios /= 0) n = 0

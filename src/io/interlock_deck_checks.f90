@@ -2,7 +2,7 @@
 !> for messages), the "not given" marks, and the checks and messages of values: a namelist read
 !> that failed, a required value, a value out of its range or not finite, plane indices.
 module interlock_deck_checks
-  use interlock, only: dp, max_planes, properties, check_property, format_range, format_integer, &
+  use interlock, only: dp, max_planes, max_azimuths, properties, check_property, format_range, format_integer, &
       format_real, is_nan_value, same_value, is_infinite_value
   use interlock_deck_text, only: group_scan_t, probe_text, value_text, lower
   implicit none
@@ -131,10 +131,11 @@ contains
 
   !> An element of a per-plane array, `name(k) = value`, must name a plane: 1 <= k <= n_planes
   !> (the paper's RIA without n_planes: one value in &microplanes, its 3 planes in
-  !> &initial_state), and k <= max_planes in any case. Checked before the duplicates, so that
+  !> &initial_state; the azimuthal RIA's 1 + 2 n_azimuths there), and k <= max_planes in any
+  !> case. Checked before the duplicates, so that
   !> `theta0_deg = -10, 10` followed by `theta0_deg(3) = 5` says that plane 3 does not exist.
-  subroutine check_plane_indices(g, scan, n_planes, message)
-    integer, intent(in) :: g, n_planes
+  subroutine check_plane_indices(g, scan, n_planes, n_azimuths, message)
+    integer, intent(in) :: g, n_planes, n_azimuths
     type(group_scan_t), intent(in) :: scan
     character(len=*), intent(out) :: message
     integer :: k, index_value, limit, ios
@@ -154,6 +155,10 @@ contains
         limit = 1
         why = 'without n_planes, the paper''s RIA takes one value (give n_planes for a ' // &
               'general RIA)'
+      else if (n_azimuths >= 1 .and. n_azimuths <= max_azimuths) then
+        limit = 1 + 2 * n_azimuths
+        why = 'the azimuthal RIA with n_azimuths = ' // format_integer(n_azimuths) // ' has ' // &
+              format_integer(limit) // ' planes'
       else
         limit = 3
         why = 'the paper''s RIA has 3 planes (no n_planes in &microplanes)'
