@@ -29,6 +29,13 @@ MODE
                (+-0.01), and the spread of the peak over the directions, (max - min) / max,
                about 4 %, 7 % and 1.6 % at N_a = 2, 3, 6 (+-0.5, +-0.5 and +-0.2 points: the
                quoted digits); the spread falls from N_a = 3 to 6.
+  scenes       the figures docs/three-dimensions.md quotes from the shipped decks, around the
+               physics they show: on the second turn of granite_3d_circle the traction lags the
+               slip direction (> 0) by 17 to 26 deg (16.5..26.5; the range SPEC section 9
+               quotes); as a regression guard of the page (our own numbers), after
+               granite_3d_anisotropy's
+               3 mm along t1 and back the peak along t2 is lower than the virgin joint's
+               (granite_3d_anisotropy_virgin) by more than 10 %: 2.11 against 2.47 MPa (+-0.005).
   restart      a 3D history restarted from one of its rows (&initial_state with every per-plane
                dataset, the strike components sf_strike and tauf_strike, and the three
                separations and tractions, as a replay deck gives them) continues it: the rows
@@ -287,6 +294,38 @@ def mode_sweep(program, work):
     return failures
 
 
+def mode_scenes(program, work):
+    inputs = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "inputs")
+    failures = 0
+
+    def shipped(name):
+        with open(os.path.join(inputs, name + ".nml")) as f:
+            h5 = run(program, os.path.join(work, name + ".nml"), f.read(), work)
+        with h5py.File(h5, "r") as f:
+            g = f["cases"]["0001"]
+            return g["separation"][()], g["traction"][()]
+
+    sep, tr = shipped("granite_3d_circle")
+    slip = np.diff(sep[:, 1:3], axis=0)
+    lag = np.degrees((np.arctan2(slip[:, 1], slip[:, 0]) - np.arctan2(tr[1:, 2], tr[1:, 1]) +
+                      np.pi) % (2 * np.pi) - np.pi)
+    second = lag[1 + 250 + 1000 - 1:]   # the deck's steps: preload, the leg out, two turns
+    ok = len(second) == 1000 and second.min() > 16.5 and second.max() < 26.5
+    failures += not ok
+    print(f"{'ok  ' if ok else 'FAIL'} circle, second turn: the traction lags the slip direction "
+          f"by {second.min():.1f} to {second.max():.1f} deg (docs: 17 to 26)")
+    _, worn = shipped("granite_3d_anisotropy")
+    _, virgin = shipped("granite_3d_anisotropy_virgin")
+    peak_worn = float(np.max(np.abs(worn[-600:, 2])))   # the last leg: 3 mm along t2
+    peak_virgin = float(np.max(np.abs(virgin[:, 2])))
+    ok = (peak_worn < 0.9 * peak_virgin and abs(peak_worn - 2.11) <= 0.005 and
+          abs(peak_virgin - 2.47) <= 0.005)
+    failures += not ok
+    print(f"{'ok  ' if ok else 'FAIL'} induced anisotropy: peak along t2 {peak_worn:.4f} MPa "
+          f"after 3 mm along t1 and back, {peak_virgin:.4f} MPa virgin (docs: 2.11, 2.47)")
+    return failures
+
+
 RESTART_PLANES = ("damage", "beta", "frictional_slip", "zeta", "theta", "friction_traction",
                   "sf_strike", "tauf_strike")
 
@@ -377,6 +416,8 @@ def main(argv):
         failures = mode_sweep(program, work)
     elif mode == "restart":
         failures = mode_restart(program, work)
+    elif mode == "scenes":
+        failures = mode_scenes(program, work)
     else:
         print(__doc__)
         return 2
