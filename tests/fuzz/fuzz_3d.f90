@@ -374,11 +374,16 @@ contains
     real(dp), intent(in) :: s(3)
     character(len=*), intent(in) :: why
     type(fuzz_3d_counts_t), intent(inout) :: c
-    integer :: n
+    integer :: n, ios
+    character(len=64) :: deck
     n = mat%n_planes
     c%failures = c%failures + 1
     write (output_unit, '(a,i0,a)') 'FAIL 3D at update ', c%updates, ': ' // trim(why)
     if (c%failures > 5) return
+    ! (a replay deck of the update, in the working folder, for interlock-history)
+    write (deck, '(a,i0,a)') 'fuzz_3d_fail', c%failures, '.nml'
+    call interlock_write_replay_deck(trim(deck), mat, solver, old, s, why, ios)
+    if (ios == 0) write (output_unit, '(a)') '  replay deck ' // trim(deck)
     write (output_unit, '(a,6es24.16,l2)') '  sigma0_n, sigma0_t, gc, eta, mu, h_n, pre: ', &
       mat%sigma0_n, mat%sigma0_t, mat%gc, mat%eta, mat%mu, mat%h_n, mat%prefractured
     write (output_unit, '(a,5l2)') '  effects ', mat%effect
