@@ -521,6 +521,19 @@ contains
         iterations = rt%iterations
         ok = rt%ok
         if (.not. ok) return
+        if (.not. drv%v > 0.0_dp) then
+          ! The root is where the plane just loses contact (very fast wear turns it until
+          ! then), within round-off of that kink, and the last point is on the open side: take
+          ! the closed side's last point, rt%lo (F < 0 there, so some work: the plane is in
+          ! contact), a few ulps from the root, so that the angle's derivative and the
+          ! traction's come from the same side (mixed, they are neither one-sided derivative).
+          rt%x = rt%lo
+          z = constant(rt%x)
+          z%d(4) = 1.0_dp
+          theta = worn_angle_3d(mat, k, z)
+          call evaluate(mat, cp, sp, k, theta, s, o, a_end, g_slip, trapezoidal, p, drv)
+          fp = 1.0_dp - drv%d(4)
+        end if
         zeta%v = rt%x
       end if
       ! d zeta = (d zeta_o + dG) / F' at the root, then the angle with it
