@@ -495,25 +495,12 @@ contains
                 said_start_strain, noel, npt, kinc, cmname, pnewdt)
   end subroutine reject_start_separation
 
-  !> separation_text's text, blank-padded (see interlock_numbers:format_real).
-  pure function separation_text_padded(s) result(padded)
-    use interlock, only: format_real
-    real(dp), intent(in) :: s(:)
-    character(len=120) :: padded
-    character(len=:), allocatable :: text
-    integer :: i
-    text = '(' // format_real(s(1))
-    do i = 2, size(s)
-      text = text // ', ' // format_real(s(i))
-    end do
-    padded = text // ')'
-  end function separation_text_padded
-
   !> "(x, y)" or "(x, y, z)".
   pure function separation_text(s) result(text)
+    use interlock, only: format_reals
     real(dp), intent(in) :: s(:)
-    character(len=len_trim(separation_text_padded(s))) :: text
-    text = separation_text_padded(s)
+    character(len=len(format_reals(s)) + 2) :: text
+    text = '(' // format_reals(s) // ')'
   end function separation_text
 
   !> The message of a diverged global iteration: `what` ("DSTRAN = (x, y) mm") is not finite

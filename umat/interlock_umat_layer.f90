@@ -68,7 +68,7 @@
 !> its lock); `recursive`: every local on the stack.
 module interlock_umat_layer
   use, intrinsic :: iso_fortran_env, only: int64
-  use interlock, only: dp, message_len, format_integer, format_real, umat_nstatv, &
+  use interlock, only: dp, message_len, format_integer, format_real, format_reals, umat_nstatv, &
       n_required_properties, n_properties, separation_bound, is_finite_bits, umat_nstatv_3d, &
       props_n_planes_3d
   use interlock_numbers, only: key_in_range
@@ -395,7 +395,7 @@ contains
         'component ' // format_integer(worst) // ' = ' // format_real(strain(worst)) // &
         ', which does not involve normal_axis = ' // format_integer(normal) // ', exceeds ' // &
         format_real(axes_suspect_strain) // ' and the interface strains (' // &
-        trim(strain_text(strain(comp(1:m)))) // '): in a ' // &
+        format_reals(strain(comp(1:m))) // '): in a ' // &
         'thin layer only the components of its normal are large; is normal_axis the ' // &
         "layer's thin direction in the element's local axes (*ORIENTATION)?")
     end subroutine check_axes
@@ -460,19 +460,6 @@ contains
         if (transfer(d2(1, 1), 0_int64) /= transfer(untouched, 0_int64)) d(1:2, 1:2) = d2
       end if
     end subroutine law
-
-    !> "x, y" or "x, y, z".
-    pure function strain_text(x) result(padded)
-      real(dp), intent(in) :: x(:)
-      character(len=240) :: padded
-      character(len=:), allocatable :: text
-      integer :: j
-      text = format_real(x(1))
-      do j = 2, size(x)
-        text = text // ', ' // format_real(x(j))
-      end do
-      padded = text
-    end function strain_text
 
     !> One line naming the point (once per material and `kind`); bad input for the host.
     subroutine fail(why, kind)

@@ -8,7 +8,7 @@ module interlock
       same_value, exponent_bits, within_separation_bound
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure, &
       message_len
-  use interlock_numbers, only: key_in_range, keys_in_range, format_real, format_integer
+  use interlock_numbers, only: key_in_range, keys_in_range, format_real, format_reals, format_integer
   use interlock_material_table
   use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, &
       max_azimuths, interlock_material_prepare, interlock_paper_ria, &

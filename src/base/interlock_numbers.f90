@@ -6,7 +6,8 @@ module interlock_numbers
   use interlock_kinds, only: dp, same_value, is_finite_bits, is_nan_value
   implicit none
   private
-  public :: keys_in_range, key_in_range, is_flag, is_whole, format_real, format_integer
+  public :: keys_in_range, key_in_range, is_flag, is_whole, format_real, format_reals, &
+            format_integer
 
 contains
 
@@ -111,6 +112,26 @@ contains
     character(len=len_trim(real_text(x))) :: text
     text = real_text(x)
   end function format_real
+
+  !> format_reals' text, blank-padded.
+  pure function reals_text(x) result(padded)
+    real(dp), intent(in) :: x(:)
+    character(len=240) :: padded
+    character(len=:), allocatable :: text
+    integer :: i
+    text = format_real(x(1))
+    do i = 2, size(x)
+      text = text // ', ' // format_real(x(i))
+    end do
+    padded = text
+  end function reals_text
+
+  !> Reals as a list (format_real each): "x, y, z".
+  pure function format_reals(x) result(text)
+    real(dp), intent(in) :: x(:)
+    character(len=len_trim(reals_text(x))) :: text
+    text = reals_text(x)
+  end function format_reals
 
   !> format_integer's text for a 64-bit integer, blank-padded.
   pure function format_integer_8(i) result(text)

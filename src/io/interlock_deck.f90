@@ -400,14 +400,10 @@ contains
                                d%zeta0(1))
     else
       n = d%n_planes
-      if (deck%azimuths_given) then
-        call interlock_general_ria(mat, n, d%gamma_hat(1:n), d%theta0_deg(1:n) * deg_to_rad, &
-                                   d%thetaf_deg(1:n) * deg_to_rad, d%zeta0(1:n), &
-                                   deck%phi_deg(1:n) * deg_to_rad)
-      else
-        call interlock_general_ria(mat, n, d%gamma_hat(1:n), d%theta0_deg(1:n) * deg_to_rad, &
-                                   d%thetaf_deg(1:n) * deg_to_rad, d%zeta0(1:n))
-      end if
+      ! (deck%phi_deg is 0 where the deck gives no azimuths)
+      call interlock_general_ria(mat, n, d%gamma_hat(1:n), d%theta0_deg(1:n) * deg_to_rad, &
+                                 d%thetaf_deg(1:n) * deg_to_rad, d%zeta0(1:n), &
+                                 deck%phi_deg(1:n) * deg_to_rad)
     end if
     why = scale_check(mat)
     if (len_trim(why) == 0) call interlock_material_prepare(mat, stat, why)

@@ -161,16 +161,8 @@ contains
   pure subroutine interlock_paper_ria(mat, theta0, thetaf, zeta0)
     type(interlock_material_t), intent(inout) :: mat
     real(dp), intent(in) :: theta0, thetaf, zeta0
-    mat%n_planes = 3
-    mat%gamma_hat = 0.0_dp
-    mat%gamma_hat(1:3) = 1.0_dp / 3.0_dp
-    mat%theta0 = 0.0_dp
-    mat%thetaf = 0.0_dp
-    mat%zeta0 = huge(1.0_dp)
-    mat%theta0(1:3) = [-theta0, 0.0_dp, theta0]
-    mat%thetaf(1:3) = [-thetaf, 0.0_dp, thetaf]
-    mat%zeta0(1:3) = [zeta0, huge(1.0_dp), zeta0]
-    mat%phi = 0.0_dp
+    call interlock_general_ria(mat, 3, spread(1.0_dp / 3.0_dp, 1, 3), [-theta0, 0.0_dp, theta0], &
+                               [-thetaf, 0.0_dp, thetaf], [zeta0, huge(1.0_dp), zeta0])
   end subroutine interlock_paper_ria
 
   !> A general RIA of n_planes = n planes (n <= max_planes; interlock_material_prepare checks
