@@ -1,6 +1,6 @@
-!> A small assertion layer shaped like pFUnit's: tolerance-based checks that print the
-!> expected and actual values and the tolerance, and count failures, so that a later port to
-!> pFUnit (@assertEqual(expected, actual, tolerance)) is mechanical.
+!> A small assertion layer shaped like pFUnit's (@assertEqual(expected, actual, tolerance)):
+!> tolerance-based checks that print the expected and actual values and the tolerance, and
+!> count failures.
 module interlock_assert
   use, intrinsic :: iso_fortran_env, only: real64, output_unit
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite

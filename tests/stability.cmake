@@ -49,10 +49,9 @@ add_test(NAME stability_fuzz_3d COMMAND interlock-fuzz --3d 50000 --seed 5)
 set_tests_properties(stability_fuzz_3d PROPERTIES TIMEOUT 600 LABELS stability
   PASS_REGULAR_EXPRESSION "--3d: seed 5, [0-9]+ materials .*failures 0;"
   FAIL_REGULAR_EXPRESSION "FAIL|ERROR STOP|Floating-point exception")
-# A longer run whose update 686270 put a wearing plane's wear-equation root within round-off of
-# the point where the plane loses contact (zeta_0 = 3e-4 N/mm, implicit): the tangent mixed the
-# two sides there (4.8 against one-sided derivatives of 0.024 and 0.026) until the root was
-# taken from the contact side.
+# A longer run: its update 686270 puts a wearing plane's wear-equation root within round-off of
+# the point where the plane loses contact (zeta_0 = 3e-4 N/mm, implicit), where the tangent
+# must come from the contact side (docs/model.md, the wear root at the contact kink).
 add_test(NAME stability_fuzz_3d_long COMMAND interlock-fuzz --3d 700000 --seed 20261126)
 set_tests_properties(stability_fuzz_3d_long PROPERTIES TIMEOUT 1200 LABELS stability
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/fuzz_decks
