@@ -15,7 +15,7 @@ module interlock_fit_deck
   implicit none
   private
   public :: fit_t, curve_t, stage_t, read_fit_deck, output_names, n_outputs, fit_groups, &
-            split_branches, deck_value, join_selected, law_angles
+            split_branches, deck_value, join_selected, law_angles, folder_of
 
   integer, parameter :: max_curves = 32, max_free = 16, max_stages = 16
   integer, parameter :: name_len = 64, file_len = 1024, list_len = 1024
@@ -765,6 +765,7 @@ contains
                                             [(output_in_deck(k, deck), k = 1, n_outputs)]))
   end function deck_outputs
 
+  !> The folder part of `path` with its final '/' ('' for a bare file name).
   function folder_of(path) result(folder)
     character(len=*), intent(in) :: path
     character(len=:), allocatable :: folder

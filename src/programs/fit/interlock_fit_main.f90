@@ -5,15 +5,17 @@
 !> (max_iterations, or no step lowers the cost).
 program interlock_fit
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-  use interlock_cli, only: exit_program, command_argument, command_text
+  use interlock_cli, only: exit_program, command_argument, command_text, folder_writable, &
+      warn
   use interlock, only: dp, interlock_version_string, format_integer, format_real
   use interlock_h5, only: h5_open_library, h5_close_library
   use interlock_files, only: is_folder
   use interlock_mixed_control, only: history_t
   use interlock_history_output, only: output_check_target
-  use interlock_fit_deck, only: fit_t, read_fit_deck, join_selected, output_names
+  use interlock_fit_deck, only: fit_t, read_fit_deck, join_selected, output_names, folder_of
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-  use interlock_files, only: remove_file, rename_file, unguard_file
+  use interlock_files, only: remove_file, rename_file, unguard_file, guard_signals, &
+      hold_signals
   use interlock_fit_model, only: fit_problem_t, fit_history, curve_model, history_output, &
       bound_state
   use interlock_fit_output, only: stage_outcome_t, curve_outcome_t, discretization_t, &
@@ -83,6 +85,12 @@ program interlock_fit
     end if
   end if
   command = command_text()
+  ! the guard's handlers before the fit: a signal ends it as it ends interlock-history
+  call guard_signals(stat)
+  if (stat /= 0) then
+    write (error_unit, '(a)') 'interlock-fit: error: cannot install the signal handlers'
+    call exit_program(1)
+  end if
   call h5_open_library(stat)
   if (stat /= 0) then
     write (error_unit, '(a)') 'interlock-fit: error: cannot initialise the HDF5 library'
@@ -105,7 +113,8 @@ contains
     type(discretization_t) :: disc
     type(history_t) :: hist
     character(len=1024) :: message
-    character(len=:), allocatable :: base, h5_name, deck_name, why, statistics, deck_temp
+    character(len=:), allocatable :: base, h5_name, deck_name, why, statistics, deck_temp, &
+        h5_temp, folder
     character(len=20), allocatable :: at_bound(:)
     real(dp), allocatable :: values(:), r(:), jac(:, :), typical(:), x0(:)
     real(dp) :: t0, t1
@@ -135,9 +144,17 @@ contains
       write (error_unit, '(a)') 'interlock-fit: error: ' // path // ': ' // trim(message)
       return
     end if
+    folder = folder_of(base)
+    if (len(folder) == 0) folder = './'
+    if (.not. folder_writable(folder)) then
+      write (error_unit, '(a)') 'interlock-fit: error: ' // path // ': cannot write into ' // &
+        'the folder ' // folder // ' (' // h5_name // ', ' // deck_name // '): checked ' // &
+        'before the fit; --output-dir DIR writes elsewhere'
+      return
+    end if
     call scale_check(fit)
     do k = 1, size(fit%warnings)
-      write (output_unit, '(a)') 'interlock-fit: warning: ' // path // ': ' // trim(fit%warnings(k))
+      call warn('interlock-fit', path // ': ' // trim(fit%warnings(k)))
     end do
 
     values = fit%start
@@ -181,9 +198,9 @@ contains
                stages(k)%result%reason)
       if (.not. stages(k)%result%converged) then
         rc = 2
-        write (output_unit, '(a)') 'interlock-fit: stage ' // format_integer(k) // &
+        call warn('interlock-fit', path // ': stage ' // format_integer(k) // &
           ' did NOT converge: ' // stages(k)%result%reason // ' (its last accepted values ' // &
-          'are kept; the results below are written, exit status 2)'
+          'are kept; the results are written, exit status 2)')
       end if
     end do
 
@@ -231,22 +248,34 @@ contains
     end do
     call report(fit, values, stats, curves, problem%m, at_bound, statistics, disc)
 
-    ! the fitted deck as a temporary file, the fit file, then the deck's rename: a failure
-    ! anywhere leaves neither file (exit 1)
+    ! both files under temporary names, then both renames with the signals from outside held,
+    ! so that no signal ends the program between them: a failure anywhere leaves neither file
+    ! new (exit 1), and the two files there always belong together
     call write_fitted_deck(deck_name, fit, values, deck_temp, stat, message)
     if (stat == 0) then
       call write_fit_file(h5_name, fit, command, values, stats, stages, curves, deck_name, &
-                          at_bound, statistics, disc, stat, message)
+                          at_bound, statistics, disc, h5_temp, stat, message)
       if (stat /= 0) call remove_file(deck_temp)
     end if
     if (stat == 0) then
-      call rename_file(deck_temp, deck_name, stat)
+      call hold_signals(.true.)
+      call rename_file(h5_temp, h5_name, stat)
       if (stat /= 0) then
-        message = 'cannot rename ' // deck_temp // ' to ' // deck_name // ' (' // h5_name // &
-                  ' removed too)'
+        message = 'cannot rename ' // h5_temp // ' to ' // h5_name
+        call remove_file(h5_temp)
         call remove_file(deck_temp)
-        call remove_file(h5_name)
+      else
+        call rename_file(deck_temp, deck_name, stat)
+        if (stat /= 0) then
+          message = 'cannot rename ' // deck_temp // ' to ' // deck_name // ' (' // h5_name // &
+                    ' removed too)'
+          call remove_file(deck_temp)
+          call remove_file(h5_name)
+        end if
       end if
+      call unguard_file(h5_temp)
+      call unguard_file(deck_temp)
+      call hold_signals(.false.)
     end if
     if (allocated(deck_temp)) call unguard_file(deck_temp)
     if (stat /= 0) then
