@@ -17,7 +17,7 @@ program interlock_fit
   use interlock_files, only: remove_file, rename_file, unguard_file, guard_signals, &
       hold_signals
   use interlock_fit_model, only: fit_problem_t, fit_history, curve_model, history_output, &
-      bound_state
+      bound_state, abscissa_held
   use interlock_fit_output, only: stage_outcome_t, curve_outcome_t, discretization_t, &
       write_fit_file, write_fitted_deck, fitted_deck_check
   use interlock_lm, only: lm_solve, lm_jacobian, lm_statistics, lm_stats_t, lm_evaluate, &
@@ -152,7 +152,11 @@ contains
         'before the fit; --output-dir DIR writes elsewhere'
       return
     end if
-    call scale_check(fit)
+    call scale_check(fit, message)
+    if (len_trim(message) > 0) then
+      write (error_unit, '(a)') 'interlock-fit: error: ' // path // ': ' // trim(message)
+      return
+    end if
     do k = 1, size(fit%warnings)
       call warn('interlock-fit', path // ': ' // trim(fit%warnings(k)))
     end do
@@ -290,19 +294,24 @@ contains
   !> Curves on another scale than the model at the start values (the deck's units are mm and
   !> MPa: a slip in metres spans a thousandth of the history's): each is a warning in
   !> fit%warnings. Branch matching would compare such a curve with the first thousandth of each
-  !> branch of the history, and the fit would chase parameters far off.
-  subroutine scale_check(fit)
+  !> branch of the history, and the fit would chase parameters far off. And an abscissa that
+  !> does not identify a point of the history (abscissa_held): an error, in `message`.
+  subroutine scale_check(fit, message)
     type(fit_t), intent(inout) :: fit
+    character(len=*), intent(out) :: message
     type(history_t) :: hist
     character(len=:), allocatable :: why
     real(dp), allocatable :: hx(:), hy(:)
     real(dp) :: data_span, model_span, ratio
     character(len=512) :: line
     integer :: k
+    message = ''
     call fit_history(fit, fit%start, hist, why)
     if (len(why) > 0 .or. hist%n_rows < 2) return   ! the first stage reports it
     do k = 1, size(fit%curves)
       associate (c => fit%curves(k))
+        message = abscissa_held(c, hist, fit%deck)
+        if (len_trim(message) > 0) return
         hx = history_output(hist, c%along)
         hy = history_output(hist, c%against)
         data_span = maxval(c%x) - minval(c%x)
