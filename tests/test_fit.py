@@ -314,7 +314,7 @@ def coupled(fit, history):
         rc, out, err = fit_run(fit, "metres.nml", work, "-q")
         assert rc in (0, 2), (rc, err)
         assert "(1000 times more): is the curve in other units than the deck (mm, MPa; a slip " \
-               "in metres)?" in out, out
+               "in metres)?" in err and "warning" not in out, (out, err)
         with h5py.File(os.path.join(work, "metres_fit.h5"), "r") as f:
             assert any("slip in metres" in str(x) for x in f.attrs["warnings"])
     print("the optimum on theta_f = theta_0: converged, written, reported at the limit; "
@@ -343,7 +343,8 @@ def inputs(fit, history):
         run([sys.executable, MAKE_DATA, history, "gen_worn.nml", "worn.csv"], work)
         rc, out, err = fit_run(fit, "b16_short_weight.nml", work, "-q")
         assert rc == 0, err
-        assert "curve_weight gives one value for 2 curves: it applies to every curve" in out, out
+        assert "curve_weight gives one value for 2 curves: it applies to every curve" in err, err
+        assert "warning" not in out, out      # warnings go to standard error
         with h5py.File(os.path.join(work, "b16_short_weight_fit.h5"), "r") as f:
             w = [f["curves"][c]["weight"][()] for c in ("shear", "dilation")]
             assert any("curve_weight" in str(x) for x in f.attrs["warnings"])

@@ -7,7 +7,8 @@ program interlock_fit
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
   use interlock_cli, only: exit_program, command_argument, command_text, folder_writable, &
       warn
-  use interlock, only: dp, interlock_version_string, format_integer, format_real
+  use interlock, only: dp, interlock_version_string, format_integer, format_real, scheme_name, &
+      scheme_trapezoidal
   use interlock_h5, only: h5_open_library, h5_close_library
   use interlock_files, only: is_folder
   use interlock_mixed_control, only: history_t
@@ -17,7 +18,7 @@ program interlock_fit
   use interlock_files, only: remove_file, rename_file, unguard_file, guard_signals, &
       hold_signals
   use interlock_fit_model, only: fit_problem_t, fit_history, curve_model, history_output, &
-      bound_state, abscissa_held
+      bound_state, abscissa_held, scheme_order
   use interlock_fit_output, only: stage_outcome_t, curve_outcome_t, discretization_t, &
       write_fit_file, write_fitted_deck, fitted_deck_check
   use interlock_lm, only: lm_solve, lm_jacobian, lm_statistics, lm_stats_t, lm_evaluate, &
@@ -232,6 +233,7 @@ contains
       disc%note = 'not computed (no statistics)'
       rc = 2
     end if
+    disc%order = scheme_order(fit%deck%solver%scheme, fit%deck%n_components, fit%deck%extrapolate)
     at_bound = bound_state(fit, values)
 
     ! the curves at the fitted values (the residuals there were computed: the history runs)
@@ -352,8 +354,9 @@ contains
   !> The discretization check: the fitted model's history with twice the steps per segment
   !> (fit_history refine = 2), and the change of the fitted values this implies, linearised at
   !> the optimum with the Jacobian of the statistics: dp = -J^+ (r_2N - r_N) (the residuals of
-  !> the finer history at the fitted values minus those of the fit's own). The fit's bias
-  !> against the exact law is about the change times 2^q / (2^q - 1) for a scheme of order q.
+  !> the finer history at the fitted values minus those of the fit's own). By Richardson, with
+  !> an error C/N^q of the scheme's order q (scheme_order), the fit's bias against the exact law
+  !> is about -dp 2^q / (2^q - 1) (and the finer fit's -dp / (2^q - 1)).
   subroutine discretization_check(fit, values, r, jac, stats, disc)
     type(fit_t), intent(in) :: fit
     real(dp), intent(in) :: values(:), r(:), jac(:, :)
@@ -406,7 +409,8 @@ contains
     integer, intent(in) :: m
     character(len=*), intent(in) :: at_bound(:), statistics
     type(discretization_t), intent(in) :: disc
-    integer :: i, j, n
+    integer :: i, j, n, order
+    real(dp) :: factor
     character(len=200) :: line
     character(len=:), allocatable :: flags, bad
 
@@ -465,22 +469,57 @@ contains
       write (output_unit, '(a)') 'discretization check ' // disc%note
       return
     end if
+    order = disc%order
+    factor = 2.0_dp**order / (2.0_dp**order - 1.0_dp)
     write (output_unit, '(a)') 'discretization check (the fitted model with twice the steps ' // &
-      'per segment: the change of the fitted values it implies):'
-    write (output_unit, '(a16, a24, a24)') 'parameter', 'change', 'change / std. error'
+      'per segment: the change of the fitted values it implies; the bias of the fitted values ' // &
+      'against the exact law is about -' // format_real(factor) // 'x the change: ' // &
+      scheme_text(fit) // ', order ' // format_integer(order) // '):'
+    write (output_unit, '(a16, 3a24)') 'parameter', 'change', 'change / std. error', 'bias'
     do i = 1, n
-      write (output_unit, '(a16, es24.4, f24.4)') trim(fit%names(i)), disc%change(i), disc%ratio(i)
+      write (output_unit, '(a16, es24.4, f24.4, es24.4)') trim(fit%names(i)), disc%change(i), &
+        disc%ratio(i), -factor * disc%change(i)
     end do
     if (maxval(abs(disc%ratio)) >= 0.1_dp) then
-      write (output_unit, '(a)') 'WARNING: the steps move the fit by more than 0.1 standard ' // &
-        'error (the bias against the exact law is about 2x this change for a first-order ' // &
-        'scheme, explicit or implicit, 4/3x for trapezoidal or extrapolate): give more ' // &
-        'steps, scheme = ''trapezoidal'' or extrapolate = .true. (docs/fit.md)'
+      write (output_unit, '(a)') 'the steps move the fit by more than 0.1 standard error'
+      call warn('interlock-fit', fit%deck%path // ': the steps move the fit by more than 0.1 ' // &
+        'standard error (the bias against the exact law is about ' // format_real(factor) // &
+        'x the change: ' // scheme_text(fit) // ' is of order ' // format_integer(order) // &
+        '): ' // finer_steps(fit, order) // ' (docs/fit.md, "The steps")')
     else
       write (output_unit, '(a)') 'the steps are fine enough: every change is below 0.1 ' // &
         'standard error'
     end if
   end subroutine report
+
+  !> "the trapezoidal scheme in 3D" (with ", extrapolated" where the deck extrapolates).
+  function scheme_text(fit) result(text)
+    type(fit_t), intent(in) :: fit
+    character(len=:), allocatable :: text
+    text = 'the ' // trim(scheme_name(fit%deck%solver%scheme)) // ' scheme'
+    if (fit%deck%extrapolate) text = text // ', extrapolated,'
+    text = text // ' in ' // format_integer(fit%deck%n_components) // 'D'
+  end function scheme_text
+
+  !> What lowers the bias of the deck's steps (order `order`): more steps, and each change of
+  !> the &solver that raises the order in the deck's dimension (scheme_order), never the
+  !> deck's own choice.
+  function finer_steps(fit, order) result(text)
+    type(fit_t), intent(in) :: fit
+    integer, intent(in) :: order
+    character(len=:), allocatable :: text
+    integer :: q
+    text = 'give more steps (twice the steps make the bias ' // format_real(0.5_dp**order) // &
+           'x as large)'
+    associate (d => fit%deck)
+      q = scheme_order(scheme_trapezoidal, d%n_components, d%extrapolate)
+      if (d%solver%scheme /= scheme_trapezoidal .and. q > order) &
+        text = text // ', or scheme = ''trapezoidal'' (order ' // format_integer(q) // ' here)'
+      q = scheme_order(d%solver%scheme, d%n_components, .true.)
+      if (.not. d%extrapolate .and. q > order) &
+        text = text // ', or extrapolate = .true. (order ' // format_integer(q) // ' here)'
+    end associate
+  end function finer_steps
 
   pure function to_upper(text) result(up)
     character(len=*), intent(in) :: text

@@ -9,7 +9,7 @@
 module interlock_fit_model
   use, intrinsic :: iso_fortran_env, only: output_unit
   use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_3d_t, &
-      prop_theta0, prop_thetaf, status_ok, format_integer, format_real
+      prop_theta0, prop_thetaf, status_ok, format_integer, format_real, scheme_trapezoidal
   use interlock_deck, only: deck_t, deck_case, deck_set_property, deck_loading
   use interlock_mixed_control, only: history_t, run_history, run_history_extrapolated, arc_t
   use interlock_fit_deck, only: fit_t, curve_t, split_branches, law_angles, output_names, out_separation_t1, &
@@ -18,7 +18,7 @@ module interlock_fit_model
   implicit none
   private
   public :: fit_problem_t, fit_history, curve_model, history_output, bound_state, law_project, &
-            abscissa_held
+            abscissa_held, scheme_order
 
   !> One stage's least-squares problem: all parameters' current values, the free ones of the
   !> stage (x of the problem) and its curves.
@@ -90,6 +90,21 @@ contains
     if (hist%status /= 'completed') message = 'at ' // parameter_text(fit, values) // &
                                               ': the history ' // hist%status
   end subroutine fit_history
+
+  !> The order in the step of a history integrated by `scheme` (scheme_explicit, _implicit,
+  !> _trapezoidal) in `n_components` dimensions (2 or 3), with (`extrapolate`) or without the
+  !> history's global Richardson extrapolation. This states the schemes' measured orders
+  !> (docs/model.md section 5, SPEC section 9); the discretization check's bias estimate and
+  !> advice follow from it. Explicit and implicit: first order. Trapezoidal: second order in 2D;
+  !> first order in 3D, where its slip direction is radial return (SPEC D14 makes it second
+  !> order there: then this returns 2 for it in 3D too). Extrapolation, 2 u(2n) - u(n): second
+  !> order in 2D from any scheme; in 3D not measured, so counted as the scheme's own order.
+  pure integer function scheme_order(scheme, n_components, extrapolate) result(order)
+    integer, intent(in) :: scheme, n_components
+    logical, intent(in) :: extrapolate
+    order = 1
+    if (n_components == 2 .and. (scheme == scheme_trapezoidal .or. extrapolate)) order = 2
+  end function scheme_order
 
   !> "name = value, ..." of every parameter, as the deck gives them (angles as magnitudes).
   function parameter_text(fit, values) result(text)

@@ -42,6 +42,7 @@ module interlock_fit_output
   type :: discretization_t
     real(dp), allocatable :: change(:), ratio(:)
     character(len=:), allocatable :: note
+    integer :: order = 1   !< the order of the deck's scheme in its dimension (scheme_order)
   end type discretization_t
 
 contains
@@ -82,6 +83,7 @@ contains
     if (stat == 0) call h5_attribute(out%file, 'discretization_change', disc%change, stat)
     if (stat == 0) call h5_attribute(out%file, 'discretization_change_se', disc%ratio, stat)
     if (stat == 0) call h5_attribute(out%file, 'discretization_check', disc%note, stat)
+    if (stat == 0) call h5_attribute(out%file, 'discretization_order', disc%order, stat)
     if (stat == 0 .and. size(fit%warnings) > 0) &
       call h5_attribute(out%file, 'warnings', fit%warnings, stat)
     if (stat == 0) call h5_attribute(out%file, 'values', values, stat)
