@@ -2,8 +2,10 @@
 """Bad decks must be rejected (by interlock-history, or interlock-fit given as PROGRAM): the
 program exits with status 1, its error output names the deck file and holds every fragment of
 NAME.expected (whitespace runs compare as one space), it prints no Fortran runtime error, it
-finishes within the time limit, and it leaves no result file and no temporary file behind (the
-output folder holds nothing new afterwards).
+finishes within the time limit, it prints no runtime warning and no byte that is not printable
+text (a control character or bytes that are not UTF-8: a binary deck or curve file is never
+echoed), and it leaves no result file and no temporary file behind (the output folder holds
+nothing new afterwards).
 
 usage: test_bad_decks.py PROGRAM NAME.expected|NAME.nml [...]
        test_bad_decks.py --generate DIR     write the generated decks into DIR
@@ -29,8 +31,8 @@ import sys
 import tempfile
 
 TIMEOUT = 60
-RUNTIME_ERRORS = ("Fortran runtime error", "Error termination", "Backtrace", "Program received signal",
-                  "Segmentation fault", "HDF5-DIAG")
+RUNTIME_ERRORS = ("Fortran runtime error", "Fortran runtime warning", "Error termination", "Backtrace",
+                  "Program received signal", "Segmentation fault", "HDF5-DIAG")
 
 BASE = """&interface
   sigma0_n = 3.0, sigma0_t = 3.0, gc = 0.3, eta = 0.9, mu = 0.5, h_n = 1.0
@@ -109,6 +111,9 @@ def check_deck(program, given):
     for marker in RUNTIME_ERRORS:
         if marker in stderr or marker in stdout:
             problems.append(f"output holds '{marker}' (not our message)")
+    shown = [c for c in stderr + stdout if c == "\ufffd" or (ord(c) < 32 and c not in "\n\t")]
+    if shown:
+        problems.append(f"output echoes bytes that are not printable text: {sorted(set(map(ord, shown)))}")
     if " -> " in stdout:
         problems.append("the program says it wrote a file")
     if left:
