@@ -1,8 +1,9 @@
 /* What the programs need of POSIX that Fortran 2008 does not give: the kind of a path (regular
  * file, folder, or something else such as a FIFO or a device), whether two paths name the same
- * file, and a guard that removes the temporary output
- * files when the program ends before they are complete. Called from Fortran through bind(C)
- * (module interlock_files).
+ * file, writing a small file with every error reported, and a guard that removes the temporary
+ * output files when the program ends before they are complete (with a way to hold the signals
+ * while two files are renamed together). Called from Fortran through bind(C) (module
+ * interlock_files).
  *
  * The guard is the one piece of process-wide state of the programs: a signal handler can only
  * reach static storage. It keeps a few paths (a program writes at most two files at once); the
