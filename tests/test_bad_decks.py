@@ -2,8 +2,10 @@
 """Bad decks must be rejected (by interlock-history, or interlock-fit given as PROGRAM): the
 program exits with status 1, its error output names the deck file and holds every fragment of
 NAME.expected (whitespace runs compare as one space), it prints no Fortran runtime error, it
-finishes within the time limit, and it leaves no result file and no temporary file behind (the
-output folder holds nothing new afterwards).
+finishes within the time limit, it prints no runtime warning and no byte that is not printable
+text (a control character or bytes that are not UTF-8: a binary deck or curve file is never
+echoed), and it leaves no result file and no temporary file behind (the output folder holds
+nothing new afterwards).
 
 usage: test_bad_decks.py PROGRAM NAME.expected|NAME.nml [...]
        test_bad_decks.py --generate DIR     write the generated decks into DIR
@@ -18,6 +20,9 @@ NAME.expected (beside NAME.nml, in tests/data/bad_decks/ or the generated folder
 per fragment; blank lines and lines starting with '#' are ignored; directives:
   @no-output-dir   run without --output-dir (in an empty working folder), so that the deck's
                    &output file is used as given
+  @runtime-warning-known
+                   a Fortran runtime warning before the message is a known defect of the
+                   deck reader (the comment says which): not counted here
 A NAME.expected without NAME.nml runs the program on a deck that does not exist.
 Adding a bad deck needs no code: add the pair and re-run cmake.
 """
@@ -29,8 +34,9 @@ import sys
 import tempfile
 
 TIMEOUT = 60
-RUNTIME_ERRORS = ("Fortran runtime error", "Error termination", "Backtrace", "Program received signal",
-                  "Segmentation fault", "HDF5-DIAG")
+RUNTIME_ERRORS = ("Fortran runtime error", "Fortran runtime warning", "Error termination", "Backtrace",
+                  "Program received signal", "Segmentation fault", "HDF5-DIAG")
+RUNTIME_WARNING = "Fortran runtime warning"
 
 BASE = """&interface
   sigma0_n = 3.0, sigma0_t = 3.0, gc = 0.3, eta = 0.9, mu = 0.5, h_n = 1.0
@@ -79,7 +85,7 @@ def check_deck(program, given):
     deck, expected_path = stem + ".nml", stem + ".expected"
     name = os.path.basename(deck)
     fragments, directives = read_expected(expected_path)
-    unknown = directives - {"@no-output-dir"}
+    unknown = directives - {"@no-output-dir", "@runtime-warning-known"}
     problems = []
     if not fragments:
         problems.append(f"{expected_path} holds no fragment")
@@ -107,8 +113,13 @@ def check_deck(program, given):
     if name not in message:
         problems.append("message does not name the deck file")
     for marker in RUNTIME_ERRORS:
+        if marker == RUNTIME_WARNING and "@runtime-warning-known" in directives:
+            continue
         if marker in stderr or marker in stdout:
             problems.append(f"output holds '{marker}' (not our message)")
+    shown = [c for c in stderr + stdout if c == "\ufffd" or (ord(c) < 32 and c not in "\n\t")]
+    if shown:
+        problems.append(f"output echoes bytes that are not printable text: {sorted(set(map(ord, shown)))}")
     if " -> " in stdout:
         problems.append("the program says it wrote a file")
     if left:
@@ -121,11 +132,13 @@ def check_deck(program, given):
     return True
 
 
-def write_pair(folder, name, deck_bytes, fragments, comment):
+def write_pair(folder, name, deck_bytes, fragments, comment, directives=()):
     with open(os.path.join(folder, name + ".nml"), "wb") as f:
         f.write(deck_bytes)
     with open(os.path.join(folder, name + ".expected"), "w") as f:
         f.write(f"# {comment} (written by test_bad_decks.py --generate)\n")
+        for directive in directives:
+            f.write(directive + "\n")
         f.write("\n".join(fragments) + "\n")
 
 
@@ -134,8 +147,11 @@ def generate(folder):
     os.makedirs(folder, exist_ok=True)
     base = BASE.encode()
     title = b"&output\n  title = '" + b"x" * (100 * 1024) + b"'\n/\n"
+    # gfortran's namelist read warns "Namelist object 'title' truncated on read" (Debug) before
+    # the deck reader's message: a known defect of the deck reader
     write_pair(folder, "title_100k", base + title,
-               ["&output:", "title is longer than 1024 characters", "at most 1024"], "a title of 100 kB")
+               ["&output:", "title is longer than 1024 characters", "at most 1024"], "a title of 100 kB",
+               ["@runtime-warning-known"])
     line = b"! a 10 MB line\n" + base + b"! " + b"y" * (10 * 1024 * 1024) + b"\n"
     write_pair(folder, "line_10mb", line, ["bytes", "at most 4194304 bytes"],
                "a 10 MB line (a deck larger than 4 MiB)")

@@ -13,6 +13,17 @@ usage: test_fit.py FIT HISTORY recovery SET NOISE   SET: granite | table5; NOISE
                                                     the 3D deck of inputs/fit/ (azimuthal RIA,
                                                     45 deg); NOISE 0.02: its curves with noise
        test_fit.py FIT HISTORY circle               a 3D deck on a circular slip path
+       test_fit.py FIT HISTORY square               a 3D square path: a per-component slip as
+                                                    abscissa refused, the slip length recovers mu
+       test_fit.py FIT HISTORY noisy                noise on the abscissa: refused, saying so
+       test_fit.py FIT HISTORY readonly             an output folder that cannot be written:
+                                                    refused before the fit
+       test_fit.py FIT HISTORY enospc               a write error on the fitted deck: exit 1,
+                                                    nothing written (strace)
+       test_fit.py FIT HISTORY renames              SIGINT between the renames: the two files
+                                                    there belong together (strace)
+       test_fit.py FIT HISTORY signals              SIGQUIT, SIGXCPU, SIGXFSZ during the fit: no
+                                                    backtrace
 
 The data are the curves of a history with known parameters (scripts/fit_make_data.py; noise:
 independent normal noise of 2 % of each curve's largest value, numpy default_rng(12), the same on
@@ -24,6 +35,7 @@ CPU time of the fit is printed (a measurement, not asserted here: docs/fit.md).
 """
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -314,7 +326,7 @@ def coupled(fit, history):
         rc, out, err = fit_run(fit, "metres.nml", work, "-q")
         assert rc in (0, 2), (rc, err)
         assert "(1000 times more): is the curve in other units than the deck (mm, MPa; a slip " \
-               "in metres)?" in out, out
+               "in metres)?" in err and "warning" not in out, (out, err)
         with h5py.File(os.path.join(work, "metres_fit.h5"), "r") as f:
             assert any("slip in metres" in str(x) for x in f.attrs["warnings"])
     print("the optimum on theta_f = theta_0: converged, written, reported at the limit; "
@@ -343,7 +355,8 @@ def inputs(fit, history):
         run([sys.executable, MAKE_DATA, history, "gen_worn.nml", "worn.csv"], work)
         rc, out, err = fit_run(fit, "b16_short_weight.nml", work, "-q")
         assert rc == 0, err
-        assert "curve_weight gives one value for 2 curves: it applies to every curve" in out, out
+        assert "curve_weight gives one value for 2 curves: it applies to every curve" in err, err
+        assert "warning" not in out, out      # warnings go to standard error
         with h5py.File(os.path.join(work, "b16_short_weight_fit.h5"), "r") as f:
             w = [f["curves"][c]["weight"][()] for c in ("shear", "dilation")]
             assert any("curve_weight" in str(x) for x in f.attrs["warnings"])
@@ -380,7 +393,8 @@ def discretization(fit, history, deck_src):
     """The discretization check on the shipped staged granite deck with 2 % noise (the docs'
     example): printed and stored, every change below 0.1 standard error. The same data fitted
     with the implicit scheme at 100 steps per mm (first order) moves theta_0 by more than 0.1
-    standard error, and the check says so: it can fail."""
+    standard error, and the check says so: it can fail. The bias factor and the advice follow
+    the order of each scheme in 2D."""
     with tempfile.TemporaryDirectory() as work:
         deck = os.path.join(work, "granite.nml")
         shutil.copy(deck_src, deck)
@@ -393,10 +407,11 @@ def discretization(fit, history, deck_src):
         assert coarse != text
         with open(os.path.join(work, "implicit100.nml"), "w") as f:
             f.write(coarse)
-        ratios = {}
+        ratios, outs, errs = {}, {}, {}
         for stem in ("granite", "implicit100"):
             rc, out, err = fit_run(fit, stem + ".nml", work, "-q")
-            print(out)
+            print(out, err)
+            outs[stem], errs[stem] = out, err
             assert rc == 0, err
             assert "discretization check" in out
             with h5py.File(os.path.join(work, stem + "_fit.h5"), "r") as f:
@@ -411,6 +426,13 @@ def discretization(fit, history, deck_src):
             print(stem, {n: f"{r:.4f}" for n, r in ratios[stem].items()})
         assert all(abs(r) < 0.1 for r in ratios["granite"].values()), ratios["granite"]
         assert abs(ratios["implicit100"]["theta0_deg"]) >= 0.1, ratios["implicit100"]
+        # what holds for each scheme in 2D: the trapezoidal scheme second order, implicit first,
+        # and the advice names what raises the order
+        assert "-1.333333x the change: the trapezoidal scheme in 2D, order 2" in outs["granite"]
+        assert "-2x the change: the implicit scheme in 2D, order 1" in outs["implicit100"]
+        for advice in ("give more steps (twice the steps make the bias 0.5x as large)",
+                       "scheme = 'trapezoidal' (order 2 here)", "extrapolate = .true. (order 2 here)"):
+            assert advice in errs["implicit100"], (advice, errs["implicit100"])
     print("discretization check: shipped deck below 0.1 standard error, implicit 100/mm above")
 
 
@@ -531,10 +553,200 @@ def circle(fit, history):
     assert abs(value / 0.6898538 - 1) <= 1e-6, value
 
 
+def square(fit, history):
+    """A blind 3D fit on a square path (an outside review's curves: granite-like joint,
+    azimuthal RIA of 3 azimuths, sigma_N = -1.5 MPa, a square of side 2 mm, 2 % noise; the
+    review's mu = 0.732). With the lab's per-component slips as abscissae (slip_t1 for sigma_T1)
+    every point of the second leg, where s_T1 holds still at 2 mm, would be compared with one
+    value of the history: the deck is refused before the fit, naming the curve, the leg and
+    what to take instead. With the slip length as abscissa mu comes back within two standard
+    errors, and the discretization check says what holds for the trapezoidal scheme in 3D
+    (first order: the bias about twice the change, no advice to take the scheme it takes)."""
+    with tempfile.TemporaryDirectory() as work:
+        for name in ("square3d.nml", "square3d.csv"):
+            shutil.copy(os.path.join(DATA, name), work)
+        rc, out, err = fit_run(fit, "square3d.nml", work, "-q")
+        print(out, err)
+        assert rc == 1, rc
+        for said in ("curve shear_t1: its abscissa slip_t1 (the history's separation_t1) holds "
+                     "still at 2 from time 3 to 5 of the history (leg 2 of the square path)",
+                     "the curve has 101 points there", "take the slip length"):
+            assert said in err, (said, err)
+        assert "stage 1" not in out, out
+        assert sorted(os.listdir(work)) == ["square3d.csv", "square3d.nml"], os.listdir(work)
+        with open(os.path.join(work, "square3d.nml")) as f:
+            text = f.read()
+        length = text.replace("curve_x = 'slip_t1', 'slip_t2', 'slip_t1'",
+                              "curve_x = 'slip_length', 'slip_length', 'slip_length'")
+        length = length.replace("curve_along = 'separation_t1', 'separation_t2', 'separation_t1'",
+                                "curve_along = 'slip_length', 'slip_length', 'slip_length'")
+        assert length.count("slip_length") == 6, length
+        with open(os.path.join(work, "length.nml"), "w") as f:
+            f.write(length)
+        rc, out, err = fit_run(fit, "length.nml", work, "-q")
+        print(out, err)
+        assert rc == 0, (rc, err)
+        assert "against the exact law is about -2x the change: the trapezoidal scheme in 3D, " \
+               "order 1" in out, out
+        assert "scheme = 'trapezoidal'" not in out + err, (out, err)
+        got, _ = check_outputs(os.path.join(work, "length_fit.h5"),
+                               os.path.join(work, "length_fitted.nml"), history, work)
+        with h5py.File(os.path.join(work, "length_fit.h5"), "r") as f:
+            assert f.attrs["discretization_order"] == 1, f.attrs["discretization_order"]
+    value, se = got["mu"]
+    print(f"mu: {value!r} against the review's 0.732, standard error {se:.2e}: "
+          f"{abs(value - 0.732) / se:.2f} standard errors")
+    assert abs(value - 0.732) <= 2 * se, (value, se)
+
+
+def noisy(fit, history):
+    """2 um of noise on the slip of a cyclic test sampled every 3.2 um (an outside review's
+    curve: 40001 rows) turns the abscissa back thousands of times: refused, and the message
+    says the curve's branches are tiny and why (noise on the abscissa), not only that the
+    history has fewer branches."""
+    with tempfile.TemporaryDirectory() as work:
+        shutil.copy(os.path.join(DATA, "granite_fast.nml"), work)
+        clean = np.loadtxt(os.path.join(DATA, "granite_fast.csv"), delimiter=",", skiprows=1)
+        t = np.linspace(0.0, clean[-1, 0], 40001)
+        rows = np.column_stack([t] + [np.interp(t, clean[:, 0], clean[:, k]) for k in (1, 2, 3)])
+        rows[:, 1] += np.random.default_rng(41).normal(0.0, 0.002, t.size)
+        np.savetxt(os.path.join(work, "granite_fast.csv"), rows, delimiter=",", fmt="%.9g",
+                   header="time,slip_mm,shear_MPa,dilation_mm", comments="")
+        rc, out, err = fit_run(fit, "granite_fast.nml", work, "-q")
+        print(err)
+        assert rc == 1, rc
+        for said in ("monotone branches, the history's separation_t through 5 only",
+                     "branches span less than 1 % of its range: noise on the abscissa?"):
+            assert said in err, (said, err)
+
+
+def as_nobody():
+    """The command prefix that drops root's privileges (root writes into any folder), or []."""
+    if os.geteuid() != 0:
+        return []
+    setpriv = shutil.which("setpriv")
+    if setpriv is None:
+        sys.exit(77)      # skipped: root cannot be kept out of a folder without setpriv
+    return [setpriv, "--reuid", "65534", "--regid", "65534", "--clear-groups"]
+
+
+def readonly(fit, history):
+    """An output folder that cannot be written into is refused before the fit (exit 1, no
+    stage run), the folder named."""
+    with tempfile.TemporaryDirectory() as work:
+        os.chmod(work, 0o755)
+        for name in ("granite_fast.nml", "granite_fast.csv"):
+            shutil.copy(os.path.join(DATA, name), work)
+        out_dir = os.path.join(work, "ro")
+        os.mkdir(out_dir)
+        os.chmod(out_dir, 0o555)
+        r = subprocess.run(as_nobody() + [fit, "--output-dir", "ro", "granite_fast.nml"],
+                           cwd=work, capture_output=True, text=True, timeout=600)
+        print(r.stdout, r.stderr)
+        assert r.returncode == 1, r.returncode
+        assert "cannot write into the folder ro/" in r.stderr, r.stderr
+        assert "stage 1" not in r.stdout, r.stdout
+        assert os.listdir(out_dir) == [], os.listdir(out_dir)
+
+
+def traced(command, work, inject):
+    """Run `command` under strace (the trace in trace.txt) with the fault `inject` (-e
+    inject=..., or None); (status, stdout, stderr). Exit 77 (skipped) without strace."""
+    strace = shutil.which("strace")
+    if strace is None:
+        sys.exit(77)
+    faults = ["-e", inject] if inject else []
+    r = subprocess.run([strace, "-f", "-o", "trace.txt", "-e", "trace=write,rename"] + faults
+                       + command, cwd=work, capture_output=True, text=True, timeout=600)
+    return r.returncode, r.stdout, r.stderr
+
+
+def enospc(fit, history):
+    """A write error (ENOSPC) on the fitted deck: exit 1, the error said, neither file left, and
+    no success line (it exited 0 with an empty fitted deck)."""
+    with tempfile.TemporaryDirectory() as work:
+        for name in ("granite_fast.nml", "granite_fast.csv"):
+            shutil.copy(os.path.join(DATA, name), work)
+        # which write(2) is the fitted deck's: the first that starts with its mark
+        traced([fit, "-q", "granite_fast.nml"], work, None)
+        with open(os.path.join(work, "trace.txt")) as f:
+            writes = [line for line in f if " write(" in line]
+        n = 1 + next(k for k, line in enumerate(writes) if "interlock-fit: fitted deck" in line)
+        for name in ("granite_fast_fit.h5", "granite_fast_fitted.nml"):
+            os.remove(os.path.join(work, name))
+        rc, out, err = traced([fit, "-q", "granite_fast.nml"], work,
+                              f"inject=write:error=ENOSPC:when={n}")
+        print(rc, out, err)
+        assert rc == 1, rc
+        assert "cannot write the fitted deck" in err, err
+        assert " -> " not in out, out
+        left = sorted(set(os.listdir(work)) - {"granite_fast.nml", "granite_fast.csv", "trace.txt"})
+        assert left == [], left
+
+
+def renames(fit, history):
+    """SIGINT right after the first rename of the two result files, with an earlier result
+    there: the program ends by the signal, and the two files there belong together (both new:
+    the renames are done with the signals held), never a new fit file beside the old deck."""
+    with tempfile.TemporaryDirectory() as work:
+        for name in ("granite_fast.nml", "granite_fast.csv"):
+            shutil.copy(os.path.join(DATA, name), work)
+        run([fit, "-q", "granite_fast.nml"], work)
+        old = {n: open(os.path.join(work, n), "rb").read()
+               for n in ("granite_fast_fit.h5", "granite_fast_fitted.nml")}
+        with open(os.path.join(work, "granite_fast.nml")) as f:
+            text = f.read()
+        with open(os.path.join(work, "granite_fast.nml"), "w") as f:
+            f.write(text.replace("start = 4.0, 30.0", "start = 3.0, 30.0"))
+        rc, out, err = traced([fit, "-q", "granite_fast.nml"], work, "inject=rename:signal=INT:when=1")
+        print(rc, err)
+        new = {n: open(os.path.join(work, n), "rb").read() != old[n] for n in old}
+        print("new:", new)
+        assert rc in (1, 130, -signal.SIGINT), rc
+        assert new["granite_fast_fit.h5"] == new["granite_fast_fitted.nml"], new
+        with h5py.File(os.path.join(work, "granite_fast_fit.h5"), "r") as f:
+            values = [float(v) for v in f.attrs["values"]]
+        with open(os.path.join(work, "granite_fast_fitted.nml")) as f:
+            header = f.readline()
+        assert float(header.split("h_n = ")[1].split()[0]) == values[0], (header, values)
+
+
+def signals(fit, history):
+    """SIGQUIT and SIGXCPU during the fit end it as they end interlock-history, without the
+    Fortran runtime's backtrace; SIGXFSZ (sent, or a file-size limit) does not end it."""
+    with tempfile.TemporaryDirectory() as work:
+        for name in ("square3d.nml", "square3d.csv"):
+            shutil.copy(os.path.join(DATA, name), work)
+        with open(os.path.join(work, "square3d.nml")) as f:
+            text = f.read().replace("'slip_t1', 'slip_t2', 'slip_t1'",
+                                    "'slip_length', 'slip_length', 'slip_length'")
+            text = text.replace("'separation_t1', 'separation_t2', 'separation_t1'",
+                                "'slip_length', 'slip_length', 'slip_length'")
+        with open(os.path.join(work, "length.nml"), "w") as f:
+            f.write(text)
+        for sig in (signal.SIGQUIT, signal.SIGXCPU, signal.SIGXFSZ):
+            p = subprocess.Popen([fit, "length.nml"], cwd=work, stdout=subprocess.PIPE,
+                                 stderr=subprocess.PIPE, text=True)
+            while not p.stdout.readline().startswith("stage 1"):
+                pass                             # until the fit has begun
+            p.send_signal(sig)
+            out, err = p.communicate(timeout=600)
+            print(sig.name, p.returncode, err[-300:])
+            for marker in ("Backtrace", "Program received signal"):
+                assert marker not in err, (sig.name, err)
+            if sig == signal.SIGXFSZ:
+                assert p.returncode == 0, (sig.name, p.returncode)
+            else:
+                assert p.returncode == -sig, (sig.name, p.returncode)
+            assert not [n for n in os.listdir(work) if ".tmp-" in n], os.listdir(work)
+
+
 def main():
     fit, history, mode = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2]), sys.argv[3]
     modes = {"identifiability": identifiability, "files": files, "coupled": coupled,
-             "inputs": inputs, "deckfail": deckfail, "circle": circle}
+             "inputs": inputs, "deckfail": deckfail, "circle": circle, "square": square,
+             "noisy": noisy, "readonly": readonly, "enospc": enospc, "renames": renames,
+             "signals": signals}
     if mode == "recovery":
         recovery(fit, history, sys.argv[4], float(sys.argv[5]))
     elif mode == "recovery3d" and len(sys.argv) > 5:

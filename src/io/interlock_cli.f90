@@ -2,13 +2,14 @@
 !> interlock-fuzz): ending with an exit status and nothing else. Fortran's `stop 2` and
 !> `error stop 2` print "STOP 2" / "ERROR STOP 2" (and, in the Debug build, a backtrace); a
 !> usage error must print only its message and the usage. And reading the command line whole,
-!> and whether a folder given on it can be written into (checked before any work is done).
+!> whether a folder given on it can be written into (checked before any work is done), and
+!> warnings: on standard error, as errors are, so that standard output holds only results.
 module interlock_cli
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
   implicit none
   private
-  public :: exit_program, command_argument, command_text, folder_writable
+  public :: exit_program, command_argument, command_text, folder_writable, warn
 
   interface
     !> _exit: ends the process at once, without the C exit handlers (HDF5 1.10's own handler
@@ -35,6 +36,13 @@ contains
     flush (error_unit)
     call c_exit(int(code, c_int))
   end subroutine exit_program
+
+  !> A warning of `program` ('interlock-fit: warning: ' // text) on standard error.
+  subroutine warn(program, text)
+    character(len=*), intent(in) :: program, text
+    write (error_unit, '(a)') program // ': warning: ' // text
+    flush (error_unit)
+  end subroutine warn
 
   !> Command-line argument k, whatever its length.
   function command_argument(k) result(text)

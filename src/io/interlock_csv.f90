@@ -5,7 +5,9 @@
 !> them), written as [sign] digits [. digits] [e|d [sign] digits]: NaN, Inf, an empty field,
 !> text, a larger value, a row of another length, a line of more than max_line characters and a
 !> header name of more than 64 characters or given twice are errors naming the file, the line
-!> and the column. A number may have any number of digits (it is read whole, never cut).
+!> and the column. A number may have any number of digits (it is read whole, never cut). A
+!> control character (a binary file) or a NUL byte (UTF-16 text: the hint says so) is an error
+!> naming the line; no message echoes a byte that is not printable text (printable_text).
 module interlock_csv
   use interlock, only: dp, format_integer
   use interlock_files, only: path_kind, path_regular
@@ -13,7 +15,7 @@ module interlock_csv
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   implicit none
   private
-  public :: csv_t, read_csv, csv_column, parse_number, max_magnitude, max_line
+  public :: csv_t, read_csv, csv_column, parse_number, max_magnitude, max_line, printable_text
 
   !> The longest line read (characters, without the line end).
   integer, parameter :: max_line = 65536
@@ -26,6 +28,7 @@ module interlock_csv
   type :: csv_t
     character(len=name_len), allocatable :: names(:)   !< header names ('' without a header)
     real(dp), allocatable :: values(:, :)              !< (rows, columns)
+    integer, allocatable :: lines(:)                   !< the file's line of each row
   end type csv_t
 
 contains
@@ -39,7 +42,7 @@ contains
     character(len=1) :: extra
     character(len=512) :: iomsg
     real(dp), allocatable :: row(:), rows(:, :), grown(:, :)
-    integer, allocatable :: first(:), last(:)
+    integer, allocatable :: first(:), last(:), row_lines(:), grown_lines(:)
 
     message = ''
     if (path_kind(path) /= path_regular) then
@@ -54,7 +57,7 @@ contains
     ncol = 0
     nrow = 0
     line = 0
-    allocate (rows(0, 0))
+    allocate (rows(0, 0), row_lines(64))
     do
       text = ''
       n = 0
@@ -81,6 +84,11 @@ contains
       if (k > 0) then
         if (text(k:k) == achar(13)) text(k:k) = ' '
       end if
+      message = control_character(text(1:n), line, path)
+      if (len_trim(message) > 0) then
+        close (u)
+        return
+      end if
       k = verify(text, ' ' // achar(9))
       if (k == 0) cycle
       if (text(k:k) == '#') cycle
@@ -95,8 +103,8 @@ contains
           do j = 1, ncol
             if (last(j) - first(j) + 1 > name_len) then
               message = path // ': line ' // format_integer(line) // ', column ' // &
-                        format_integer(j) // ': the header name ''' // text(first(j):last(j)) // &
-                        ''' is longer than ' // format_integer(name_len) // ' characters'
+                        format_integer(j) // ': the header name ''' // &
+                        printable_text(text(first(j):last(j))) // ''' is longer than ' // format_integer(name_len) // ' characters'
               close (u)
               return
             end if
@@ -104,8 +112,8 @@ contains
             if (j > 1 .and. len_trim(csv%names(j)) > 0) then
               if (any(csv%names(1:j - 1) == csv%names(j))) then
                 message = path // ': line ' // format_integer(line) // ', column ' // &
-                          format_integer(j) // ': the header name ''' // trim(csv%names(j)) // &
-                          ''' is given twice (a column must be named once)'
+                          format_integer(j) // ': the header name ''' // &
+                          printable_text(trim(csv%names(j))) // ''' is given twice (a column must be named once)'
                 close (u)
                 return
               end if
@@ -128,11 +136,14 @@ contains
       end if
       nrow = nrow + 1
       if (nrow > size(rows, 2)) then
-        allocate (grown(ncol, 2 * size(rows, 2)))
+        allocate (grown(ncol, 2 * size(rows, 2)), grown_lines(2 * size(rows, 2)))
         grown(:, 1:nrow - 1) = rows(:, 1:nrow - 1)
+        grown_lines(1:nrow - 1) = row_lines(1:nrow - 1)
         call move_alloc(grown, rows)
+        call move_alloc(grown_lines, row_lines)
       end if
       rows(:, nrow) = row
+      row_lines(nrow) = line
     end do
     close (u)
     if (ncol == 0) then
@@ -140,7 +151,69 @@ contains
       return
     end if
     csv%values = transpose(rows(:, 1:nrow))
+    csv%lines = row_lines(1:nrow)
   end subroutine read_csv
+
+  !> '' or the error for the first control character of a line (`text`, its end of line
+  !> removed; tabs and the CR of a CR LF line end are text): a NUL byte says UTF-16 (every
+  !> second byte of ASCII text in UTF-16 is 0), as does a UTF-16 byte-order mark.
+  function control_character(text, line, path) result(message)
+    character(len=*), intent(in) :: text, path
+    integer, intent(in) :: line
+    character(len=512) :: message
+    integer :: i, code
+    message = ''
+    if (line == 1 .and. len(text) >= 2) then
+      if ((iachar(text(1:1)) == 255 .and. iachar(text(2:2)) == 254) .or. &
+          (iachar(text(1:1)) == 254 .and. iachar(text(2:2)) == 255)) then
+        message = path // ': line 1 starts with a UTF-16 byte-order mark: the file is UTF-16 ' // &
+                  'text (Windows "Unicode"); save it as ASCII or UTF-8 (CSV UTF-8)'
+        return
+      end if
+    end if
+    do i = 1, len(text)
+      code = iachar(text(i:i))
+      if (code >= 32 .and. code /= 127) cycle
+      if (code == 9 .or. (code == 13 .and. i == len(text))) cycle
+      message = path // ': line ' // format_integer(line) // ', character ' // &
+                format_integer(i) // ': a control character (code ' // format_integer(code) // &
+                '): the curve file must be text (ASCII or UTF-8, numbers separated by commas)'
+      if (code == 0) message = trim(message) // '; a NUL byte: is it UTF-16 text (Windows ' // &
+                               '"Unicode")? Save it as ASCII or UTF-8 (CSV UTF-8)'
+      return
+    end do
+  end function control_character
+
+  !> `text` as it may be echoed in a message: printable ASCII and well-formed UTF-8 sequences
+  !> kept, every other byte (a control character, a byte of a binary file or of another
+  !> encoding) replaced by '?'.
+  pure function printable_text(text) result(shown)
+    character(len=*), intent(in) :: text
+    character(len=len(text)) :: shown
+    integer :: i, k, n, code
+    shown = text
+    i = 1
+    do while (i <= len(text))
+      code = iachar(text(i:i))
+      if (code >= 32 .and. code < 127) then
+        i = i + 1
+        cycle
+      end if
+      ! the length of a UTF-8 sequence from its lead byte (0: not a lead byte)
+      n = 0
+      if (code >= 194 .and. code <= 223) n = 2
+      if (code >= 224 .and. code <= 239) n = 3
+      if (code >= 240 .and. code <= 244) n = 4
+      if (n > 0 .and. i + n - 1 <= len(text)) then
+        if (all([(iachar(text(k:k)) >= 128 .and. iachar(text(k:k)) <= 191, k = i + 1, i + n - 1)])) then
+          i = i + n
+          cycle
+        end if
+      end if
+      shown(i:i) = '?'
+      i = i + 1
+    end do
+  end function printable_text
 
   !> The column named `name` (a header name, case as written, or a 1-based column number).
   !> 0 if there is none.
@@ -212,8 +285,8 @@ contains
     do i = 1, size(first)
       call parse_number(text(first(i):last(i)), row(i), why)
       if (len_trim(why) > 0) then
-        message = 'column ' // format_integer(i) // ': ''' // text(first(i):last(i)) // &
-                  ''' ' // trim(why)
+        message = 'column ' // format_integer(i) // ': ''' // &
+                  printable_text(text(first(i):last(i))) // ''' ' // trim(why)
         return
       end if
     end do

@@ -3,12 +3,12 @@
 !> removing and renaming, and the guard that removes unfinished output files when the program
 !> ends before they are complete (any signal that ends it and can be caught, or an exit).
 module interlock_files
-  use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_associated
+  use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_associated, c_long
   implicit none
   private
   public :: path_absent, path_regular, path_folder, path_other, path_kind, same_file, &
             guard_file, unguard_file, remove_file, rename_file, process_id, temporary_name, &
-            is_folder
+            is_folder, guard_signals, hold_signals, write_file
 
   !> What a path names (path_kind): nothing, a regular file, a folder, anything else (a FIFO,
   !> a device, a socket).
@@ -35,6 +35,18 @@ module interlock_files
       import :: c_int, c_char
       character(kind=c_char), intent(in) :: path(*)
     end function c_guard_file
+    integer(c_int) function c_guard_signals() bind(C, name='interlock_guard_signals')
+      import :: c_int
+    end function c_guard_signals
+    integer(c_int) function c_hold_signals(hold) bind(C, name='interlock_hold_signals')
+      import :: c_int
+      integer(c_int), value :: hold
+    end function c_hold_signals
+    integer(c_int) function c_write_file(path, data, n) bind(C, name='interlock_write_file')
+      import :: c_int, c_char, c_long
+      character(kind=c_char), intent(in) :: path(*), data(*)
+      integer(c_long), value :: n
+    end function c_write_file
     subroutine c_unguard_file(path) bind(C, name='interlock_unguard_file')
       import :: c_char
       character(kind=c_char), intent(in) :: path(*)
@@ -87,12 +99,38 @@ contains
     stat = int(c_guard_file(path // c_null_char))
   end subroutine guard_file
 
+  !> The guard's signal handlers from now on, before any file is guarded (as guard_file installs
+  !> them): a signal that ends the program then ends it without the Fortran runtime's backtrace,
+  !> and SIGXFSZ makes a write fail instead. stat /= 0: they could not be installed.
+  subroutine guard_signals(stat)
+    integer, intent(out) :: stat
+    stat = int(c_guard_signals())
+  end subroutine guard_signals
+
+  !> hold = .true.: the signals sent from outside wait until hold_signals(.false.), so that
+  !> what is done meanwhile (renaming two files that belong together) is done whole; a signal
+  !> that came meanwhile takes effect at hold_signals(.false.).
+  subroutine hold_signals(hold)
+    logical, intent(in) :: hold
+    integer(c_int) :: ignore
+    ignore = c_hold_signals(merge(1_c_int, 0_c_int, hold))
+  end subroutine hold_signals
+
   !> The guarded file `path` is complete or gone: the end of the program no longer removes it.
   subroutine unguard_file(path)
     character(len=*), intent(in) :: path
     call c_unguard_file(path // c_null_char)
   end subroutine unguard_file
 
+
+  !> Write `text` as the file `path` (created or truncated), every byte or an error: stat /= 0
+  !> (the C library's errno) when a write or the close failed, a full disk or a file-size limit
+  !> included; the file may then hold part of it (the caller removes it).
+  subroutine write_file(path, text, stat)
+    character(len=*), intent(in) :: path, text
+    integer, intent(out) :: stat
+    stat = int(c_write_file(path // c_null_char, text, int(len(text), c_long)))
+  end subroutine write_file
 
   !> Remove a file if it is there (nothing happens otherwise; never a folder: unlink(2)).
   subroutine remove_file(path)

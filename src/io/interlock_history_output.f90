@@ -414,10 +414,13 @@ contains
   end subroutine output_end_case
 
   !> Close the file and give it its final name.
-  subroutine output_close(out, stat, message)
+  subroutine output_close(out, stat, message, rename)
     type(output_t), intent(inout) :: out
     integer, intent(out) :: stat
     character(len=*), intent(out) :: message
+    !> .false.: close only; the complete file stays out%temp_name, guarded, for the caller to
+    !> rename together with another file (interlock-fit's pair)
+    logical, intent(in), optional :: rename
     integer :: s2
     message = ''
     call h5_close_group(out%cases, stat)
@@ -429,6 +432,9 @@ contains
       call remove_file(out%temp_name)
       call unguard_file(out%temp_name)
       return
+    end if
+    if (present(rename)) then
+      if (.not. rename) return
     end if
     call rename_file(out%temp_name, out%final_name, stat)
     if (stat /= 0) then

@@ -1,8 +1,9 @@
 /* What the programs need of POSIX that Fortran 2008 does not give: the kind of a path (regular
  * file, folder, or something else such as a FIFO or a device), whether two paths name the same
- * file, and a guard that removes the temporary output
- * files when the program ends before they are complete. Called from Fortran through bind(C)
- * (module interlock_files).
+ * file, writing a small file with every error reported, and a guard that removes the temporary
+ * output files when the program ends before they are complete (with a way to hold the signals
+ * while two files are renamed together). Called from Fortran through bind(C) (module
+ * interlock_files).
  *
  * The guard is the one piece of process-wide state of the programs: a signal handler can only
  * reach static storage. It keeps a few paths (a program writes at most two files at once); the
@@ -23,6 +24,8 @@
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <errno.h>
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -118,6 +121,57 @@ static int install_handlers(void)
     return 0;
 }
 
+/* Install the guard's signal handlers now, before any file is guarded: a program that computes
+ * for long before it writes (interlock-fit) then ends on SIGQUIT or SIGXCPU as on SIGINT, without
+ * the Fortran runtime's backtrace, and a file-size limit fails its writes instead of killing it.
+ * 0: installed (or already); 2: they could not be. */
+int interlock_guard_signals(void)
+{
+    if (!handlers_installed) {
+        int stat = install_handlers();
+        if (stat != 0) return stat;
+        handlers_installed = 1;
+    }
+    return 0;
+}
+
+/* hold = 1: block the signals sent from outside (those the guard catches), so that the steps
+ * until hold = 0 (the renames of two files that belong together) are not interrupted between
+ * them; hold = 0: unblock them, and a signal that came meanwhile takes effect then. The faults
+ * of the program itself are never blocked. 0: done. */
+int interlock_hold_signals(int hold)
+{
+    sigset_t set;
+    int k;
+    sigemptyset(&set);
+    for (k = 0; k < n_sent; ++k) sigaddset(&set, sent_signals[k]);
+    return sigprocmask(hold ? SIG_BLOCK : SIG_UNBLOCK, &set, NULL) == 0 ? 0 : 1;
+}
+
+/* Write the n bytes of `data` as the file `path` (created, or truncated if it is there) and
+ * close it. 0: every byte written and closed; else the errno of the call that failed (the file
+ * may then hold part of the bytes: the caller removes it). Fortran's own writes do not serve
+ * here: gfortran reports no error when its buffer's write fails (a full disk) and writes the
+ * buffer again at the close, one byte too many. */
+int interlock_write_file(const char *path, const char *data, long n)
+{
+    int fd = open(path, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0) return errno;
+    while (n > 0) {
+        ssize_t k = write(fd, data, (size_t)n);
+        if (k < 0) {
+            int e = errno;
+            if (e == EINTR) continue;
+            close(fd);
+            return e;
+        }
+        data += k;
+        n -= (long)k;
+    }
+    if (close(fd) != 0) return errno;
+    return 0;
+}
+
 /* Remove `path` if the program ends before interlock_unguard_file(path). 0: armed; 1: the path
  * is too long or every slot is taken (not armed); 2: the handlers could not be installed. */
 int interlock_guard_file(const char *path)
@@ -125,11 +179,7 @@ int interlock_guard_file(const char *path)
     size_t n = strlen(path);
     int k;
     if (n >= guard_capacity) return 1;
-    if (!handlers_installed) {
-        int stat = install_handlers();
-        if (stat != 0) return stat;
-        handlers_installed = 1;
-    }
+    if (interlock_guard_signals() != 0) return 2;
     for (k = 0; k < guard_slots; ++k) {
         if (guard_armed[k]) continue;
         memcpy(guarded_paths[k], path, n + 1);

@@ -9,13 +9,13 @@ module interlock_fit_deck
       prop_sigma0_t, prop_gc, prop_eta, prop_mu, status_ok
   use interlock_deck, only: deck_t, read_deck, deck_groups
   use interlock_deck_text, only: group_scan_t, scan_deck, to_lower => lower
-  use interlock_csv, only: csv_t, read_csv, csv_column
+  use interlock_csv, only: csv_t, read_csv, csv_column, printable_text
   use interlock_lm, only: lm_options_t
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
   implicit none
   private
   public :: fit_t, curve_t, stage_t, read_fit_deck, output_names, n_outputs, fit_groups, &
-            split_branches, deck_value, join_selected, law_angles
+            split_branches, deck_value, join_selected, law_angles, folder_of
 
   integer, parameter :: max_curves = 32, max_free = 16, max_stages = 16
   integer, parameter :: name_len = 64, file_len = 1024, list_len = 1024
@@ -54,6 +54,9 @@ module interlock_fit_deck
     real(dp), allocatable :: x(:), y(:), w(:)
     integer, allocatable :: branch(:)
     real(dp) :: tolerance = 0.0_dp         !< abscissa tolerance of the branch split
+    !> where the abscissa turns in the file (branch_turns), for the message when the history
+    !> has fewer branches
+    character(len=:), allocatable :: turns
   end type curve_t
 
   type :: stage_t
@@ -534,6 +537,8 @@ contains
       end if
       c%tolerance = 1.0e-6_dp * (maxval(csv%values(:, cx)) - minval(csv%values(:, cx)))
       call split_branches(csv%values(:, cx), c%tolerance, c%branch)
+      c%turns = branch_turns(csv%values(:, cx), c%branch, csv%lines, trim(curve_x(i)), &
+                             trim(curve_file(i)))
       c%branch = pack(c%branch, keep)
       c%x = pack(csv%values(:, cx), keep)
       c%y = pack(csv%values(:, cy), keep)
@@ -567,14 +572,20 @@ contains
         c%w = c%w * curve_weight(i)
       else
         scale = maxval(abs(c%y))
-        if (scale > 0.0_dp .and. scale < sqrt(min_weight)) then
+        if (scale <= 0.0_dp) then
+          message = prefix // 'curve ' // cname // ': every value of ' // trim(curve_y(i)) // &
+                    ' in ' // file // ' is 0: the default weight 1/max|y|^2 needs one that is ' // &
+                    'not (the wrong column? If a curve of zeros is meant, give curve_weight)'
+          return
+        end if
+        if (scale < sqrt(min_weight)) then
           message = prefix // 'curve ' // cname // ': every value of ' // trim(curve_y(i)) // &
                     ' is below ' // format_real(sqrt(min_weight)) // ' in magnitude: the ' // &
                     'default weight 1/max|y|^2 would exceed ' // format_real(max_weight) // &
                     ' (give curve_weight, or the values in another unit)'
           return
         end if
-        if (scale > 0.0_dp) c%w = c%w * (1.0_dp / scale)**2
+        c%w = c%w * (1.0_dp / scale)**2
       end if
       fd%curves(i) = c
     end subroutine read_curve
@@ -615,7 +626,7 @@ contains
       find_column = csv_column(csv, trim(name))
       if (find_column == 0) message = prefix // 'curve ' // cname // ': ' // variable // &
         ' = ''' // trim(name) // ''' is no column of the file (its columns: ' // &
-        join(csv%names) // '; or a column number 1 to ' // format_integer(size(csv%names)) // ')'
+        trim(printable_text(join(csv%names))) // '; or a column number 1 to ' // format_integer(size(csv%names)) // ')'
     end function find_column
 
     subroutine parse_list(text, names, variable, indices)
@@ -736,6 +747,49 @@ contains
     end do
   end subroutine split_branches
 
+  !> Where the abscissa x of a curve file turns (its branches, split_branches), for a message:
+  !> the lines of the extremes where it turns back (at most 6 listed), and how many of the
+  !> branches span less than 1 % of the abscissa's range, with a word on noise where most do
+  !> (each turn back by more than 1e-6 of the range starts a branch).
+  function branch_turns(x, branch, lines, column, file) result(text)
+    real(dp), intent(in) :: x(:)
+    integer, intent(in) :: branch(:), lines(:)
+    character(len=*), intent(in) :: column, file
+    character(len=:), allocatable :: text
+    integer :: nb, b, i, small, listed
+    real(dp) :: span
+    nb = branch(size(branch))
+    text = ''
+    if (nb < 2) return
+    span = maxval(x) - minval(x)
+    small = 0
+    listed = 0
+    text = column // ' turns at line'
+    if (nb > 2) text = text // 's'
+    do b = 2, nb
+      i = findloc(branch, b, dim=1) - 1   ! the extreme before the branch
+      if (listed < 6) then
+        if (listed > 0) text = text // ','
+        text = text // ' ' // format_integer(lines(i))
+        listed = listed + 1
+      else if (listed == 6) then
+        text = text // ', ...'
+        listed = listed + 1
+      end if
+    end do
+    text = text // ' of ' // file
+    do b = 1, nb
+      if (maxval(x, mask=branch == b) - minval(x, mask=branch == b) < 1.0e-2_dp * span) &
+        small = small + 1
+    end do
+    if (2 * small > nb) then
+      text = text // '; ' // format_integer(small) // ' of its ' // format_integer(nb) // &
+             ' branches span less than 1 % of its range: noise on the abscissa? Every turn ' // &
+             'back by more than 1e-6 of the range starts a branch: smooth the column, or take ' // &
+             'one that runs with the test, such as time'
+    end if
+  end function branch_turns
+
   integer function output_index(name)
     character(len=*), intent(in) :: name
     do output_index = 1, n_outputs
@@ -765,6 +819,7 @@ contains
                                             [(output_in_deck(k, deck), k = 1, n_outputs)]))
   end function deck_outputs
 
+  !> The folder part of `path` with its final '/' ('' for a bare file name).
   function folder_of(path) result(folder)
     character(len=*), intent(in) :: path
     character(len=:), allocatable :: folder
@@ -794,7 +849,9 @@ contains
 
   function fittable_names() result(text)
     character(len=:), allocatable :: text
-    text = join(properties(prop_sigma0_n:prop_zeta0)%name)
+    character(len=len(properties(1)%name)) :: names(prop_zeta0 - prop_sigma0_n + 1)
+    names = properties(prop_sigma0_n:prop_zeta0)%name   ! a component of an array: not contiguous
+    text = join(names)
   end function fittable_names
 
 end module interlock_fit_deck

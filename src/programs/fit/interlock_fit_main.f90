@@ -5,17 +5,20 @@
 !> (max_iterations, or no step lowers the cost).
 program interlock_fit
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-  use interlock_cli, only: exit_program, command_argument, command_text
-  use interlock, only: dp, interlock_version_string, format_integer, format_real
+  use interlock_cli, only: exit_program, command_argument, command_text, folder_writable, &
+      warn
+  use interlock, only: dp, interlock_version_string, format_integer, format_real, scheme_name, &
+      scheme_trapezoidal
   use interlock_h5, only: h5_open_library, h5_close_library
   use interlock_files, only: is_folder
   use interlock_mixed_control, only: history_t
   use interlock_history_output, only: output_check_target
-  use interlock_fit_deck, only: fit_t, read_fit_deck, join_selected, output_names
+  use interlock_fit_deck, only: fit_t, read_fit_deck, join_selected, output_names, folder_of
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-  use interlock_files, only: remove_file, rename_file, unguard_file
+  use interlock_files, only: remove_file, rename_file, unguard_file, guard_signals, &
+      hold_signals
   use interlock_fit_model, only: fit_problem_t, fit_history, curve_model, history_output, &
-      bound_state
+      bound_state, abscissa_held, scheme_order
   use interlock_fit_output, only: stage_outcome_t, curve_outcome_t, discretization_t, &
       write_fit_file, write_fitted_deck, fitted_deck_check
   use interlock_lm, only: lm_solve, lm_jacobian, lm_statistics, lm_stats_t, lm_evaluate, &
@@ -83,6 +86,12 @@ program interlock_fit
     end if
   end if
   command = command_text()
+  ! the guard's handlers before the fit: a signal ends it as it ends interlock-history
+  call guard_signals(stat)
+  if (stat /= 0) then
+    write (error_unit, '(a)') 'interlock-fit: error: cannot install the signal handlers'
+    call exit_program(1)
+  end if
   call h5_open_library(stat)
   if (stat /= 0) then
     write (error_unit, '(a)') 'interlock-fit: error: cannot initialise the HDF5 library'
@@ -105,7 +114,8 @@ contains
     type(discretization_t) :: disc
     type(history_t) :: hist
     character(len=1024) :: message
-    character(len=:), allocatable :: base, h5_name, deck_name, why, statistics, deck_temp
+    character(len=:), allocatable :: base, h5_name, deck_name, why, statistics, deck_temp, &
+        h5_temp, folder
     character(len=20), allocatable :: at_bound(:)
     real(dp), allocatable :: values(:), r(:), jac(:, :), typical(:), x0(:)
     real(dp) :: t0, t1
@@ -135,9 +145,21 @@ contains
       write (error_unit, '(a)') 'interlock-fit: error: ' // path // ': ' // trim(message)
       return
     end if
-    call scale_check(fit)
+    folder = folder_of(base)
+    if (len(folder) == 0) folder = './'
+    if (.not. folder_writable(folder)) then
+      write (error_unit, '(a)') 'interlock-fit: error: ' // path // ': cannot write into ' // &
+        'the folder ' // folder // ' (' // h5_name // ', ' // deck_name // '): checked ' // &
+        'before the fit; --output-dir DIR writes elsewhere'
+      return
+    end if
+    call scale_check(fit, message)
+    if (len_trim(message) > 0) then
+      write (error_unit, '(a)') 'interlock-fit: error: ' // path // ': ' // trim(message)
+      return
+    end if
     do k = 1, size(fit%warnings)
-      write (output_unit, '(a)') 'interlock-fit: warning: ' // path // ': ' // trim(fit%warnings(k))
+      call warn('interlock-fit', path // ': ' // trim(fit%warnings(k)))
     end do
 
     values = fit%start
@@ -181,9 +203,9 @@ contains
                stages(k)%result%reason)
       if (.not. stages(k)%result%converged) then
         rc = 2
-        write (output_unit, '(a)') 'interlock-fit: stage ' // format_integer(k) // &
+        call warn('interlock-fit', path // ': stage ' // format_integer(k) // &
           ' did NOT converge: ' // stages(k)%result%reason // ' (its last accepted values ' // &
-          'are kept; the results below are written, exit status 2)'
+          'are kept; the results are written, exit status 2)')
       end if
     end do
 
@@ -211,6 +233,7 @@ contains
       disc%note = 'not computed (no statistics)'
       rc = 2
     end if
+    disc%order = scheme_order(fit%deck%solver%scheme, fit%deck%n_components, fit%deck%extrapolate)
     at_bound = bound_state(fit, values)
 
     ! the curves at the fitted values (the residuals there were computed: the history runs)
@@ -231,22 +254,34 @@ contains
     end do
     call report(fit, values, stats, curves, problem%m, at_bound, statistics, disc)
 
-    ! the fitted deck as a temporary file, the fit file, then the deck's rename: a failure
-    ! anywhere leaves neither file (exit 1)
+    ! both files under temporary names, then both renames with the signals from outside held,
+    ! so that no signal ends the program between them: a failure anywhere leaves neither file
+    ! new (exit 1), and the two files there always belong together
     call write_fitted_deck(deck_name, fit, values, deck_temp, stat, message)
     if (stat == 0) then
       call write_fit_file(h5_name, fit, command, values, stats, stages, curves, deck_name, &
-                          at_bound, statistics, disc, stat, message)
+                          at_bound, statistics, disc, h5_temp, stat, message)
       if (stat /= 0) call remove_file(deck_temp)
     end if
     if (stat == 0) then
-      call rename_file(deck_temp, deck_name, stat)
+      call hold_signals(.true.)
+      call rename_file(h5_temp, h5_name, stat)
       if (stat /= 0) then
-        message = 'cannot rename ' // deck_temp // ' to ' // deck_name // ' (' // h5_name // &
-                  ' removed too)'
+        message = 'cannot rename ' // h5_temp // ' to ' // h5_name
+        call remove_file(h5_temp)
         call remove_file(deck_temp)
-        call remove_file(h5_name)
+      else
+        call rename_file(deck_temp, deck_name, stat)
+        if (stat /= 0) then
+          message = 'cannot rename ' // deck_temp // ' to ' // deck_name // ' (' // h5_name // &
+                    ' removed too)'
+          call remove_file(deck_temp)
+          call remove_file(h5_name)
+        end if
       end if
+      call unguard_file(h5_temp)
+      call unguard_file(deck_temp)
+      call hold_signals(.false.)
     end if
     if (allocated(deck_temp)) call unguard_file(deck_temp)
     if (stat /= 0) then
@@ -261,19 +296,24 @@ contains
   !> Curves on another scale than the model at the start values (the deck's units are mm and
   !> MPa: a slip in metres spans a thousandth of the history's): each is a warning in
   !> fit%warnings. Branch matching would compare such a curve with the first thousandth of each
-  !> branch of the history, and the fit would chase parameters far off.
-  subroutine scale_check(fit)
+  !> branch of the history, and the fit would chase parameters far off. And an abscissa that
+  !> does not identify a point of the history (abscissa_held): an error, in `message`.
+  subroutine scale_check(fit, message)
     type(fit_t), intent(inout) :: fit
+    character(len=*), intent(out) :: message
     type(history_t) :: hist
     character(len=:), allocatable :: why
     real(dp), allocatable :: hx(:), hy(:)
     real(dp) :: data_span, model_span, ratio
     character(len=512) :: line
     integer :: k
+    message = ''
     call fit_history(fit, fit%start, hist, why)
     if (len(why) > 0 .or. hist%n_rows < 2) return   ! the first stage reports it
     do k = 1, size(fit%curves)
       associate (c => fit%curves(k))
+        message = abscissa_held(c, hist, fit%deck)
+        if (len_trim(message) > 0) return
         hx = history_output(hist, c%along)
         hy = history_output(hist, c%against)
         data_span = maxval(c%x) - minval(c%x)
@@ -314,8 +354,9 @@ contains
   !> The discretization check: the fitted model's history with twice the steps per segment
   !> (fit_history refine = 2), and the change of the fitted values this implies, linearised at
   !> the optimum with the Jacobian of the statistics: dp = -J^+ (r_2N - r_N) (the residuals of
-  !> the finer history at the fitted values minus those of the fit's own). The fit's bias
-  !> against the exact law is about the change times 2^q / (2^q - 1) for a scheme of order q.
+  !> the finer history at the fitted values minus those of the fit's own). By Richardson, with
+  !> an error C/N^q of the scheme's order q (scheme_order), the fit's bias against the exact law
+  !> is about -dp 2^q / (2^q - 1) (and the finer fit's -dp / (2^q - 1)).
   subroutine discretization_check(fit, values, r, jac, stats, disc)
     type(fit_t), intent(in) :: fit
     real(dp), intent(in) :: values(:), r(:), jac(:, :)
@@ -368,7 +409,8 @@ contains
     integer, intent(in) :: m
     character(len=*), intent(in) :: at_bound(:), statistics
     type(discretization_t), intent(in) :: disc
-    integer :: i, j, n
+    integer :: i, j, n, order
+    real(dp) :: factor
     character(len=200) :: line
     character(len=:), allocatable :: flags, bad
 
@@ -427,22 +469,57 @@ contains
       write (output_unit, '(a)') 'discretization check ' // disc%note
       return
     end if
+    order = disc%order
+    factor = 2.0_dp**order / (2.0_dp**order - 1.0_dp)
     write (output_unit, '(a)') 'discretization check (the fitted model with twice the steps ' // &
-      'per segment: the change of the fitted values it implies):'
-    write (output_unit, '(a16, a24, a24)') 'parameter', 'change', 'change / std. error'
+      'per segment: the change of the fitted values it implies; the bias of the fitted values ' // &
+      'against the exact law is about -' // format_real(factor) // 'x the change: ' // &
+      scheme_text(fit) // ', order ' // format_integer(order) // '):'
+    write (output_unit, '(a16, 3a24)') 'parameter', 'change', 'change / std. error', 'bias'
     do i = 1, n
-      write (output_unit, '(a16, es24.4, f24.4)') trim(fit%names(i)), disc%change(i), disc%ratio(i)
+      write (output_unit, '(a16, es24.4, f24.4, es24.4)') trim(fit%names(i)), disc%change(i), &
+        disc%ratio(i), -factor * disc%change(i)
     end do
     if (maxval(abs(disc%ratio)) >= 0.1_dp) then
-      write (output_unit, '(a)') 'WARNING: the steps move the fit by more than 0.1 standard ' // &
-        'error (the bias against the exact law is about 2x this change for a first-order ' // &
-        'scheme, explicit or implicit, 4/3x for trapezoidal or extrapolate): give more ' // &
-        'steps, scheme = ''trapezoidal'' or extrapolate = .true. (docs/fit.md)'
+      write (output_unit, '(a)') 'the steps move the fit by more than 0.1 standard error'
+      call warn('interlock-fit', fit%deck%path // ': the steps move the fit by more than 0.1 ' // &
+        'standard error (the bias against the exact law is about ' // format_real(factor) // &
+        'x the change: ' // scheme_text(fit) // ' is of order ' // format_integer(order) // &
+        '): ' // finer_steps(fit, order) // ' (docs/fit.md, "The steps")')
     else
       write (output_unit, '(a)') 'the steps are fine enough: every change is below 0.1 ' // &
         'standard error'
     end if
   end subroutine report
+
+  !> "the trapezoidal scheme in 3D" (with ", extrapolated" where the deck extrapolates).
+  function scheme_text(fit) result(text)
+    type(fit_t), intent(in) :: fit
+    character(len=:), allocatable :: text
+    text = 'the ' // trim(scheme_name(fit%deck%solver%scheme)) // ' scheme'
+    if (fit%deck%extrapolate) text = text // ', extrapolated,'
+    text = text // ' in ' // format_integer(fit%deck%n_components) // 'D'
+  end function scheme_text
+
+  !> What lowers the bias of the deck's steps (order `order`): more steps, and each change of
+  !> the &solver that raises the order in the deck's dimension (scheme_order), never the
+  !> deck's own choice.
+  function finer_steps(fit, order) result(text)
+    type(fit_t), intent(in) :: fit
+    integer, intent(in) :: order
+    character(len=:), allocatable :: text
+    integer :: q
+    text = 'give more steps (twice the steps make the bias ' // format_real(0.5_dp**order) // &
+           'x as large)'
+    associate (d => fit%deck)
+      q = scheme_order(scheme_trapezoidal, d%n_components, d%extrapolate)
+      if (d%solver%scheme /= scheme_trapezoidal .and. q > order) &
+        text = text // ', or scheme = ''trapezoidal'' (order ' // format_integer(q) // ' here)'
+      q = scheme_order(d%solver%scheme, d%n_components, .true.)
+      if (.not. d%extrapolate .and. q > order) &
+        text = text // ', or extrapolate = .true. (order ' // format_integer(q) // ' here)'
+    end associate
+  end function finer_steps
 
   pure function to_upper(text) result(up)
     character(len=*), intent(in) :: text

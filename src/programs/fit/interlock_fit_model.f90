@@ -9,15 +9,16 @@
 module interlock_fit_model
   use, intrinsic :: iso_fortran_env, only: output_unit
   use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_3d_t, &
-      prop_theta0, prop_thetaf, status_ok, format_integer, format_real
+      prop_theta0, prop_thetaf, status_ok, format_integer, format_real, scheme_trapezoidal
   use interlock_deck, only: deck_t, deck_case, deck_set_property, deck_loading
   use interlock_mixed_control, only: history_t, run_history, run_history_extrapolated, arc_t
-  use interlock_fit_deck, only: fit_t, curve_t, split_branches, law_angles, out_separation_t1, &
+  use interlock_fit_deck, only: fit_t, curve_t, split_branches, law_angles, output_names, out_separation_t1, &
       out_separation_t2, out_traction_t1, out_traction_t2, out_traction_t_magnitude, out_slip_length
   use interlock_lm, only: lm_problem_t
   implicit none
   private
-  public :: fit_problem_t, fit_history, curve_model, history_output, bound_state, law_project
+  public :: fit_problem_t, fit_history, curve_model, history_output, bound_state, law_project, &
+            abscissa_held, scheme_order
 
   !> One stage's least-squares problem: all parameters' current values, the free ones of the
   !> stage (x of the problem) and its curves.
@@ -89,6 +90,21 @@ contains
     if (hist%status /= 'completed') message = 'at ' // parameter_text(fit, values) // &
                                               ': the history ' // hist%status
   end subroutine fit_history
+
+  !> The order in the step of a history integrated by `scheme` (scheme_explicit, _implicit,
+  !> _trapezoidal) in `n_components` dimensions (2 or 3), with (`extrapolate`) or without the
+  !> history's global Richardson extrapolation. This states the schemes' measured orders
+  !> (docs/model.md section 5, SPEC section 9); the discretization check's bias estimate and
+  !> advice follow from it. Explicit and implicit: first order. Trapezoidal: second order in 2D;
+  !> first order in 3D, where its slip direction is radial return (SPEC D14 makes it second
+  !> order there: then this returns 2 for it in 3D too). Extrapolation, 2 u(2n) - u(n): second
+  !> order in 2D from any scheme; in 3D not measured, so counted as the scheme's own order.
+  pure integer function scheme_order(scheme, n_components, extrapolate) result(order)
+    integer, intent(in) :: scheme, n_components
+    logical, intent(in) :: extrapolate
+    order = 1
+    if (n_components == 2 .and. (scheme == scheme_trapezoidal .or. extrapolate)) order = 2
+  end function scheme_order
 
   !> "name = value, ..." of every parameter, as the deck gives them (angles as magnitudes).
   function parameter_text(fit, values) result(text)
@@ -223,6 +239,76 @@ contains
 
   end function history_output
 
+  !> '' or why the curve's abscissa does not identify a point of the history `hist` (of the
+  !> deck `d`): on a branch of the history its output c%along holds still (within the branch
+  !> split's tolerance) for more than one step while c%against changes by more than 1e-3 of its
+  !> largest magnitude, and the curve has more than one point at that value on that branch.
+  !> Branch matching would compare each of them with one value of the history (where the
+  !> branch first reaches it). A per-component slip on a path that holds that component for a
+  !> whole leg is such an abscissa (s_T1 on the second leg of a square path); the slip length
+  !> and time, which grow with every step, are not.
+  function abscissa_held(c, hist, d) result(message)
+    type(curve_t), intent(in) :: c
+    type(history_t), intent(in) :: hist
+    type(deck_t), intent(in) :: d
+    character(len=:), allocatable :: message
+    real(dp), allocatable :: hx(:), hy(:)
+    integer, allocatable :: hb(:)
+    real(dp) :: tol, yscale, t_mid
+    integer :: a, z, n, points, seg
+
+    message = ''
+    n = hist%n_rows
+    if (n < 3) return
+    allocate (hx(n), hy(n))
+    hx = history_output(hist, c%along)
+    hy = history_output(hist, c%against)
+    tol = 1.0e-6_dp * (maxval(hx) - minval(hx))
+    yscale = maxval(abs(hy))
+    call split_branches(hx, tol, hb)
+    a = 1
+    do while (a < n)
+      z = a
+      do while (z < n)
+        if (abs(hx(z + 1) - hx(a)) > tol .or. hb(z + 1) /= hb(a)) exit
+        z = z + 1
+      end do
+      if (z - a >= 2 .and. maxval(hy(a:z)) - minval(hy(a:z)) > 1.0e-3_dp * yscale) then
+        points = count(c%branch == hb(a) .and. abs(c%x - hx(a)) <= max(tol, c%tolerance))
+        if (points >= 2) then
+          t_mid = 0.5_dp * (hist%time(a) + hist%time(z))
+          seg = max(1, min(size(d%times) - 1, count(d%times < t_mid)))
+          message = 'curve ' // c%name // ': its abscissa ' // c%x_column // ' (the ' // &
+            'history''s ' // trim(output_names(c%along)) // ') holds still at ' // &
+            format_real(hx(a)) // ' from time ' // format_real(hist%time(a)) // ' to ' // &
+            format_real(hist%time(z)) // ' of the history (' // segment_name(d, seg) // &
+            '), while ' // &
+            trim(output_names(c%against)) // ' goes from ' // format_real(hy(a)) // ' to ' // &
+            format_real(hy(z)) // '; the curve has ' // format_integer(points) // ' points ' // &
+            'there, each of which would be compared with one value of the history. The ' // &
+            'abscissa must identify a point of the history: take the slip length ' // &
+            '(curve_along = ''slip_length'', curve_x the file''s column of the slip path''s ' // &
+            'length) or time (docs/fit.md, "The abscissa")'
+          return
+        end if
+      end if
+      a = z + 1
+    end do
+  end function abscissa_held
+
+  !> "segment k of the loading", or "leg k of the square path" on a path deck
+  !> (segment 1 is its preload).
+  function segment_name(d, seg) result(text)
+    type(deck_t), intent(in) :: d
+    integer, intent(in) :: seg
+    character(len=:), allocatable :: text
+    if (len_trim(d%path_kind) > 0 .and. seg > 1) then
+      text = 'leg ' // format_integer(seg - 1) // ' of the ' // trim(d%path_kind) // ' path'
+    else
+      text = 'segment ' // format_integer(seg) // ' of the loading'
+    end if
+  end function segment_name
+
   !> The model's values at the curve's points (branch matching, linear interpolation), and the
   !> range of history rows between the first and the last row used (first_row:last_row), for plots.
   subroutine curve_model(c, hist, y, first_row, last_row, message)
@@ -253,8 +339,8 @@ contains
     if (maxval(c%branch) > nb) then
       message = 'curve ' // c%name // ': its abscissa ' // c%x_column // ' runs through ' // &
                 format_integer(maxval(c%branch)) // ' monotone branches, the history''s ' // &
-                trim(c%x_column) // ' through ' // format_integer(nb) // ' only: the loading ' // &
-                'of the deck must follow the test''s path'
+                trim(output_names(c%along)) // ' through ' // format_integer(nb) // &
+                ' only: the loading of the deck must follow the test''s path (' // c%turns // ')'
       return
     end if
     first_row = size(hx)

@@ -1,9 +1,10 @@
 !> What interlock-fit writes (docs/fit.md): the HDF5 file of the fit (the fitted parameters, their
 !> standard errors and correlations, each stage's outcome, each curve's data, weights and model,
 !> and the fitted history along it) and the fitted deck (the deck with the fitted values and
-!> without &fit: an ordinary interlock-history deck). Both are written under a temporary name
-!> and renamed when complete (interlock_history_output's file safety), and neither replaces a
-!> file that is not an earlier result of interlock-fit.
+!> without &fit: an ordinary interlock-history deck). Both are written under temporary names
+!> (interlock_history_output's file safety) and renamed together when both are complete
+!> (interlock_fit_main), and neither replaces a file that is not an earlier result of
+!> interlock-fit.
 module interlock_fit_output
   use interlock, only: dp, interlock_version_string, format_integer, properties, prop_theta0, &
       prop_thetaf, prop_zeta0
@@ -11,7 +12,7 @@ module interlock_fit_output
       h5_create_series, h5_append, h5_close_series, h5_attribute
   use interlock_history_output, only: output_t, output_create, output_close, output_abort
   use interlock_files, only: path_kind, path_absent, path_regular, same_file, guard_file, &
-      unguard_file, remove_file, temporary_name
+      unguard_file, remove_file, temporary_name, write_file
   use interlock_deck_text, only: group_scan_t, scan_deck
   use interlock_fit_deck, only: fit_t, fit_groups, output_names, join_selected
   use interlock_lm, only: lm_result_t, lm_stats_t
@@ -41,16 +42,19 @@ module interlock_fit_output
   type :: discretization_t
     real(dp), allocatable :: change(:), ratio(:)
     character(len=:), allocatable :: note
+    integer :: order = 1   !< the order of the deck's scheme in its dimension (scheme_order)
   end type discretization_t
 
 contains
 
-  !> Write the fit file `final_name` (checked by the caller with output_check_target).
+  !> Write the fit file for `final_name` (checked by the caller with output_check_target) as
+  !> `temp`, complete and guarded, for the caller to rename (stat /= 0: nothing is left).
   !> at_bound: where each parameter ended (interlock_fit_model's bound_state); statistics: ''
   !> or why the statistics could not be computed.
   subroutine write_fit_file(final_name, fit, command, values, stats, stages, curves, &
-                            fitted_deck_name, at_bound, statistics, disc, stat, message)
+                            fitted_deck_name, at_bound, statistics, disc, temp, stat, message)
     character(len=*), intent(in) :: final_name, command, fitted_deck_name, at_bound(:), statistics
+    character(len=:), allocatable, intent(out) :: temp
     type(fit_t), intent(in) :: fit
     real(dp), intent(in), contiguous :: values(:)
     type(lm_stats_t), intent(in) :: stats
@@ -65,6 +69,7 @@ contains
 
     call output_create(final_name, out, stat, message)
     if (stat /= 0) return
+    temp = out%temp_name
     call h5_attribute(out%file, 'program', 'interlock-fit', stat)
     if (stat == 0) call h5_attribute(out%file, 'version', interlock_version_string, stat)
     if (stat == 0) call h5_attribute(out%file, 'command_line', command, stat)
@@ -78,6 +83,7 @@ contains
     if (stat == 0) call h5_attribute(out%file, 'discretization_change', disc%change, stat)
     if (stat == 0) call h5_attribute(out%file, 'discretization_change_se', disc%ratio, stat)
     if (stat == 0) call h5_attribute(out%file, 'discretization_check', disc%note, stat)
+    if (stat == 0) call h5_attribute(out%file, 'discretization_order', disc%order, stat)
     if (stat == 0 .and. size(fit%warnings) > 0) &
       call h5_attribute(out%file, 'warnings', fit%warnings, stat)
     if (stat == 0) call h5_attribute(out%file, 'values', values, stat)
@@ -140,8 +146,7 @@ contains
       call output_abort(out)
       return
     end if
-    call output_close(out, stat, message)
-
+    call output_close(out, stat, message, rename=.false.)
   end subroutine write_fit_file
 
   subroutine put_vector(loc, name, x, description, stat)
@@ -212,7 +217,7 @@ contains
     character(len=*), intent(out) :: message
     type(group_scan_t) :: scan(size(fit_groups))
     character(len=:), allocatable :: text, header
-    integer :: n_edit, i, k, g, u, ios, ip, first, last, amp, np
+    integer :: n_edit, i, k, g, ios, ip, first, last, amp, np
     integer, allocatable :: at(:), cut(:)
     character(len=512), allocatable :: put(:)
     character(len=:), allocatable :: value
@@ -274,12 +279,10 @@ contains
       message = 'cannot guard ' // temp // ' against interruption'
       return
     end if
-    open (newunit=u, file=temp, status='replace', action='write', access='stream', &
-          form='unformatted', iostat=ios)
-    if (ios == 0) write (u, iostat=ios) header // achar(10) // text
-    if (ios == 0) close (u, iostat=ios)
+    call write_file(temp, header // achar(10) // text, ios)
     if (ios /= 0) then
-      message = 'cannot write the fitted deck ' // name // ' (as ' // temp // ')'
+      message = 'cannot write the fitted deck ' // name // ' (as ' // temp // '; is the disk ' // &
+                'full?)'
       call remove_file(temp)
       call unguard_file(temp)
       stat = 1

@@ -197,7 +197,7 @@ contains
       if (writer%status /= 'completed') rc = max(rc, 2)
       if (len(writer%sliding_jumps) > 0 .and. .not. jump_warned) then
         jump_warned = .true.
-        write (output_unit, '(a)') path // ': case ' // trim(cbuf) // ': warning: planes ' // &
+        write (error_unit, '(a)') path // ': case ' // trim(cbuf) // ': warning: planes ' // &
           'slide or wear within a segment of one step (' // writer%sliding_jumps // '): ' // &
           'the state at its end is the scheme''s, not the law''s (the schemes differ there, ' // &
           'whatever the steps elsewhere); give that segment more steps to follow the law ' // &
