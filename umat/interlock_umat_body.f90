@@ -32,7 +32,8 @@
 !>    increment cannot help: stop the analysis);
 !>  - a diverged global iteration (DSTRAN not finite or beyond 2e6 mm, or STRAN + DSTRAN
 !>    beyond 1e6 mm: the host's Newton iterate went astray, the start is fine): PNEWDT =
-!>    min(PNEWDT, 0.25), the cut a host makes for a diverged iteration of its own;
+!>    min(PNEWDT, 0.25), the cut a host makes for a diverged iteration of its own (a host on
+!>    fixed increments cannot cut back: it stops, and the message says so);
 !>  - local integration failure: PNEWDT = min(PNEWDT, 0.5);
 !>  in these cases STRESS, STATEV, DDSDDE, SSE, SPD, SCD are left untouched, and one line
 !>  `interlock UMAT: element E, point P (...): <why>` names the value (STATEV by index) and
@@ -543,15 +544,18 @@ contains
 
   !> The message of a diverged global iteration: `what` ("DSTRAN = (x, y) mm") is not finite
   !> or takes the end of the increment beyond `bound` ("|s| <= 1e6 mm"): the host's iterate
-  !> went astray from a sound start, and the increment is cut back.
+  !> went astray from a sound start. What follows the request depends on the host's
+  !> incrementation, and the message says both: automatic increments retry a quarter of the
+  !> increment; fixed ones (ccx's *STATIC, DIRECT) cannot be cut back, and the host stops.
   pure function diverged_iteration_message(what, bound) result(message)
     use interlock, only: format_real, message_len
     character(len=*), intent(in) :: what, bound
     character(len=message_len) :: message
     message = 'diverged global iteration: ' // what // ' is not finite or takes the end of ' // &
               'the increment beyond ' // bound // ' (the start is sound: the host''s Newton ' // &
-              'iterate went astray): the increment is cut back (PNEWDT ' // &
-              format_real(pnewdt_diverged) // ')'
+              'iterate went astray): PNEWDT ' // format_real(pnewdt_diverged) // ' asks to ' // &
+              'retry the increment cut back to a quarter (automatic incrementation); with ' // &
+              'fixed increments the host cannot cut back and stops'
   end function diverged_iteration_message
 
   !> Reject STATEV(bad), naming index, variable, value and range.
