@@ -25,8 +25,11 @@ import subprocess
 import sys
 import tempfile
 
-import h5py
-import numpy as np
+import python_with  # the python3 that has the modules below
+
+python_with.modules("h5py", "numpy")
+import h5py  # noqa: E402
+import numpy as np  # noqa: E402
 
 
 def main():

@@ -13,7 +13,10 @@ Needs h5py and matplotlib (/usr/bin/python3).
 import argparse
 import os
 
-import matplotlib
+import python_with  # the python3 that has the modules below
+
+python_with.modules("h5py", "matplotlib", "numpy")
+import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
 import h5py  # noqa: E402

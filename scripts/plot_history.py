@@ -23,7 +23,10 @@ import argparse
 import os
 import sys
 
-import matplotlib
+import python_with  # the python3 that has the modules below
+
+python_with.modules("h5py", "matplotlib", "numpy")
+import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
 import h5py  # noqa: E402

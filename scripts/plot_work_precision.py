@@ -14,7 +14,10 @@ import csv
 import os
 import sys
 
-import matplotlib
+import python_with  # the python3 that has the modules below
+
+python_with.modules("matplotlib")
+import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402

@@ -9,6 +9,13 @@
 #    are written to <build>/tests/calculix/*_convergence.txt;
 #  - shear by force on a debonded interface with the symmetric tangent reaches the full load.
 set(INTERLOCK_CCX "" CACHE FILEPATH "ccx built with interlock's umat (scripts/build_calculix.sh)")
+# direct_shear.py --help (no ccx needed) documents every option: no option line of argparse's
+# help is followed directly by the next option or the end.
+add_test(NAME calculix_direct_shear_help
+  COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/examples/calculix/direct_shear/direct_shear.py --help)
+set_tests_properties(calculix_direct_shear_help PROPERTIES LABELS calculix
+  PASS_REGULAR_EXPRESSION "usage: direct_shear.py"
+  FAIL_REGULAR_EXPRESSION "\n  -[-a-zA-Z0-9]+(, --[-a-zA-Z0-9]+)?( [A-Z_]+| \\{[^}]*\\})?\n(  -|$)|Traceback")
 if(INTERLOCK_CCX AND TARGET interlock-history)
   if(NOT EXISTS ${INTERLOCK_CCX})
     message(FATAL_ERROR "INTERLOCK_CCX = ${INTERLOCK_CCX} does not exist")
@@ -33,7 +40,8 @@ if(INTERLOCK_CCX AND TARGET interlock-history)
     foreach(tangent 1 2)
       add_test(NAME calculix_direct_shear_${element}_tangent${tangent}
         COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/examples/calculix/direct_shear/direct_shear.py
-                run --element ${element} --tangent ${tangent} --ccx ${INTERLOCK_CCX}
+                run --element ${element} --tangent ${tangent} --state-tolerance 1e-5
+                --ccx ${INTERLOCK_CCX}
                 --history $<TARGET_FILE:interlock-history> --out ${calculix_work})
       set_tests_properties(calculix_direct_shear_${element}_tangent${tangent} PROPERTIES
         LABELS calculix TIMEOUT 300 FIXTURES_REQUIRED calculix_binary
@@ -47,14 +55,16 @@ if(INTERLOCK_CCX AND TARGET interlock-history)
   # paper's RIA and on the azimuthal RIA with N_a = 3 (7 planes, *DEPVAR 66); the tangent
   # option 1 throughout, 2 as well for one case of each path kind. The layer's tractions equal
   # interlock-history's 3D replay of its separations (s_N, s_T1, s_T2) to 1e-5; the state to
-  # 5e-5 (ccx prints the separations with 7 digits, and a friction traction K_t (s - sf)
-  # replayed from them carries K_t times that rounding: 1.7e-5 seen at 45 deg); the layer's
-  # slip follows the imposed path (within twice the blocks' elastic shear).
+  # 5e-5, direct_shear.py's default (ccx prints the separations with 7 digits, and a friction
+  # traction K_t (s - sf) replayed from them carries K_t times that rounding: 1.7e-5 seen at
+  # 45 deg), so these are the documented commands; the layer's slip follows the imposed path
+  # (within twice the blocks' elastic shear). The 2D cases above keep the state at 1e-5 (seen
+  # 1.6e-6).
   function(calculix_direct_shear_3d name tangents)
     foreach(tangent ${tangents})
       add_test(NAME calculix_direct_shear_C3D8_${name}_tangent${tangent}
         COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/examples/calculix/direct_shear/direct_shear.py
-                run --element C3D8 --tangent ${tangent} ${ARGN} --state-tolerance 5e-5
+                run --element C3D8 --tangent ${tangent} ${ARGN}
                 --ccx ${INTERLOCK_CCX} --history $<TARGET_FILE:interlock-history> --out ${calculix_work})
       set_tests_properties(calculix_direct_shear_C3D8_${name}_tangent${tangent} PROPERTIES
         LABELS calculix TIMEOUT 300 FIXTURES_REQUIRED calculix_binary
@@ -94,7 +104,13 @@ if(INTERLOCK_CCX AND TARGET interlock-history)
   #  - grbig_bounds: the granite joint, one big automatic increment, bounds on (no request that
   #    shaves a few per cent, no futile request);
   #  - neg_hn, neg_hn_two: a bad property is one line per material (two threads), ccx stops;
-  #  - axis_wrong: normal 1, slip 3 on a layer thin along z: one warning, the run goes on.
+  #  - axis_wrong: normal 1, slip 3 on a layer thin along z: one warning, the run goes on;
+  #  - straight_x_n15: Table 1 under 0.2 MPa, slip in fixed increments of 0.1 mm: the first
+  #    iterate of the third increment opens the dilating layer beyond contact, where the
+  #    debonded law carries nothing (tangent 0): the pressure-loaded block is singular, the
+  #    UMAT sees a diverged iteration and says that with fixed increments the host stops, and
+  #    ccx stops; straight_x_n15_auto: the same under automatic increments reaches the end;
+  #  - depvar30: *DEPVAR 30, between the 3D law's 28 and the layer's 34: bad input, named.
   set(calculix_decks ${INTERLOCK_TEST_DATA}/calculix)
   set(calculix_decks_runner /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/test_calculix_decks.py
       ${INTERLOCK_CCX})
@@ -103,7 +119,7 @@ if(INTERLOCK_CCX AND TARGET interlock-history)
     ${calculix_work}/decks --complete --normal-traction 2.0 --count ${umat_line} 0)
   add_test(NAME calculix_decks_big_t2_bounds COMMAND ${calculix_decks_runner}
     ${calculix_decks}/big_t2_bounds.inp ${calculix_work}/decks --complete
-    --count "diverged global iteration: DSTRAN\\([0-9]\\) = .*cut back \\(PNEWDT 0.25\\)" 1
+    --count "diverged global iteration: DSTRAN\\([0-9]\\) = .*PNEWDT 0.25 asks to retry the increment cut back to a quarter" 1
     --count "^interlock UMAT.*inadmissible" 0)
   add_test(NAME calculix_decks_grbig_bounds COMMAND ${calculix_decks_runner}
     ${calculix_decks}/grbig_bounds.inp ${calculix_work}/decks --complete)
@@ -118,8 +134,19 @@ if(INTERLOCK_CCX AND TARGET interlock-history)
     ${calculix_decks}/axis_wrong.inp ${calculix_work}/decks --complete
     --count "^interlock UMAT \\(layer\\): warning: .*does not involve normal_axis = 1" 1
     --count ${umat_line} 1)
+  add_test(NAME calculix_decks_straight_x_n15 COMMAND ${calculix_decks_runner}
+    ${calculix_decks}/straight_x_n15.inp ${calculix_work}/decks --stops
+    --count "diverged global iteration: .*with fixed increments the host cannot cut back and stops" 1
+    --count "solution seems to diverge" 1 --count ${umat_line} 1)
+  add_test(NAME calculix_decks_straight_x_n15_auto COMMAND ${calculix_decks_runner}
+    ${calculix_decks}/straight_x_n15_auto.inp ${calculix_work}/decks --complete
+    --count "diverged global iteration: .*cut back to a quarter" 1)
+  add_test(NAME calculix_decks_depvar30 COMMAND ${calculix_decks_runner}
+    ${calculix_decks}/depvar30.inp ${calculix_work}/decks --stops --count ${umat_line} 1
+    --count "NSTATV = 30 is inadmissible for the thin layer: admissible NSTATV = 28 \\(the law's state\\) or NSTATV >= 34" 1)
   set_tests_properties(calculix_decks_gr_x calculix_decks_big_t2_bounds calculix_decks_grbig_bounds
-    calculix_decks_neg_hn calculix_decks_neg_hn_two calculix_decks_axis_wrong PROPERTIES
+    calculix_decks_neg_hn calculix_decks_neg_hn_two calculix_decks_axis_wrong
+    calculix_decks_straight_x_n15 calculix_decks_straight_x_n15_auto calculix_decks_depvar30 PROPERTIES
     LABELS calculix TIMEOUT 600 FIXTURES_REQUIRED calculix_binary
     FAIL_REGULAR_EXPRESSION "FAIL|Traceback")
 endif()

@@ -21,7 +21,8 @@
 !> **Energies.** SSE = stored (free) energy, SCD = total dissipation (damage + friction; the split
 !> is in STATEV 20 and 21), SPD = 0. All per unit area [N/mm].
 !>
-!> **PNEWDT.** PNEWDT is only ever lowered, never raised (a NaN on entry is replaced):
+!> **PNEWDT.** PNEWDT is only ever lowered, never raised (a NaN on entry is replaced: by 1, no
+!> request, when none is due):
 !>  - bad input (precision of the reals < 15, NTENS /= 2, NSTATV < 22, NPROPS or a property out
 !>    of its range, NaN; a STATEV slot out of its range: damage outside [0, 1], negative beta
 !>    or zeta, theta outside [theta_f, theta_0] of its plane, the flag STATEV(22) not 0 or 1,
@@ -31,7 +32,8 @@
 !>    increment cannot help: stop the analysis);
 !>  - a diverged global iteration (DSTRAN not finite or beyond 2e6 mm, or STRAN + DSTRAN
 !>    beyond 1e6 mm: the host's Newton iterate went astray, the start is fine): PNEWDT =
-!>    min(PNEWDT, 0.25), the cut a host makes for a diverged iteration of its own;
+!>    min(PNEWDT, 0.25), the cut a host makes for a diverged iteration of its own (a host on
+!>    fixed increments cannot cut back: it stops, and the message says so);
 !>  - local integration failure: PNEWDT = min(PNEWDT, 0.5);
 !>  in these cases STRESS, STATEV, DDSDDE, SSE, SPD, SCD are left untouched, and one line
 !>  `interlock UMAT: element E, point P (...): <why>` names the value (STATEV by index) and
@@ -109,9 +111,12 @@ module interlock_umat_body
   public :: pnewdt_bad_input, pnewdt_local_failure, keep_fraction, pnewdt_min_factor, &
             separation_bits, increment_bits, state_bits, bad_precision, bad_ntens, bad_nstatv, bad_stress, &
             report, report_update_failure, separation_text, lower_pnewdt, step_factor, property_index, name_layer_property, &
-            reject_argument, reject_start_separation, write_replay
+            reject_argument, reject_start_separation, write_replay, pnewdt_none, &
+            layer_nstatv_between, reject_layer_nstatv
 
   real(dp), parameter :: pnewdt_bad_input = -1.0_dp
+  !> "No request" in Abaqus' convention (what a NaN PNEWDT on entry is replaced by).
+  real(dp), parameter :: pnewdt_none = 1.0_dp
   real(dp), parameter :: pnewdt_local_failure = 0.5_dp
   !> A diverged global iteration: the cut hosts make for their own diverged iterations.
   real(dp), parameter :: pnewdt_diverged = 0.25_dp
@@ -136,10 +141,10 @@ contains
                             STRAN, DSTRAN, TIME, DTIME, TEMP, DTEMP, PREDEF, DPRED, CMNAME, NDI, &
                             NSHR, NTENS, NSTATV, PROPS, NPROPS, COORDS, DROT, PNEWDT, CELENT, &
                             DFGRD0, DFGRD1, NOEL, NPT, LAYER, KSPT, JSTEP, KINC, &
-                            layer_props_offset)
+                            layer_props_offset, layer_nstatv_extra)
     use interlock, only: props_n_to_material, statev_to_state, state_to_statev, umat_nstatv, &
         message_len, statev_bad_index, format_real, prop_tangent, tangent_symmetric, &
-        interlock_symmetric_tangent
+        interlock_symmetric_tangent, is_nan_value
     implicit none
     integer, intent(in) :: NDI                 !< direct components (1 for a 2D cohesive element)
     integer, intent(in) :: NSHR                !< shear components (1 for a 2D cohesive element)
@@ -168,6 +173,9 @@ contains
     !> For the thin layer (umat/interlock_umat_layer.f90): PROPS are its PROPS from this index
     !> + 1 on, and a bad property is named by both indices.
     integer, intent(in), optional :: layer_props_offset
+    !> For the thin layer: the slots of its output after the law's STATEV (NSTATV between the
+    !> two counts is bad input: room for part of that output only).
+    integer, intent(in), optional :: layer_nstatv_extra
 
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver
@@ -186,6 +194,8 @@ contains
                unused_15 => DFGRD0, unused_16 => DFGRD1)
     end associate
 
+    ! A NaN PNEWDT on entry is garbage: replaced by "no request" (1), whatever happens next.
+    if (is_nan_value(PNEWDT)) PNEWDT = pnewdt_none
     ! --- Bad input: the host's arguments, every property by its range, the separations, the
     ! traction and the state on entry (every value that may be garbage tested on its bits, see
     ! "Cost"); the messages only on failure.
@@ -201,6 +211,13 @@ contains
     if (NSTATV < umat_nstatv) then
       call reject_argument(bad_nstatv, NSTATV, [0.0_dp, 0.0_dp], NOEL, NPT, KINC, CMNAME, PNEWDT)
       return
+    end if
+    if (present(layer_nstatv_extra)) then
+      if (layer_nstatv_between(NSTATV, umat_nstatv, layer_nstatv_extra)) then
+        call reject_layer_nstatv(NSTATV, umat_nstatv, layer_nstatv_extra, NOEL, NPT, KINC, &
+                                 CMNAME, PNEWDT)
+        return
+      end if
     end if
     call props_n_to_material(NPROPS, PROPS, mat, solver, controls, stat, message)
     if (stat /= status_ok) then
@@ -476,6 +493,28 @@ contains
     end select
   end subroutine reject_argument
 
+  !> The thin layer's NSTATV holds the law's state and part of the layer's output (`extra`
+  !> slots after the law's `law_nstatv`): that part would silently never be written.
+  pure logical function layer_nstatv_between(nstatv, law_nstatv, extra)
+    integer, intent(in) :: nstatv, law_nstatv, extra
+    layer_nstatv_between = nstatv > law_nstatv .and. nstatv < law_nstatv + extra
+  end function layer_nstatv_between
+
+  !> Reject a thin layer's NSTATV between the law's count and the law's and the layer's.
+  subroutine reject_layer_nstatv(nstatv, law_nstatv, extra, noel, npt, kinc, cmname, pnewdt)
+    use interlock, only: format_integer
+    integer, intent(in) :: nstatv, law_nstatv, extra, noel, npt, kinc
+    character(len=*), intent(in) :: cmname
+    real(dp), intent(inout) :: pnewdt
+    call report('NSTATV = ' // format_integer(nstatv) // ' is inadmissible for the thin ' // &
+                'layer: admissible NSTATV = ' // format_integer(law_nstatv) // ' (the law''s ' // &
+                'state) or NSTATV >= ' // format_integer(law_nstatv + extra) // ' (also the ' // &
+                'layer''s separation and traction, STATEV ' // format_integer(law_nstatv + 1) // &
+                '-' // format_integer(law_nstatv + extra) // '); ' // format_integer(nstatv) // &
+                ' would leave that output unwritten (*DEPVAR)', pnewdt_bad_input, &
+                said_argument + bad_nstatv, noel, npt, kinc, cmname, pnewdt)
+  end subroutine reject_layer_nstatv
+
   !> Reject the separation at the start of the increment (the host's converged STRAN): not
   !> finite or beyond the admissible bound is bad input.
   subroutine reject_start_separation(stran, noel, npt, kinc, cmname, pnewdt)
@@ -505,15 +544,18 @@ contains
 
   !> The message of a diverged global iteration: `what` ("DSTRAN = (x, y) mm") is not finite
   !> or takes the end of the increment beyond `bound` ("|s| <= 1e6 mm"): the host's iterate
-  !> went astray from a sound start, and the increment is cut back.
+  !> went astray from a sound start. What follows the request depends on the host's
+  !> incrementation, and the message says both: automatic increments retry a quarter of the
+  !> increment; fixed ones (ccx's *STATIC, DIRECT) cannot be cut back, and the host stops.
   pure function diverged_iteration_message(what, bound) result(message)
     use interlock, only: format_real, message_len
     character(len=*), intent(in) :: what, bound
     character(len=message_len) :: message
     message = 'diverged global iteration: ' // what // ' is not finite or takes the end of ' // &
               'the increment beyond ' // bound // ' (the start is sound: the host''s Newton ' // &
-              'iterate went astray): the increment is cut back (PNEWDT ' // &
-              format_real(pnewdt_diverged) // ')'
+              'iterate went astray): PNEWDT ' // format_real(pnewdt_diverged) // ' asks to ' // &
+              'retry the increment cut back to a quarter (automatic incrementation); with ' // &
+              'fixed increments the host cannot cut back and stops'
   end function diverged_iteration_message
 
   !> Reject STATEV(bad), naming index, variable, value and range.

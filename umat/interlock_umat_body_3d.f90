@@ -18,8 +18,10 @@
 !>
 !> **Checks, PNEWDT, messages, energies** as the 2D body's header says, component by component:
 !> bad input -1, a diverged global iteration 0.25, a local failure 0.5, the accuracy bounds'
-!> fraction (damage and the angles: the dip direction's wear); one line per material and kind.
-!> A failed increment writes no replay deck (the point-history program reads 2D decks only).
+!> fraction (damage and the angles: the dip direction's wear); one line per material and kind;
+!> a NaN PNEWDT on entry is replaced (by 1, no request, when none is due).
+!> A local failure writes a 3D replay deck when INTERLOCK_REPLAY_DIR names a folder, as in 2D
+!> (strike components, s_T2 and the RIA in it; `interlock-history` runs it).
 !>
 !> **Threads.** No SAVE'd, module or COMMON state is written but the messages' table (under
 !> its lock); `recursive`: every local on the stack.
@@ -30,7 +32,8 @@ module interlock_umat_body_3d
       pnewdt_min_factor, separation_bits, increment_bits, state_bits, bad_precision, bad_ntens, &
       bad_nstatv, bad_stress, report, report_update_failure, lower_pnewdt, step_factor, &
       property_index, name_layer_property, reject_argument, reject_start_separation, separation_text, &
-      diverged_iteration_message, write_replay
+      diverged_iteration_message, write_replay, pnewdt_none, layer_nstatv_between, &
+      reject_layer_nstatv
   use interlock, only: dp, separation_bound, interlock_material_t, interlock_solver_t, &
       interlock_state_3d_t, interlock_info_t, interlock_update_3d, umat_controls_t, status_ok, &
       status_local_failure, scheme_explicit
@@ -43,10 +46,10 @@ contains
   recursive subroutine interlock_umat_cohesive_3d(STRESS, STATEV, DDSDDE, SSE, SPD, SCD, RPL, &
       DDSDDT, DRPLDE, DRPLDT, STRAN, DSTRAN, TIME, DTIME, TEMP, DTEMP, PREDEF, DPRED, CMNAME, &
       NDI, NSHR, NTENS, NSTATV, PROPS, NPROPS, COORDS, DROT, PNEWDT, CELENT, DFGRD0, DFGRD1, &
-      NOEL, NPT, LAYER, KSPT, JSTEP, KINC, layer_props_offset)
+      NOEL, NPT, LAYER, KSPT, JSTEP, KINC, layer_props_offset, layer_nstatv_extra)
     use interlock, only: props_n_to_material_3d, statev_to_state_3d, state_to_statev_3d, &
         statev_bad_index_3d, statev_message_3d, umat_nstatv_3d, message_len, format_integer, format_real, &
-        prop_tangent, tangent_symmetric, interlock_symmetric_tangent_3d
+        prop_tangent, tangent_symmetric, interlock_symmetric_tangent_3d, is_nan_value
     integer, intent(in) :: NDI                 !< direct components (1)
     integer, intent(in) :: NSHR                !< shear components (2)
     integer, intent(in) :: NTENS               !< must be 3
@@ -73,6 +76,9 @@ contains
     real(dp), intent(inout) :: PNEWDT          !< suggested time-step ratio (only lowered here)
     !> For the thin layer: PROPS are its PROPS from this index + 1 on (messages name both).
     integer, intent(in), optional :: layer_props_offset
+    !> For the thin layer: the slots of its output after the law's STATEV (NSTATV between the
+    !> two counts is bad input: room for part of that output only).
+    integer, intent(in), optional :: layer_nstatv_extra
 
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver
@@ -91,6 +97,8 @@ contains
                unused_15 => DFGRD0, unused_16 => DFGRD1)
     end associate
 
+    ! A NaN PNEWDT on entry is garbage: replaced by "no request" (1), whatever happens next.
+    if (is_nan_value(PNEWDT)) PNEWDT = pnewdt_none
     ! --- Bad input, as in 2D (every value that may be garbage tested on its bits).
     if (precision(STRESS) < 15 .or. precision(PROPS) < 15 .or. precision(PNEWDT) < 15) then
       call reject_argument(bad_precision, min(precision(STRESS), precision(PROPS), &
@@ -117,6 +125,13 @@ contains
                   'interlock-query --statev)', pnewdt_bad_input, said_argument + bad_nstatv, NOEL, NPT, KINC, CMNAME, &
                   PNEWDT)
       return
+    end if
+    if (present(layer_nstatv_extra)) then
+      if (layer_nstatv_between(NSTATV, nsv, layer_nstatv_extra)) then
+        call reject_layer_nstatv(NSTATV, nsv, layer_nstatv_extra, NOEL, NPT, KINC, CMNAME, &
+                                 PNEWDT)
+        return
+      end if
     end if
     if (.not. all(key_in_range(STRAN, -1 - separation_bits, separation_bits))) then
       call reject_start_separation(STRAN, NOEL, NPT, KINC, CMNAME, PNEWDT)

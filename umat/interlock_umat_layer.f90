@@ -32,15 +32,22 @@
 !> 28 for the paper's RIA); with 4 more (NTENS = 4) or 6 more (NTENS = 6) slots also the
 !> separation (normal, t1) [mm] and the traction (normal, t1) [MPa] at the end of the
 !> increment, in the interface's axes (for output: hosts print S in their global axes), and
-!> with NTENS = 6 then the separation and the traction along t2.
+!> with NTENS = 6 then the separation and the traction along t2. NSTATV is the law's count or
+!> at least the law's and the layer's: a count in between (room for part of the layer's
+!> output) is bad input, refused by the law's body with both admissible counts in its message
+!> (the law's count is known only once it has read the RIA from PROPS).
 !> **Energies** per unit volume: the law's SSE and SCD (per unit area) / h, plus the elastic
 !> energy of the other components in SSE; SPD = 0 (nothing is read from them on entry).
 !>
-!> **Strains.** Every component's |h x strain| must stay within the admissible separation
+!> **Strains.** Every component's separation h x strain must stay within the admissible
 !> 1e6 mm (tested on the bits: no comparison of a NaN, no product that overflows): STRAN, the
-!> converged start, out of it is bad input; DSTRAN out of it (or not finite), or the end of the
-!> increment beyond it, is a diverged global iteration of the host (a cutback; the start is
-!> sound). So the other components never carry garbage on into STRESS or the energies.
+!> converged start, beyond |STRAN| <= 1e6 mm / h (or not finite) is bad input; its separation
+!> h STRAN, which round-off can put an ulp or two beyond 1e6 mm, is taken as at most 1e6 mm, so
+!> the law refuses no start the layer admits. DSTRAN not finite or beyond 2e6 mm / h, or the
+!> end of the increment h STRAN + h DSTRAN beyond 1e6 mm (the law's own test, on the
+!> separations the law receives), is a diverged global iteration of the host (a cutback; the
+!> start is sound). So the other components never carry garbage on into STRESS or the
+!> energies.
 !>
 !> **PNEWDT** (`host`):
 !>  - `host_abaqus`: as the 2D law (only lowered: -1 for bad input, 0.25 for a diverged global
@@ -53,7 +60,8 @@
 !>    below the minimum and ccx stops, or stops at once with fixed increments); a diverged
 !>    iteration 0.25, a local failure 0.5 and the accuracy bounds their fraction. -1 is left
 !>    alone when all is well.
-!>  A NaN PNEWDT on entry is replaced when a request is due (tested on its bits), else left.
+!>  A NaN PNEWDT on entry (tested on its bits) is replaced, by the host's "no request" (-1
+!>  for ccx, 1 for Abaqus) when no request is due.
 !>  On bad input or a failure, STRESS, STATEV, DDSDDE and the energies are left as they came.
 !>
 !> **Messages**: one line per material and kind (umat/interlock_umat_messages.f90), naming the
@@ -69,11 +77,11 @@
 module interlock_umat_layer
   use, intrinsic :: iso_fortran_env, only: int64
   use interlock, only: dp, message_len, format_integer, format_real, format_reals, umat_nstatv, &
-      n_required_properties, n_properties, separation_bound, is_finite_bits, umat_nstatv_3d, &
-      props_n_planes_3d
+      n_required_properties, n_properties, separation_bound, is_finite_bits, is_nan_value, &
+      umat_nstatv_3d, props_n_planes_3d
   use interlock_numbers, only: key_in_range
   use interlock_umat_body, only: interlock_umat_cohesive, diverged_iteration_message, &
-      pnewdt_diverged
+      pnewdt_diverged, pnewdt_none, separation_increment_bits => increment_bits
   use interlock_umat_body_3d, only: interlock_umat_cohesive_3d
   use interlock_umat_messages, only: umat_say, said_argument, said_start_strain, &
       said_diverged, said_layer_axes
@@ -201,16 +209,17 @@ contains
     real(dp), intent(inout) :: PNEWDT
     integer, intent(in) :: host   !< host_abaqus or host_calculix: the PNEWDT convention
 
-    real(dp), parameter :: pnewdt_none = 1.0_dp
     real(dp), parameter :: untouched = -huge(1.0_dp)
     integer :: comp2(2), comp(3), m, normal, slip, i, law_nstatv
     integer(int64) :: strain_bits, increment_bits
     real(dp) :: h, e_other, t(3), s0(3), ds(3), d(3, 3), sgn(3), sse2, scd2, p2, elastic, strain_bound
     ! (fixed size: NTENS is checked to be 4 or 6 first; no automatic array, no heap per call)
-    real(dp) :: strain(6)
+    real(dp) :: strain(6), sep0(6), dsep(6)
     logical :: interface_component(6)
     character(len=message_len) :: message
 
+    ! A NaN PNEWDT on entry is garbage: the host's "no request", whatever happens next.
+    if (is_nan_value(PNEWDT)) PNEWDT = merge(-1.0_dp, pnewdt_none, host == host_calculix)
     ! --- The host's arguments and the layer's own PROPS, each by name and range (on the
     ! bits: no comparison of a NaN, signalling or quiet).
     if (NTENS /= 4 .and. NTENS /= 6) then
@@ -277,8 +286,13 @@ contains
       comp(3) = 0
     end if
 
-    ! --- Every strain component: |h strain| within the admissible separation, on the bits
-    ! (the bound's bits order as the magnitudes do; NaN and Inf lie beyond).
+    ! --- Every strain component within the admissible separation, on the bits (the bound's
+    ! bits order as the magnitudes do; NaN and Inf lie beyond). The start: |STRAN| <= 1e6 mm / h,
+    ! and its separation h STRAN, which round-off can put an ulp or two beyond 1e6 mm, taken as
+    ! at most 1e6 mm (so the law never refuses a start the layer admits). The end: the law's
+    ! own test on the very separations it receives (start + h DSTRAN), so the law never finds
+    ! a diverged iteration the layer let through; DSTRAN is bounded first on the bits, so
+    ! that h DSTRAN cannot overflow.
     strain_bound = separation_bound / h
     strain_bits = transfer(strain_bound, 0_int64)
     increment_bits = transfer(2.0_dp * strain_bound, 0_int64)
@@ -291,12 +305,16 @@ contains
                   said_start_strain + i)
         return
       end if
+      sep0(i) = min(separation_bound, max(-separation_bound, h * STRAN(i)))
     end do
-    s0(1:m) = sgn(1:m) * h * STRAN(comp(1:m))
+    s0(1:m) = sgn(1:m) * sep0(comp(1:m))
     do i = 1, NTENS
       if (.not. key_in_range(DSTRAN(i), -1_int64 - increment_bits, increment_bits)) exit
+      dsep(i) = h * DSTRAN(i)
+      if (.not. key_in_range(dsep(i), -1_int64 - separation_increment_bits, &
+                             separation_increment_bits)) exit
+      if (abs(sep0(i) + dsep(i)) > separation_bound) exit
       strain(i) = STRAN(i) + DSTRAN(i)
-      if (abs(strain(i)) > strain_bound) exit
     end do
     if (i <= NTENS) then
       call diverged(i)
@@ -308,7 +326,7 @@ contains
     t = 0.0_dp
     t(1:m) = STRESS(comp(1:m))
     if (sgn(3) < 0.0_dp) t(3) = -t(3)   ! (a sign flip: no arithmetic on what may be garbage)
-    ds(1:m) = sgn(1:m) * h * DSTRAN(comp(1:m))
+    ds(1:m) = sgn(1:m) * dsep(comp(1:m))
     p2 = pnewdt_none
     call law(t, STATEV, d, sse2, scd2, s0, ds, p2)
     if (transfer(d(1, 1), 0_int64) == transfer(untouched, 0_int64)) then
@@ -448,7 +466,8 @@ contains
           rpl_law, ddsddt_law, drplde_law, drpldt_law, s_start, ds_law, TIME, DTIME, TEMP, &
           DTEMP, PREDEF, DPRED, CMNAME, 1, 2, 3, NSTATV, PROPS(layer_nprops_head + 1:NPROPS), &
           NPROPS - layer_nprops_head, COORDS, DROT, p_law, CELENT, DFGRD0, DFGRD1, NOEL, NPT, &
-          LAYER, KSPT, JSTEP, KINC, layer_props_offset=layer_nprops_head)
+          LAYER, KSPT, JSTEP, KINC, layer_props_offset=layer_nprops_head, &
+          layer_nstatv_extra=layer_nstatv_extra_3d)
       else
         d2 = untouched
         call interlock_umat_cohesive(traction(1:2), statev_law, d2, sse_law, spd_law, scd_law, &
@@ -456,7 +475,8 @@ contains
           TIME, DTIME, TEMP, DTEMP, PREDEF, DPRED, CMNAME, 1, 1, 2, NSTATV, &
           PROPS(layer_nprops_head + 1:NPROPS), NPROPS - layer_nprops_head, COORDS, DROT, &
           p_law, CELENT, DFGRD0, DFGRD1, NOEL, NPT, LAYER, KSPT, JSTEP, KINC, &
-          layer_props_offset=layer_nprops_head)   ! (the law checks its PROPS, named by both indices)
+          layer_props_offset=layer_nprops_head, layer_nstatv_extra=layer_nstatv_extra)
+        ! (the law checks its PROPS, named by both indices, and NSTATV)
         if (transfer(d2(1, 1), 0_int64) /= transfer(untouched, 0_int64)) d(1:2, 1:2) = d2
       end if
     end subroutine law

@@ -503,12 +503,16 @@ contains
       all(is_finite_bits(a%ddsddt(1:ntens))) .and. all(is_finite_bits(a%drplde(1:ntens)))
   end function outputs_finite
 
-  !> PNEWDT on return is the value that came in, or a request of the host's convention.
+  !> PNEWDT on return is the value that came in, or a request of the host's convention; a NaN
+  !> that came in may also come back as the host's "no request" (-1 ccx, 1 Abaqus).
   logical function pnewdt_admissible(p_in, p_out, host)
     real(dp), intent(in) :: p_in, p_out
     integer, intent(in) :: host
     pnewdt_admissible = same_bits(p_in, p_out)
     if (pnewdt_admissible .or. .not. is_finite_bits(p_out)) return
+    pnewdt_admissible = is_nan_value(p_in) .and. &
+                        same_bits(p_out, merge(-1.0_dp, 1.0_dp, host == host_calculix))
+    if (pnewdt_admissible) return
     if (host == host_calculix) then
       pnewdt_admissible = p_out > 0.0_dp .and. p_out < 1.0_dp
     else

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Direct shear in CalculiX with the interlock thin layer, checked against interlock-history.
 
 A block with one interface layer (h = 0.01 mm) between two elastic blocks: a normal pressure of
@@ -9,9 +9,11 @@ local 1 = radial and slip = local 3 = axial of *ORIENTATION, SYSTEM=CYLINDRICAL)
 
     direct_shear.py write --element C3D8 [--tangent 1|2] [--out DIR]      (the .inp only)
     direct_shear.py run --ccx CCX --history INTERLOCK_HISTORY --element C3D8
-                        [--tangent 1|2] [--out DIR] [--tolerance 1e-5] [--angle-deg A]
+                        [--tangent 1|2] [--out DIR] [--tolerance 1e-5]
+                        [--state-tolerance 5e-5] [--angle-deg A]
                         [--path straight|square|circle] [--side A] [--radius R]
-                        [--ria paper|azimuthal] [--n-azimuths N]
+                        [--increments N] [--ria paper|azimuthal] [--n-azimuths N]
+                        [--prefractured] [--shear-traction TAU]
 
 C3D8 only, the slip in the layer's plane (t1 = x, t2 = y; both shear components through the 3D
 law): --angle-deg, the straight slip at A deg from t1 towards t2; --path square (side A, default
@@ -31,14 +33,20 @@ the largest traction of the run; each state variable relative to its largest val
 (the friction tractions: at least the largest traction). It also writes convergence.txt: the
 global iterations of every increment (mean, median, max) and the residual sequence (ccx's .cvg
 and .sta). Exit status 0 when all agree. Standard library plus h5py (for interlock-history's
-output).
+output): `run` restarts itself under /usr/bin/python3 (or another python3 on PATH with h5py)
+when the interpreter running it has no h5py (scripts/python_with.py).
 """
 import argparse
 import math
 import pathlib
 import re
+import os
 import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..",
+                                "scripts"))
+import python_with  # noqa: E402  (the python3 that has h5py, for `run`)
 
 H = 0.01            # layer thickness [mm]
 E_OTHER = 0.01      # modulus of the layer's other components [MPa] (small: see below)
@@ -62,6 +70,12 @@ AXES = {"C3D8": (3, 1), "CPE4": (2, 1), "CAX4": (1, 3)}   # (normal, slip) local
 LAYER_EXTRA = 6
 # The state variables that are tractions [MPa]
 TRACTION_STATE = ("friction_traction", "tauf_strike")
+# What ccx's printed values support (7 significant digits, relative rounding <= 5e-7): the
+# tractions agree to 9.1e-7 of the largest traction; a state variable replayed from printed
+# separations carries their rounding times its sensitivity (a friction traction K_t (s - sf):
+# K_t x 5e-7 x |s|, 1.7e-5 of the largest traction seen at 45 deg).
+TRACTION_TOLERANCE = 1e-5
+STATE_TOLERANCE = 5e-5
 
 
 def n_planes(ria, n_azimuths):
@@ -527,7 +541,7 @@ def run(args):
                     compare(f"{name}[{k + 1}]" if count > 1 else name, values, hv, scale)
         col += count
     traction_names = ("normal traction", "shear traction", "t2 traction")
-    state_tolerance = args.state_tolerance or args.tolerance
+    state_tolerance = args.state_tolerance
     failed = {k: v for k, v in worst.items()
               if v[0] > (args.tolerance if k in traction_names else state_tolerance)}
 
@@ -555,37 +569,52 @@ def run(args):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("command", choices=["write", "run"])
-    parser.add_argument("--element", choices=sorted(AXES), required=True)
-    parser.add_argument("--tangent", type=int, choices=[1, 2], default=1)
-    parser.add_argument("--out", default=".")
-    parser.add_argument("--ccx")
-    parser.add_argument("--history")
-    parser.add_argument("--tolerance", type=float, default=1e-5)
-    parser.add_argument("--state-tolerance", type=float,
-                        help="the state variables' tolerance (default: --tolerance): ccx prints "
-                             "SDV with 7 digits, so a friction traction K_t (s - sf) replayed "
-                             "from printed separations is off by about K_t x 5e-7 x |s|")
+    parser.add_argument("command", choices=["write", "run"],
+                        help="write: the .inp file only (DIR/direct_shear_<element>.inp); run: "
+                             "write it, run ccx, replay the layer point through "
+                             "interlock-history and compare")
+    parser.add_argument("--element", choices=sorted(AXES), required=True,
+                        help="the elements (layer axes normal, slip): C3D8 (3, 1), CPE4 (2, 1), "
+                             "CAX4 (1, 3: a bar in a sleeve, cylindrical orientation)")
+    parser.add_argument("--tangent", type=int, choices=[1, 2], default=1,
+                        help="interlock PROPS 20 (layer PROPS 24): 1 the exact tangent (ccx "
+                             "averages it), 2 the symmetric one for hosts that symmetrize (1)")
+    parser.add_argument("--out", default=".",
+                        help="folder for the deck, ccx's files, the replay deck and its HDF5 "
+                             "file, <job>_convergence.txt (.)")
+    parser.add_argument("--ccx", help="run: the ccx binary linked with interlock's umat "
+                                      "(scripts/build_calculix.sh prints its path)")
+    parser.add_argument("--history", help="run: the interlock-history binary")
+    parser.add_argument("--tolerance", type=float, default=TRACTION_TOLERANCE,
+                        help="the tractions' tolerance, relative to the run's largest traction "
+                             f"({TRACTION_TOLERANCE:g}; seen <= 9.1e-7)")
+    parser.add_argument("--state-tolerance", type=float, default=STATE_TOLERANCE,
+                        help="the state variables' tolerance, each relative to its largest "
+                             f"value ({STATE_TOLERANCE:g}): ccx prints SDV with 7 digits, and a "
+                             "friction traction K_t (s - sf) replayed from the printed "
+                             "separations carries K_t times their rounding (seen 1.7e-5 with the "
+                             "slip at 45 deg)")
     parser.add_argument("--shear-traction", type=float,
                         help="measurement variant: step 2 shears by this mean traction [MPa] "
                              "(a force on the tied top face, automatic increments) instead of "
-                             "imposing the slip")
+                             "imposing the slip (default: the slip imposed)")
     parser.add_argument("--angle-deg", type=float, default=0.0,
-                        help="C3D8: the slip direction from the slip axis x towards y [deg]")
+                        help="C3D8: the slip direction from the slip axis x towards y [deg] (0)")
     parser.add_argument("--path", choices=["straight", "square", "circle"], default="straight",
-                        help="C3D8: the slip path in the layer's plane (straight: SLIP along "
-                             "--angle-deg; square and circle turned by --angle-deg)")
-    parser.add_argument("--side", type=float, default=0.75, help="--path square: side [mm]")
-    parser.add_argument("--radius", type=float, default=0.5, help="--path circle: radius [mm]")
+                        help="C3D8: the slip path in the layer's plane (straight: 1.5 mm along "
+                             "--angle-deg in 150 increments; square and circle turned by "
+                             "--angle-deg) (straight)")
+    parser.add_argument("--side", type=float, default=0.75, help="--path square: side [mm] (0.75)")
+    parser.add_argument("--radius", type=float, default=0.5, help="--path circle: radius [mm] (0.5)")
     parser.add_argument("--increments", type=int,
                         help="--path square or circle: the slip step's fixed increments "
                              "(default 200)")
     parser.add_argument("--ria", choices=["paper", "azimuthal"], default="paper",
-                        help="C3D8: the RIA (layer PROPS 25 `ria`)")
+                        help="C3D8: the RIA (layer PROPS 25 `ria`) (paper)")
     parser.add_argument("--n-azimuths", type=int, default=3, choices=range(1, 7),
-                        help="--ria azimuthal: N_a (layer PROPS 26), 1 + 2 N_a planes")
+                        help="--ria azimuthal: N_a (layer PROPS 26), 1 + 2 N_a planes (3)")
     parser.add_argument("--prefractured", action="store_true",
-                        help="the interface fully debonded from the start (D = 1)")
+                        help="the interface fully debonded from the start (D = 1; interlock PROPS 10)")
     args = parser.parse_args()
     if args.command == "write":
         path = pathlib.Path(args.out) / f"direct_shear_{args.element.lower()}.inp"
@@ -596,6 +625,7 @@ def main():
         return
     if not (args.ccx and args.history):
         parser.error("run needs --ccx and --history")
+    python_with.modules("h5py")     # before anything runs: it may restart this script
     run(args)
 
 

@@ -23,7 +23,12 @@ import argparse
 import os
 import sys
 
-import numpy as np
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..",
+                                "scripts"))
+import python_with  # noqa: E402  (the python3 that has the modules below)
+
+python_with.modules("numpy")
+import numpy as np  # noqa: E402
 
 BAR_DIAMETER = 19.5           # mm (paper 4.2.1)
 SLEEVE_LENGTH = 10.0 * BAR_DIAMETER   # clay sleeve at the loaded end, mm

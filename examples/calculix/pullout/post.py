@@ -21,7 +21,12 @@ import os
 import re
 import sys
 
-import numpy as np
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..",
+                                "scripts"))
+import python_with  # noqa: E402  (the python3 that has the modules below)
+
+python_with.modules("numpy", "matplotlib")
+import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from make_mesh import BAR_DIAMETER, E_STEEL, HARDENING, SLEEVE_LENGTH, write_text  # noqa: E402

@@ -16,6 +16,11 @@ import subprocess
 import sys
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..",
+                                "scripts"))
+import python_with  # noqa: E402  (the python3 that has the modules below)
+
+python_with.modules("numpy", "matplotlib")
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import post  # noqa: E402
