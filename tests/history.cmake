@@ -156,8 +156,9 @@ set_tests_properties(history_bad_decks_bom PROPERTIES LABELS history)
 # stored one (tests/data/layout); the shipped direction sweeps give the peak shears and spreads
 # that SPEC section 9 quotes from an independent implementation; a history restarted from one
 # of its rows (the strike components in &initial_state) continues it; the circle's lag and the
-# induced anisotropy that docs/three-dimensions.md quotes.
-foreach(mode reference circle reduction layout sweep restart scenes)
+# induced anisotropy that docs/three-dimensions.md quotes; a &sweep over ria or n_azimuths gives
+# each case the RIA it names.
+foreach(mode reference circle reduction layout sweep restart scenes ria_sweep)
   add_test(NAME history_3d_${mode}
     COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_3d.py
             $<TARGET_FILE:interlock-history> ${INTERLOCK_TEST_DATA}
