@@ -92,6 +92,14 @@ add_test(NAME history_h5_fig12_extrapolated
 set_tests_properties(history_h5_fig12_extrapolated PROPERTIES
   FIXTURES_REQUIRED history_fig12_extrapolated LABELS history)
 
+# newton_tol = 1e-15 on the concrete-bar cyclic pull-out: the history completes (the solver
+# accepts a residual within the resolution of s where the tolerance asks for less).
+add_test(NAME history_newton_tol_eps
+  COMMAND interlock-history --output-dir ${history_out}
+          ${INTERLOCK_TEST_DATA}/history/pullout_concrete_cyclic_tol_1e-15.nml)
+set_tests_properties(history_newton_tol_eps PROPERTIES LABELS history TIMEOUT 300
+  PASS_REGULAR_EXPRESSION "case 0001: completed" FAIL_REGULAR_EXPRESSION "stopped")
+
 # --help documents the options and the exit status.
 add_test(NAME history_help COMMAND interlock-history --help)
 set_tests_properties(history_help PROPERTIES LABELS history

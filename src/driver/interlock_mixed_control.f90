@@ -10,8 +10,9 @@
 !> of times. A history is a sequence of such steps along a loading path of straight segments
 !> and, in 3D, circular arcs in the (T1, T2) plane (arc_t).
 !> Where the relative tolerance is below the floating-point resolution of the separation (a very
-!> stiff interface), a solve is accepted once s is resolved to adjacent floating-point numbers
-!> and the residual is at most |K| 8 eps |s| (docs/history-output.md).
+!> stiff interface, or newton_tol near eps), a solve is accepted once the residual is at most
+!> what that resolution allows, |K| 8 eps |s| (a Newton correction of at most 8 ulps of s, or s
+!> resolved to adjacent floating-point numbers; docs/history-output.md).
 !> Global Richardson extrapolation (run_history_extrapolated): the history is run twice in
 !> lockstep from the same initial state, with the path's steps (n) and with every segment's
 !> step count doubled (2n); separation and traction are 2 u(2n) - u(n) at the n run's steps.
@@ -794,6 +795,13 @@ contains
         have_hi = .true.
       end if
       d = tangent(i, i)
+      ! A Newton correction within the resolution of s (|r / d| <= 8 eps |s|): no floating-point
+      ! s does better, whatever the tolerance asks (a tolerance near eps: Newton would stall
+      ! there, s unchanged, until its iterations run out).
+      if (abs(r) <= resolution_floor(x, d)) then
+        ok = .true.
+        return
+      end if
       bisect = .false.
       if (have_lo .and. have_hi) then
         if (abs(x_hi - x_lo) <= 4.0_dp * epsilon(1.0_dp) * max(abs(x_lo), abs(x_hi)) + &
