@@ -55,6 +55,13 @@ foreach(expected IN LISTS history_bad_decks history_bad_decks_generated)
   set_tests_properties(history_bad_decks_${name} PROPERTIES LABELS history TIMEOUT 120)
 endforeach()
 
+# The derived-scale range docs/deck-format.md states is the one the deck check refuses by
+# (bad deck derived_stiffness_beyond_bound: 2^-300 .. 2^300, the library's).
+add_test(NAME history_doc_derived_range
+  COMMAND ${CMAKE_COMMAND} -E cat ${PROJECT_SOURCE_DIR}/docs/deck-format.md)
+set_tests_properties(history_doc_derived_range PROPERTIES LABELS history
+  PASS_REGULAR_EXPRESSION "s_0 = \\(1 - eta\\) s_c in \\[2\\^-300, 2\\^300\\] mm and[ \n]+K = sigma0 / s_0 in \\[2\\^-300, 2\\^300\\] MPa/mm")
+
 # Windows line ends (CR LF) are accepted: the same results as the LF deck.
 add_test(NAME history_bad_decks_crlf
   COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_bad_decks.py --crlf
