@@ -393,8 +393,9 @@ contains
     mat%prefractured = d%prefractured
     mat%effect = d%effect
     if (d%paper_ria .and. case_n_azimuths(deck, icase) > 0) then
-      call interlock_azimuthal_ria(mat, case_n_azimuths(deck, icase), d%theta0_deg(1) * deg_to_rad, &
-                                   d%thetaf_deg(1) * deg_to_rad, d%zeta0(1))
+      call interlock_azimuthal_ria(mat, case_n_azimuths(deck, icase), &
+                                   d%theta0_deg(1) * deg_to_rad, d%thetaf_deg(1) * deg_to_rad, &
+                                   d%zeta0(1))
     else if (d%paper_ria) then
       call interlock_paper_ria(mat, d%theta0_deg(1) * deg_to_rad, d%thetaf_deg(1) * deg_to_rad, &
                                d%zeta0(1))

@@ -235,10 +235,10 @@ contains
     if (deck%n_components == 3) then
       call ok(h5_text(g, 'frame', 'local interface frame (n, t1, t2), right-handed, t2 = n x t1; ' // &
                       't1 is the slip axis of the input; the per-plane state (theta, ' // &
-                      'frictional_slip, friction_traction, sf_strike, tauf_strike) is in each ' // &
-                      'plane''s frame (m_k, e_k, q_k) at its phi_deg as given, which may lie ' // &
-                      'outside [0, 180): the same plane at phi_deg - 180 with theta negated has ' // &
-                      'these five of opposite sign'))
+                      'frictional_slip, friction_traction, sf_strike, tauf_strike) is in ' // &
+                      'each plane''s frame (m_k, e_k, q_k) at its phi_deg as given, which ' // &
+                      'may lie outside [0, 180): the same plane at phi_deg - 180 with theta ' // &
+                      'negated has these five of opposite sign'))
       call ok(h5_text(g, 'components', 'N, T1, T2'))
       call ok(h5_text(g, 't2_control', control_name(deck%control%traction(3))))
       call ok(h5_text(g, 'ria', deck_ria_name(deck, icase)))
