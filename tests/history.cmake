@@ -55,6 +55,13 @@ foreach(expected IN LISTS history_bad_decks history_bad_decks_generated)
   set_tests_properties(history_bad_decks_${name} PROPERTIES LABELS history TIMEOUT 120)
 endforeach()
 
+# The derived-scale range docs/deck-format.md states is the one the deck check refuses by
+# (bad deck derived_stiffness_beyond_bound: 2^-300 .. 2^300, the library's).
+add_test(NAME history_doc_derived_range
+  COMMAND ${CMAKE_COMMAND} -E cat ${PROJECT_SOURCE_DIR}/docs/deck-format.md)
+set_tests_properties(history_doc_derived_range PROPERTIES LABELS history
+  PASS_REGULAR_EXPRESSION "s_0 = \\(1 - eta\\) s_c in \\[2\\^-300, 2\\^300\\] mm and[ \n]+K = sigma0 / s_0 in \\[2\\^-300, 2\\^300\\] MPa/mm")
+
 # Windows line ends (CR LF) are accepted: the same results as the LF deck.
 add_test(NAME history_bad_decks_crlf
   COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_bad_decks.py --crlf
@@ -91,6 +98,14 @@ add_test(NAME history_h5_fig12_extrapolated
           ${history_out}/fig12_extrapolated.h5)
 set_tests_properties(history_h5_fig12_extrapolated PROPERTIES
   FIXTURES_REQUIRED history_fig12_extrapolated LABELS history)
+
+# newton_tol = 1e-15 on the concrete-bar cyclic pull-out: the history completes (the solver
+# accepts a residual within the resolution of s where the tolerance asks for less).
+add_test(NAME history_newton_tol_eps
+  COMMAND interlock-history --output-dir ${history_out}
+          ${INTERLOCK_TEST_DATA}/history/pullout_concrete_cyclic_tol_1e-15.nml)
+set_tests_properties(history_newton_tol_eps PROPERTIES LABELS history TIMEOUT 300
+  PASS_REGULAR_EXPRESSION "case 0001: completed" FAIL_REGULAR_EXPRESSION "stopped")
 
 # --help documents the options and the exit status.
 add_test(NAME history_help COMMAND interlock-history --help)
@@ -156,8 +171,9 @@ set_tests_properties(history_bad_decks_bom PROPERTIES LABELS history)
 # stored one (tests/data/layout); the shipped direction sweeps give the peak shears and spreads
 # that SPEC section 9 quotes from an independent implementation; a history restarted from one
 # of its rows (the strike components in &initial_state) continues it; the circle's lag and the
-# induced anisotropy that docs/three-dimensions.md quotes.
-foreach(mode reference circle reduction layout sweep restart scenes)
+# induced anisotropy that docs/three-dimensions.md quotes; a &sweep over ria or n_azimuths gives
+# each case the RIA it names.
+foreach(mode reference circle reduction layout sweep restart scenes ria_sweep)
   add_test(NAME history_3d_${mode}
     COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_history_3d.py
             $<TARGET_FILE:interlock-history> ${INTERLOCK_TEST_DATA}

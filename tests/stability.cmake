@@ -40,6 +40,13 @@ add_test(NAME stability_fuzz_garbage COMMAND interlock-fuzz --garbage 20000 --se
 set_tests_properties(stability_fuzz_garbage PROPERTIES TIMEOUT 600 LABELS stability
   PASS_REGULAR_EXPRESSION "--garbage: seed 3, [0-9]+ UMAT calls \\(NTENS 2 and 3\\), [0-9]+ rejected, failures 0\n  thin layer \\(NTENS 6 and 4, Abaqus and CalculiX\\): [0-9]+ calls"
   FAIL_REGULAR_EXPRESSION "FAIL|ERROR STOP|Floating-point exception")
+# Seed 1: its call 25008 garbles a 3D layer point's NTENS from 6 to 4, so the layer runs the 2D
+# law and writes the 2D law's 22 slots and the layer's 4 (the slots after them are the host's,
+# garbage included): the fuzzer counts the slots of the NTENS the entry is given.
+add_test(NAME stability_fuzz_garbage_ntens_garbled COMMAND interlock-fuzz --garbage 30000 --seed 1)
+set_tests_properties(stability_fuzz_garbage_ntens_garbled PROPERTIES TIMEOUT 600 LABELS stability
+  PASS_REGULAR_EXPRESSION "--garbage: seed 1, [0-9]+ UMAT calls \\(NTENS 2 and 3\\), [0-9]+ rejected, failures 0\n"
+  FAIL_REGULAR_EXPRESSION "FAIL|ERROR STOP|Floating-point exception")
 
 # The three-dimensional update (interlock_update_3d): random materials with azimuths, random
 # 3D histories, garbage separations, garbled materials and scheme codes; status codes only,

@@ -42,6 +42,10 @@ MODE
                after agree within 1e-12 of each dataset's largest value (the restart's path
                points are rounded differently); restarted without the strike components it
                does not (> 1e-3): they are read and they matter.
+  ria_sweep    a &sweep over `ria` (0, 1) and one over `n_azimuths` (1, 2, 6) give each case
+               the history (every dataset, bitwise) and the attributes ria, n_azimuths and
+               n_planes of the deck that names that RIA in &microplanes (granite, straight
+               slip under -1.5 MPa): the cases differ from each other.
   layout       a 2D deck's HDF5 layout (datasets, shapes, dtypes, chunks, attributes with their
                values) is the stored one (tests/data/layout, written by the program before it
                knew three dimensions).
@@ -398,6 +402,48 @@ def mode_layout(program, data, work):
     return failures
 
 
+def mode_ria_sweep(program, work):
+    failures = 0
+
+    def check(ok, text):
+        nonlocal failures
+        failures += not ok
+        print(f"{'ok  ' if ok else 'FAIL'} {text}")
+
+    loading = ("&loading\n  normal_control = 'traction', normal = -1.5\n  path = 'straight', "
+               "length = 1.0\n  steps = 1, 20\n/\n")
+    base = GRANITE + "&microplanes\n  theta0_deg = 30.0, thetaf_deg = 9.0, zeta0 = 6.666{}\n/\n"
+
+    def single(n_azimuths):
+        extra = "" if n_azimuths == 0 else f", n_azimuths = {n_azimuths}"
+        name = os.path.join(work, f"ria_single_{n_azimuths}.nml")
+        return run(program, name, base.format(extra) + loading, work)
+
+    sweeps = (("ria", "0, 1", [0, 3]), ("n_azimuths", "1, 2, 6", [1, 2, 6]))
+    for parameter, values, azimuths in sweeps:
+        text = base.format("") + loading + f"&sweep\n  parameter = '{parameter}', values = {values}\n/\n"
+        h5 = run(program, os.path.join(work, f"ria_sweep_{parameter}.nml"), text, work)
+        with h5py.File(h5) as f:
+            cases = [f["cases"][c] for c in sorted(f["cases"])]
+            check(len(cases) == len(azimuths), f"{parameter}: {len(cases)} cases")
+            finals = []
+            for case, n_azimuths in zip(cases, azimuths):
+                with h5py.File(single(n_azimuths)) as r:
+                    ref = r["cases"]["0001"]
+                    for a in ("ria", "n_azimuths", "n_planes"):
+                        check(case.attrs[a] == ref.attrs[a],
+                              f"{parameter} case {case.attrs['label']}: {a} = {case.attrs[a]} "
+                              f"({ref.attrs[a]})")
+                    same = all(np.array_equal(case[k][()], ref[k][()]) for k in ref)
+                    check(same and set(case) == set(ref),
+                          f"{parameter} case {case.attrs['label']}: every dataset bitwise the "
+                          f"deck's with n_azimuths = {n_azimuths}")
+                finals.append(case["traction"][-1, 1])
+            check(len(set(finals)) == len(finals),
+                  f"{parameter}: the cases differ (final sigma_T1 {finals})")
+    return failures
+
+
 def main(argv):
     if len(argv) != 4:
         print(__doc__)
@@ -418,6 +464,8 @@ def main(argv):
         failures = mode_restart(program, work)
     elif mode == "scenes":
         failures = mode_scenes(program, work)
+    elif mode == "ria_sweep":
+        failures = mode_ria_sweep(program, work)
     else:
         print(__doc__)
         return 2

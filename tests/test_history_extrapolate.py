@@ -26,7 +26,9 @@ usage: test_history_extrapolate.py PROGRAM DATA_DIR WORK_DIR MODE [K_REF K1 K2 .
   jumps         The warning on a load jump in which planes slide or wear: Fig. 12's one-step
                 preload to -2 MPa (planes slide) is warned about, plain and extrapolated, and the
                 warning names the segment and the remedy (more steps in it); the same preload in
-                20 steps, and the granite preload of Fig. 14 (the planes stick), are not.
+                20 steps, and the granite preload of Fig. 14 (the planes stick), are not. A
+                deck with one point per step (600 one-step segments, all sliding) is warned
+                about once, naming the first three segments and the count, in one short line.
   stopped       An overloaded history (tangential traction beyond the interface's capacity):
                 exit status 2, the case stops at the same step as the plain run, its status
                 names the run that failed, and the rows before are kept.
@@ -362,6 +364,23 @@ def mode_jumps(program, data, work):
               (not warned or "give that segment more steps" in r.stderr),
               f"{stem}: exit status {r.returncode}, " + ("warned" if said else "no warning")
               + f" (expected {'a warning' if warned else 'none'})")
+    n = 600
+    every = (f"&interface\n  sigma0_n = 3.0, sigma0_t = 3.0, gc = 0.3, eta = 0.9, mu = 0.5, "
+             f"h_n = 1.0\n/\n&microplanes\n  theta0_deg = 45.0\n/\n&loading\n"
+             f"  normal_control = 'traction', tangential_control = 'separation'\n"
+             f"  times = {', '.join(str(i) for i in range(n + 1))}\n"
+             f"  normal = 0.0, {', '.join(['-0.2'] * n)}\n"
+             f"  tangential = {', '.join(repr(round(0.001 * i, 6)) for i in range(n + 1))}\n"
+             f"  steps = {', '.join(['1'] * n)}\n/\n")
+    path = os.path.join(work, "jump_every_step.nml")
+    with open(path, "w") as f:
+        f.write(every)
+    r = subprocess.run([program, "--output-dir", work, path], capture_output=True, text=True)
+    lines = [line for line in r.stdout.splitlines() if "warning: planes slide or wear" in line]
+    check(r.returncode == 0 and len(lines) == 1 and len(lines[0]) < 600 and
+          "(t = 0 to 1, t = 1 to 2, t = 2 to 3 and 597 more: 600 segments)" in lines[0],
+          f"jump_every_step: exit status {r.returncode}, {len(lines)} warning line(s) of "
+          f"{[len(line) for line in lines]} characters (expected one, naming 3 of 600 segments)")
 
 
 def main(argv):

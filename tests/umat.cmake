@@ -119,6 +119,19 @@ if(TARGET interlock-history)
   endforeach()
 endif()
 
+# --- A near-integer value of an integer-valued property is refused with the digits that show
+#     why (6.0000000001, 6 + 1 ulp), not rounded to the bound (the 3D UMAT and the thin layer).
+add_executable(umat_near_integer_message umat_near_integer_message.f90 test_umat_interface.f90)
+target_link_libraries(umat_near_integer_message PRIVATE interlock_umat interlock::interlock)
+target_compile_options(umat_near_integer_message PRIVATE ${INTERLOCK_FFLAGS})
+set_target_properties(umat_near_integer_message PROPERTIES
+  Fortran_MODULE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/mod_umat_near_integer_message)
+# (the thin-layer entry's module)
+target_include_directories(umat_near_integer_message PRIVATE ${PROJECT_BINARY_DIR}/umat/mod_umat)
+add_test(NAME umat_near_integer_message COMMAND umat_near_integer_message)
+set_tests_properties(umat_near_integer_message PROPERTIES LABELS umat
+  PASS_REGULAR_EXPRESSION "'n_azimuths' = 6.0000000001 is inadmissible.*'n_azimuths' = 6.000000000000001 is inadmissible.*'scheme' = 2.9999999999 is inadmissible.*'normal_axis' = 1.0000000001 is inadmissible.*umat_near_integer_message: 4 of 4 calls refused")
+
 # --- The symmetric tangent for hosts that symmetrize (PROPS 20 tangent = 2): the interface
 #     alone under traction control, Newton with the exact tangent, its symmetric part, the
 #     library's symmetric tangent and two other candidates (a measurement: docs/calculix.md).

@@ -67,11 +67,15 @@ contains
     is_whole = .not. ((x + whole) - whole < x .or. (x + whole) - whole > x)
   end function is_whole
 
-  !> format_real's text, blank-padded.
+  !> format_real's text, blank-padded: six significant digits, trailing zeros dropped (0.3,
+  !> -0.0015, 2.5e-07, 1e+200); but a rounded text that would look exact (fewer than six digits
+  !> left, as 6 + 1e-10 would print "6") is replaced by the shortest text that reads back as x
+  !> (up to 17 digits: "6.0000000001"), so that a value refused at a bound never reads as the
+  !> bound itself.
   pure function real_text(x) result(text)
     real(dp), intent(in) :: x
     character(len=32) :: text
-    character(len=32) :: buf
+    integer :: digits
     ! (from the bits first: a signalling NaN, which a host may pass, traps in any float test)
     if (.not. is_finite_bits(x)) then
       if (is_nan_value(x)) then
@@ -82,23 +86,72 @@ contains
     else if (same_value(x, anint(x)) .and. abs(x) < 1.0e9_dp) then
       text = format_integer_8(nint(x, kind=int64))
     else
-      ! Six significant digits, trailing zeros dropped: 0.3, -0.0015, 2.5e-07, 1e+200.
-      if (abs(x) >= 1.0e-3_dp .and. abs(x) < 1.0e6_dp) then
-        write (buf, '(f0.6)') x
-        buf = adjustl(buf)
-        if (index(buf, '.') > 0) buf = strip_zeros(buf)
-        if (buf(1:1) == '.') buf = '0' // buf(1:len(buf) - 1)
-        if (buf(1:2) == '-.') buf = '-0' // buf(2:len(buf) - 1)
-        if (len_trim(strip_zeros(buf)) == 0) buf = '0'
-        text = buf
-      else
-        write (buf, '(es14.5e3)') x
-        buf = adjustl(buf)
-        text = trim(strip_zeros(buf(1:index(buf, 'E') - 1))) // 'e' // &
-               trim(exponent_text(buf(index(buf, 'E') + 1:)))
+      text = rounded_text(x, 0)
+      if (significant_digits(text) < 6 .and. .not. reads_as(text, x)) then
+        do digits = 7, 17
+          text = rounded_text(x, digits)
+          if (reads_as(text, x)) exit
+        end do
       end if
     end if
   end function real_text
+
+  !> x (finite, not a small whole number) as text, trailing zeros dropped: digits = 0, six
+  !> decimals from 1e-3 to 1e6 and six significant digits elsewhere; else `digits` significant
+  !> digits, in the same two styles.
+  pure function rounded_text(x, digits) result(text)
+    real(dp), intent(in) :: x
+    integer, intent(in) :: digits
+    character(len=32) :: text
+    character(len=32) :: buf
+    character(len=16) :: form
+    integer :: decimals
+    if (abs(x) >= 1.0e-3_dp .and. abs(x) < 1.0e6_dp) then
+      decimals = 6
+      if (digits > 0) decimals = max(0, digits - 1 - floor(log10(abs(x))))
+      write (form, '(a,i0,a)') '(f0.', decimals, ')'
+      write (buf, form) x
+      buf = adjustl(buf)
+      if (index(buf, '.') > 0) buf = strip_zeros(buf)
+      if (buf(1:1) == '.') buf = '0' // buf(1:len(buf) - 1)
+      if (buf(1:2) == '-.') buf = '-0' // buf(2:len(buf) - 1)
+      if (len_trim(strip_zeros(buf)) == 0) buf = '0'
+      text = buf
+    else
+      write (form, '(a,i0,a,i0,a)') '(es', 9 + max(digits, 6), '.', max(digits, 6) - 1, 'e3)'
+      write (buf, form) x
+      buf = adjustl(buf)
+      text = trim(strip_zeros(buf(1:index(buf, 'E') - 1))) // 'e' // &
+             trim(exponent_text(buf(index(buf, 'E') + 1:)))
+    end if
+  end function rounded_text
+
+  !> The significant digits of a number's text (its mantissa's digits from the first nonzero).
+  pure integer function significant_digits(text) result(n)
+    character(len=*), intent(in) :: text
+    integer :: i
+    logical :: leading
+    n = 0
+    leading = .true.
+    do i = 1, len_trim(text)
+      if (text(i:i) == 'e' .or. text(i:i) == 'E') exit
+      if (text(i:i) < '0' .or. text(i:i) > '9') cycle
+      if (leading .and. text(i:i) == '0') cycle
+      leading = .false.
+      n = n + 1
+    end do
+  end function significant_digits
+
+  !> The text reads back as x (finite).
+  pure logical function reads_as(text, x)
+    character(len=*), intent(in) :: text
+    real(dp), intent(in) :: x
+    real(dp) :: y
+    integer :: ios
+    read (text, *, iostat=ios) y
+    reads_as = ios == 0
+    if (reads_as) reads_as = same_value(y, x)
+  end function reads_as
 
   !> A compact, exact-enough rendering of a real for messages and tables.
   !> The text functions here (and every function whose text a UMAT call may build) declare

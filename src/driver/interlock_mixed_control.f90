@@ -10,8 +10,9 @@
 !> of times. A history is a sequence of such steps along a loading path of straight segments
 !> and, in 3D, circular arcs in the (T1, T2) plane (arc_t).
 !> Where the relative tolerance is below the floating-point resolution of the separation (a very
-!> stiff interface), a solve is accepted once s is resolved to adjacent floating-point numbers
-!> and the residual is at most |K| 8 eps |s| (docs/history-output.md).
+!> stiff interface, or newton_tol near eps), a solve is accepted once the residual is at most
+!> what that resolution allows, |K| 8 eps |s| (a Newton correction of at most 8 ulps of s, or s
+!> resolved to adjacent floating-point numbers; docs/history-output.md).
 !> Global Richardson extrapolation (run_history_extrapolated): the history is run twice in
 !> lockstep from the same initial state, with the path's steps (n) and with every segment's
 !> step count doubled (2n); separation and traction are 2 u(2n) - u(n) at the n run's steps.
@@ -32,6 +33,9 @@ module interlock_mixed_control
     'sigma_T1', 'sigma_T2']
   character(len=4), parameter :: separation_names(2) = [character(len=4) :: 's_N', 's_T']
   character(len=4), parameter :: separation_names_3d(3) = [character(len=4) :: 's_N', 's_T1', 's_T2']
+  !> The one-step segments that slid or wore named in history_sink_t%sliding_jumps (the others
+  !> are counted).
+  integer, parameter :: listed_jumps = 3
 
   !> How the components are driven and how hard the solver may try.
   type :: control_t
@@ -81,8 +85,13 @@ module interlock_mixed_control
     logical :: extrapolated = .false.
     !> The one-step segments (load jumps) in which a plane slid or wore, as "t = a to b, ...",
     !> '' if none: their end state is the scheme's, not the law's (one step of a scheme of
-    !> order one or two over the whole jump), and more steps elsewhere do not change it.
+    !> order one or two over the whole jump), and more steps elsewhere do not change it. The
+    !> first listed_jumps of them, then their count ("... and 997 more: 1000 segments"): a deck
+    !> with one point per step has thousands.
     character(len=:), allocatable :: sliding_jumps
+    !> how many one-step segments slid or wore; the text of the first listed_jumps of them
+    integer :: n_sliding_jumps = 0
+    character(len=:), allocatable :: listed_jumps_text
   contains
     procedure(put_row), deferred :: put
   end type history_sink_t
@@ -195,9 +204,17 @@ contains
     if (.not. (any(abs(new%sf(1:np) - old%sf(1:np)) > 0.0_dp) .or. &
                any(abs(new%sf_strike(1:np) - old%sf_strike(1:np)) > 0.0_dp) .or. &
                any(abs(new%theta(1:np) - old%theta(1:np)) > 0.0_dp))) return
-    if (len(hist%sliding_jumps) > 0) hist%sliding_jumps = hist%sliding_jumps // ', '
-    hist%sliding_jumps = hist%sliding_jumps // 't = ' // format_real(times(iseg)) // ' to ' // &
-                         format_real(times(iseg + 1))
+    hist%n_sliding_jumps = hist%n_sliding_jumps + 1
+    if (hist%n_sliding_jumps <= listed_jumps) then
+      if (hist%n_sliding_jumps > 1) hist%listed_jumps_text = hist%listed_jumps_text // ', '
+      hist%listed_jumps_text = hist%listed_jumps_text // 't = ' // format_real(times(iseg)) // &
+                               ' to ' // format_real(times(iseg + 1))
+      hist%sliding_jumps = hist%listed_jumps_text
+    else
+      hist%sliding_jumps = hist%listed_jumps_text // ' and ' // &
+        format_integer(hist%n_sliding_jumps - listed_jumps) // ' more: ' // &
+        format_integer(hist%n_sliding_jumps) // ' segments'
+    end if
   end subroutine note_sliding_jump
 
   !> Global Richardson extrapolation of a history: the run with the path's steps (n, the
@@ -308,6 +325,8 @@ contains
     hist%extrapolated = extrapolated
     hist%status = 'completed'
     hist%sliding_jumps = ''
+    hist%listed_jumps_text = ''
+    hist%n_sliding_jumps = 0
   end subroutine begin_history
 
   !> Hand the next row (step j of segment iseg) to the sink; stat /= 0 (the sink could not keep
@@ -776,6 +795,13 @@ contains
         have_hi = .true.
       end if
       d = tangent(i, i)
+      ! A Newton correction within the resolution of s (|r / d| <= 8 eps |s|): no floating-point
+      ! s does better, whatever the tolerance asks (a tolerance near eps: Newton would stall
+      ! there, s unchanged, until its iterations run out).
+      if (abs(r) <= resolution_floor(x, d)) then
+        ok = .true.
+        return
+      end if
       bisect = .false.
       if (have_lo .and. have_hi) then
         if (abs(x_hi - x_lo) <= 4.0_dp * epsilon(1.0_dp) * max(abs(x_lo), abs(x_hi)) + &

@@ -17,7 +17,7 @@ module interlock_deck
       prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
       prop_thetaf, prop_zeta0, prop_prefractured, prop_scheme, prop_substep_tol, prop_max_dd, &
       prop_max_dtheta, prop_tangent, prop_effect_damage, prop_effect_wear, is_nan_value, same_value, &
-      is_infinite_value, &
+      is_infinite_value, prop_ria, prop_n_azimuths, ria_paper, &
       status_ok, status_bad_input
   use interlock_mixed_control, only: control_t, arc_t
   use interlock_files, only: path_kind, path_absent, path_folder, path_other
@@ -28,7 +28,7 @@ module interlock_deck
   implicit none
   private
   public :: deck_t, read_deck, deck_case, deck_n_cases, deck_groups, deck_set_property, &
-            deck_loading, sweep_slip_angle, deck_ria_name, path_points
+            deck_loading, sweep_slip_angle, deck_ria_name, case_n_azimuths, path_points
   public :: max_points, max_sweep_values, max_total_steps, max_deck_bytes
   public :: n_datasets, history_datasets, curves_datasets, datasets_text, dataset_index
 
@@ -392,9 +392,10 @@ contains
     mat%h_n = d%h_n
     mat%prefractured = d%prefractured
     mat%effect = d%effect
-    if (d%paper_ria .and. deck%n_azimuths > 0) then
-      call interlock_azimuthal_ria(mat, deck%n_azimuths, d%theta0_deg(1) * deg_to_rad, &
-                                   d%thetaf_deg(1) * deg_to_rad, d%zeta0(1))
+    if (d%paper_ria .and. case_n_azimuths(deck, icase) > 0) then
+      call interlock_azimuthal_ria(mat, case_n_azimuths(deck, icase), &
+                                   d%theta0_deg(1) * deg_to_rad, d%thetaf_deg(1) * deg_to_rad, &
+                                   d%zeta0(1))
     else if (d%paper_ria) then
       call interlock_paper_ria(mat, d%theta0_deg(1) * deg_to_rad, d%thetaf_deg(1) * deg_to_rad, &
                                d%zeta0(1))
@@ -405,13 +406,15 @@ contains
                                  d%thetaf_deg(1:n) * deg_to_rad, d%zeta0(1:n), &
                                  deck%phi_deg(1:n) * deg_to_rad)
     end if
-    why = scale_check(mat)
+    why = inverse_check(mat, .not. d%paper_ria)
+    if (len_trim(why) == 0) why = scale_check(mat)
     if (len_trim(why) == 0) call interlock_material_prepare(mat, stat, why)
     if (len_trim(why) > 0) then
       if (deck%sweep_property /= 0) then
         message = deck%path // ': ' // trim(case_text(deck, icase)) // ' ' // trim(why)
       else if (index(why, 'gamma') == 1 .or. index(why, 'theta') == 1 .or. &
-               index(why, 'plane') == 1 .or. index(why, 'n_planes') == 1) then
+               index(why, 'plane') == 1 .or. index(why, 'n_planes') == 1 .or. &
+               index(why, 'zeta0') == 1) then
         message = deck%path // ': &microplanes: ' // trim(why)
       else
         message = deck%path // ': &interface: ' // trim(why)
@@ -429,6 +432,7 @@ contains
       if (len_trim(why) == 0) call apply_initial(deck%init_sf, state%sf, 'frictional_slip', why)
       if (len_trim(why) == 0) call apply_initial(deck%init_zeta, state%zeta, 'zeta', why)
       if (len_trim(why) == 0) call apply_initial(deck%init_theta, state%theta, 'theta', why)
+      if (len_trim(why) == 0) call check_angles(why)
       if (len_trim(why) == 0) call apply_initial(deck%init_tauf, state%tauf, 'friction_traction', why)
       if (len_trim(why) == 0) call apply_initial(deck%init_sf_strike, state%sf_strike, &
                                                  'sf_strike', why)
@@ -466,6 +470,36 @@ contains
       end if
       field(1:n) = given(1:n)
     end subroutine apply_initial
+
+    !> Each plane's angle lies between its theta_f and theta_0 (the range the UMAT admits for
+    !> the same state, with its slack of 4 ulps of theta_0): the wear law only turns the angle
+    !> from theta_0 towards theta_f.
+    subroutine check_angles(why)
+      character(len=*), intent(out) :: why
+      real(dp) :: slack, lo, hi
+      integer :: k
+      why = ''
+      do k = 1, n
+        slack = 4.0_dp * epsilon(1.0_dp) * abs(mat%theta_init(k))
+        lo = min(mat%theta_init(k), mat%thetaf_eff(k)) - slack
+        hi = max(mat%theta_init(k), mat%thetaf_eff(k)) + slack
+        if (state%theta(k) >= lo .and. state%theta(k) <= hi) cycle
+        why = 'theta(' // format_integer(k) // ') = ' // value_str(state%theta(k)) // &
+              ' rad is inadmissible: admissible between thetaf and theta0 of plane ' // &
+              format_integer(k) // ', ' // degrees(mat%thetaf_eff(k)) // ' and ' // &
+              degrees(mat%theta_init(k)) // ' deg (in rad: ' // value_str(mat%thetaf_eff(k)) // &
+              ' and ' // value_str(mat%theta_init(k)) // ')'
+        return
+      end do
+    end subroutine check_angles
+
+    !> An angle of the deck, given in degrees and kept in radians, back in degrees for a
+    !> message (to 1e-9 deg: the round trip's last bits are not the deck's).
+    function degrees(angle) result(text)
+      real(dp), intent(in) :: angle
+      character(len=:), allocatable :: text
+      text = short_real(anint(angle / deg_to_rad * 1.0e9_dp) / 1.0e9_dp)
+    end function degrees
 
     !> Without friction (mu = 0, or the effect off) an admissible state carries no friction
     !> traction, along the dip or the strike (|tau_f| <= mu p = 0); the laws rely on it.
@@ -565,18 +599,38 @@ contains
     end if
   end subroutine path_points
 
-  !> The kind of the deck's RIA (SPEC section 9): 'paper', 'azimuthal' or 'general'.
-  pure function deck_ria_name(deck) result(name)
+  !> The kind of the RIA of case `icase` (SPEC section 9): 'paper', 'azimuthal' or 'general'.
+  pure function deck_ria_name(deck, icase) result(name)
     type(deck_t), intent(in) :: deck
+    integer, intent(in) :: icase
     character(len=:), allocatable :: name
     if (.not. deck%paper_ria) then
       name = 'general'
-    else if (deck%n_azimuths > 0) then
+    else if (case_n_azimuths(deck, icase) > 0) then
       name = 'azimuthal'
     else
       name = 'paper'
     end if
   end function deck_ria_name
+
+  !> The azimuths of the azimuthal RIA of case `icase` (0: not the azimuthal RIA): the deck's
+  !> n_azimuths, or the swept one; a sweep over `ria` takes the paper's RIA (0) or the azimuthal
+  !> one (1) with the deck's n_azimuths (the table's default where the deck gives none).
+  pure integer function case_n_azimuths(deck, icase) result(n_azimuths)
+    type(deck_t), intent(in) :: deck
+    integer, intent(in) :: icase
+    n_azimuths = deck%n_azimuths
+    select case (deck%sweep_property)
+    case (prop_ria)
+      if (nint(deck%sweep_values(icase)) == ria_paper) then
+        n_azimuths = 0
+      else if (n_azimuths == 0) then
+        n_azimuths = nint(properties(prop_n_azimuths)%default)
+      end if
+    case (prop_n_azimuths)
+      n_azimuths = nint(deck%sweep_values(icase))
+    end select
+  end function case_n_azimuths
 
   !> Set property `ip` (a row of the material table that a sweep or a fit may vary) of the
   !> deck `d` to `v`: a per-plane angle is a magnitude that takes each plane's sign.
@@ -779,14 +833,41 @@ contains
 
   ! ------------------------------------------------------------------- helpers
 
+  !> '' if eta, h_n and each plane's zeta0 are at least 1e-100, the bound below which the
+  !> library's interlock_material_prepare refuses them (the law takes their inverses), else why
+  !> not, naming the one that is not (so that the message is given under its own group;
+  !> `per_plane`: the deck gives zeta0 per plane).
+  function inverse_check(mat, per_plane) result(why)
+    type(interlock_material_t), intent(in) :: mat
+    logical, intent(in) :: per_plane
+    character(len=256) :: why
+    real(dp), parameter :: smallest_inverted = 1.0e-100_dp
+    integer :: k
+    why = ''
+    if (mat%eta < smallest_inverted) why = 'eta = ' // value_str(mat%eta) // &
+      ' is inadmissible: admissible eta >= 1e-100 (the law takes its inverse)'
+    if (mat%h_n < smallest_inverted) why = 'h_n = ' // value_str(mat%h_n) // &
+      ' is inadmissible: admissible h_n >= 1e-100 mm (the law takes its inverse)'
+    if (len_trim(why) > 0) return
+    do k = 1, mat%n_planes
+      if (mat%zeta0(k) >= smallest_inverted) cycle
+      why = 'zeta0 = ' // value_str(mat%zeta0(k)) // ' is inadmissible'
+      if (per_plane) why = 'zeta0(' // format_integer(k) // ') = ' // value_str(mat%zeta0(k)) // &
+                           ' is inadmissible'
+      why = trim(why) // ': admissible zeta0 >= 1e-100 N/mm (the law takes its inverse)'
+      return
+    end do
+  end function inverse_check
+
   !> '' if the derived scales of the material are representable, else why not: the opening
   !> lengths s_c = 2 Gc / sigma0, s_0 = (1 - eta) s_c [mm] and the stiffnesses K = sigma0 / s_0
-  !> [MPa/mm] must lie in [1e-100, 1e100] (computed in logarithms, so nothing overflows here;
-  !> the library itself would divide by an underflowed s_0).
+  !> [MPa/mm] must lie in [2^-300, 2^300] (about 4.9e-91 .. 2.0e90), the range the library's
+  !> interlock_material_prepare admits (computed in logarithms, so nothing overflows here; the
+  !> message says it in the deck's terms, per component).
   function scale_check(mat) result(why)
     type(interlock_material_t), intent(in) :: mat
     character(len=256) :: why
-    real(dp), parameter :: lim = 100.0_dp * log(10.0_dp)
+    real(dp), parameter :: lim = 300.0_dp * log(2.0_dp)
     real(dp) :: ln_sc, ln_s0, ln_k
     integer :: i
     real(dp) :: sigma0
@@ -802,8 +883,9 @@ contains
         why = 'sigma0_' // c // ' = ' // value_str(sigma0) // ', gc = ' // value_str(mat%gc) // &
               ' and eta = ' // value_str(mat%eta) // ' give s_0' // c // ' = 10^' // &
               short_real(anint(ln_s0 / log(10.0_dp))) // ' mm and K_' // c // ' = 10^' // &
-              short_real(anint(ln_k / log(10.0_dp))) // ' MPa/mm: admissible 1e-100 <= s_c' // &
-              c // ', s_0' // c // ' <= 1e100 mm and 1e-100 <= K_' // c // ' <= 1e100 MPa/mm'
+              short_real(anint(ln_k / log(10.0_dp))) // ' MPa/mm: admissible 2^-300 <= s_c' // &
+              c // ', s_0' // c // ' <= 2^300 mm and 2^-300 <= K_' // c // ' <= 2^300 MPa/mm ' // &
+              '(2^300 = 2.04e90)'
         return
       end if
     end do

@@ -3,13 +3,13 @@
 !> that failed, a required value, a value out of its range or not finite, plane indices.
 module interlock_deck_checks
   use interlock, only: dp, max_planes, max_azimuths, properties, check_property, format_range, format_integer, &
-      format_real, is_nan_value, same_value, is_infinite_value
+      format_real, is_nan_value, same_value, is_infinite_value, is_finite_bits
   use interlock_deck_text, only: group_scan_t, probe_text, value_text, lower
   implicit none
   private
   public :: deck_groups, group_required, var_t, deck_vars, real_list, unset, unset_int
   public :: nml_error, var_index, group_vars, check_plane_indices, is_plane_variable, &
-            check_assignments, check_required, check_value, range_message, not_finite_message
+            check_assignments, check_required, check_value, range_message, magnitude_message
   public :: value_str, finite_text, short_real, int8_text, in_range, is_given, count_given, has_gaps
 
   !> "Not given" marks for namelist variables (a deck cannot mean these values).
@@ -337,8 +337,6 @@ contains
   end function short_real
 
   !> lo <= x <= hi, false for NaN (tested first).
-  !> '' when every given value of an &initial_state array is a finite number (|x| <= 1e12),
-  !> else the message naming the first one that is not.
   !> '' or the message for the first given value of `x` outside [lo, hi] (with open_ends, outside
   !> (lo, hi)); `admissible` states the range in the message.
   function range_message(name, x, lo, hi, admissible, open_ends) result(message)
@@ -361,7 +359,9 @@ contains
     end do
   end function range_message
 
-  pure function not_finite_message(name, unit, x) result(message)
+  !> '' when every given value of an &initial_state array is finite and |x| <= 1e12, else the
+  !> message naming the first one that is not (a finite value beyond as out of range).
+  function magnitude_message(name, unit, x) result(message)
     character(len=*), intent(in) :: name, unit
     real(dp), intent(in) :: x(:)
     character(len=:), allocatable :: message
@@ -369,11 +369,17 @@ contains
     message = ''
     do k = 1, count_given(x)
       if (.not. in_range(x(k), -1.0e12_dp, 1.0e12_dp)) then
-        message = name // '(' // format_integer(k) // ') is not a finite number [' // unit // ']'
+        message = name // '(' // format_integer(k) // ') = ' // value_str(x(k))
+        if (.not. is_finite_bits(x(k))) then
+          message = message // ' is not a finite number [' // unit // ']'
+        else
+          message = message // ' is inadmissible: admissible |' // name // '| <= 1e12 [' // &
+                    unit // ']'
+        end if
         return
       end if
     end do
-  end function not_finite_message
+  end function magnitude_message
 
   elemental logical function in_range(x, lo, hi)
     real(dp), intent(in) :: x, lo, hi

@@ -361,6 +361,20 @@ contains
                 'in interlock-history'
       return
     end if
+    if (ip == prop_ria .or. ip == prop_n_azimuths) then
+      ! The RIA of each case: the paper's values on the paper's or the azimuthal RIA (SPEC
+      ! section 9), a 3D case.
+      if (.not. deck%paper_ria) then
+        message = "parameter = '" // trim(parameter) // "' sweeps the RIA of the paper's " // &
+                  'values (one theta0_deg, thetaf_deg, zeta0): give no n_planes in &microplanes'
+        return
+      end if
+      if (deck%n_components /= 3) then
+        message = "parameter = '" // trim(parameter) // "' sweeps the RIA of a 3D case: give " // &
+                  "t2 loading, a path or n_azimuths (this deck is 2D)"
+        return
+      end if
+    end if
     if ((ip == prop_theta0 .or. ip == prop_thetaf) .and. .not. deck%paper_ria) then
       if (.not. all(same_value(abs(deck%theta0_deg(1:deck%n_planes)), &
                                abs(deck%theta0_deg(1))))) then

@@ -306,13 +306,13 @@ contains
                                                         0.5_dp * pi, '-pi/2 < theta < pi/2 [rad]', &
                                                         open_ends=.true.)
     if (len_trim(message) > 0) return
-    message = not_finite_message('frictional_slip', 'mm', frictional_slip)
-    if (len_trim(message) == 0) message = not_finite_message('friction_traction', 'MPa', &
+    message = magnitude_message('frictional_slip', 'mm', frictional_slip)
+    if (len_trim(message) == 0) message = magnitude_message('friction_traction', 'MPa', &
                                                               friction_traction)
-    if (len_trim(message) == 0) message = not_finite_message('sf_strike', 'mm', sf_strike)
-    if (len_trim(message) == 0) message = not_finite_message('tauf_strike', 'MPa', tauf_strike)
-    if (len_trim(message) == 0) message = not_finite_message('separation', 'mm', separation)
-    if (len_trim(message) == 0) message = not_finite_message('traction', 'MPa', traction)
+    if (len_trim(message) == 0) message = magnitude_message('sf_strike', 'mm', sf_strike)
+    if (len_trim(message) == 0) message = magnitude_message('tauf_strike', 'MPa', tauf_strike)
+    if (len_trim(message) == 0) message = magnitude_message('separation', 'mm', separation)
+    if (len_trim(message) == 0) message = magnitude_message('traction', 'MPa', traction)
     if (len_trim(message) > 0) return
     deck%has_initial_state = .true.
     deck%init_damage = damage

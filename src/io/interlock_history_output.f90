@@ -17,6 +17,7 @@ module interlock_history_output
   use interlock_h5, only: h5_file_t, h5_series_t, h5_create_file, h5_close_file, h5_has_marks, &
       h5_create_group, h5_close_group, h5_create_series, h5_append, h5_close_series, h5_attribute
   use interlock_deck, only: deck_t, deck_n_cases, n_datasets, history_datasets, deck_ria_name, &
+      case_n_azimuths, &
       sweep_slip_angle
   use interlock_mixed_control, only: history_row_t, history_sink_t, history_t
   use interlock_files, only: path_kind, path_absent, path_regular, path_folder, same_file, &
@@ -233,11 +234,15 @@ contains
     ! A 3D case (SPEC section 9): the frame, the third component and the RIA's azimuths.
     if (deck%n_components == 3) then
       call ok(h5_text(g, 'frame', 'local interface frame (n, t1, t2), right-handed, t2 = n x t1; ' // &
-                      't1 is the slip axis of the input'))
+                      't1 is the slip axis of the input; the per-plane state (theta, ' // &
+                      'frictional_slip, friction_traction, sf_strike, tauf_strike) is in ' // &
+                      'each plane''s frame (m_k, e_k, q_k) at its phi_deg as given, which ' // &
+                      'may lie outside [0, 180): the same plane at phi_deg - 180 with theta ' // &
+                      'negated has these five of opposite sign'))
       call ok(h5_text(g, 'components', 'N, T1, T2'))
       call ok(h5_text(g, 't2_control', control_name(deck%control%traction(3))))
-      call ok(h5_text(g, 'ria', deck_ria_name(deck)))
-      call ok(h5_int(g, 'n_azimuths', deck%n_azimuths))
+      call ok(h5_text(g, 'ria', deck_ria_name(deck, icase)))
+      call ok(h5_int(g, 'n_azimuths', case_n_azimuths(deck, icase)))
       call ok(h5_real_1d(g, 'phi_deg', mat%phi(1:np) * rad_to_deg))
       call ok(h5_text(g, 'phi_deg_unit', 'deg'))
       call ok(h5_text(g, 'path', trim(deck%path_kind)))

@@ -189,9 +189,13 @@ module interlock_material_table
   type(statevar_t), parameter :: statevars(n_statevars_per_plane + n_statevars_global) = [ &
     statevar_t('damage', '-', .true., 'damage D_k in [0, 1], non-decreasing'), &
     statevar_t('beta', '-', .true., 'history maximum of the equivalent relative displacement'), &
-    statevar_t('frictional_slip', 'mm', .true., 'frictional slip sf_k along the microplane'), &
+    statevar_t('frictional_slip', 'mm', .true., &
+               'frictional slip sf_k along the microplane (3D: along its dip e_k at its phi_k ' // &
+               'as given)'), &
     statevar_t('zeta', 'N/mm', .true., 'accumulated frictional work zeta_k (drives wear)'), &
-    statevar_t('theta', 'rad', .true., 'current inclination theta_k of the microplane'), &
+    statevar_t('theta', 'rad', .true., &
+               'current inclination theta_k of the microplane (signed in the frame of its ' // &
+               'phi_k as given)'), &
     statevar_t('friction_traction', 'MPa', .true., &
                'friction traction K_t (s_kt - sf_k) at the end of the increment'), &
     statevar_t('work', 'N/mm', .false., 'work done on the interface, sum of sigma . ds'), &
@@ -212,9 +216,11 @@ module interlock_material_table
   integer, parameter :: sv_frictional_slip_strike = 11, sv_friction_traction_strike = 12
   type(statevar_t), parameter :: strike_statevars(n_statevars_strike) = [ &
     statevar_t('frictional_slip_strike', 'mm', .true., &
-               '3D: frictional slip of plane k along its strike q_k'), &
+               '3D: frictional slip of plane k along its strike q_k (the frame of its phi_k ' // &
+               'as given)'), &
     statevar_t('friction_traction_strike', 'MPa', .true., &
-               '3D: friction traction of plane k along its strike q_k') ]
+               '3D: friction traction of plane k along its strike q_k (the frame of its ' // &
+               'phi_k as given)') ]
 
 contains
 

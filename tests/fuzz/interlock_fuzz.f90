@@ -283,8 +283,16 @@ contains
       do k = 1, 4 + n_props
         props(k) = garble(props(k), p / 4.0_dp)
       end do
-      ! (the slots the law writes: a garbled PROPS 21-22 may select another admissible RIA)
-      if (ntens == 3 .or. ntens == 6) law_nstatv = umat_nstatv_3d(planes_3d(props(5:4 + n_props)))
+      ! The slots the entry writes, for the NTENS it is given (a garbled NTENS selects the other
+      ! law: the layer with NTENS = 4 runs the 2D law and writes its slots only; an NTENS that
+      ! selects no law is refused) and the RIA that PROPS 21-22 select (garbled ones may select
+      ! another admissible RIA).
+      law_nstatv = umat_nstatv
+      extra = merge(0, layer_nstatv_extra, entry == entry_umat)
+      if (ntens == merge(3, 6, entry == entry_umat)) then
+        law_nstatv = umat_nstatv_3d(planes_3d(props(5:4 + n_props)))
+        if (entry == entry_layer) extra = layer_nstatv_extra_3d
+      end if
       ! The point: carried on from its last accepted call, with garbage now and then.
       pt = points(which)
       if (rng_uniform(rng) < 0.05_dp) pt = garbage_point_t()       ! a fresh point
