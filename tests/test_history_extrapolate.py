@@ -376,7 +376,7 @@ def mode_jumps(program, data, work):
     with open(path, "w") as f:
         f.write(every)
     r = subprocess.run([program, "--output-dir", work, path], capture_output=True, text=True)
-    lines = [line for line in r.stdout.splitlines() if "warning: planes slide or wear" in line]
+    lines = [line for line in r.stderr.splitlines() if "warning: planes slide or wear" in line]
     check(r.returncode == 0 and len(lines) == 1 and len(lines[0]) < 600 and
           "(t = 0 to 1, t = 1 to 2, t = 2 to 3 and 597 more: 600 segments)" in lines[0],
           f"jump_every_step: exit status {r.returncode}, {len(lines)} warning line(s) of "
