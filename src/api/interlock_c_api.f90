@@ -406,14 +406,14 @@ contains
     fraction = 0.0_dp
     if (.not. all(key_in_range(old(nsv + 1:nsv + d), -1 - separation_bits, separation_bits))) then
       if (want_message) message = 'the separation at the start of the increment (state[' // &
-        format_integer(nsv) // ':' // format_integer(nsv + d) // ']) = (' // &
+        format_integer(nsv) // '] .. state[' // format_integer(nsv + d - 1) // ']) = (' // &
         format_reals(old(nsv + 1:nsv + d)) // ') mm is inadmissible: admissible |s| <= ' // &
         format_real(separation_bound) // ' mm'
       return
     end if
     if (.not. all(key_in_range(old(nsv + d + 1:nsv + 2 * d), -1 - state_bits, state_bits))) then
       if (want_message) message = 'the traction at the start of the increment (state[' // &
-        format_integer(nsv + d) // ':' // format_integer(nsv + 2 * d) // ']) = (' // &
+        format_integer(nsv + d) // '] .. state[' // format_integer(nsv + 2 * d - 1) // ']) = (' // &
         format_reals(old(nsv + d + 1:nsv + 2 * d)) // ') MPa is inadmissible: admissible ' // &
         '|traction| <= ' // format_real(state_bound) // ' MPa'
       return
