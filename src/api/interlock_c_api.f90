@@ -51,6 +51,8 @@ module interlock_c_api
   !> The flags of interlock_property_info.
   integer(c_int), parameter :: flag_required = 1, flag_lower_open = 2, flag_upper_open = 4, &
                                flag_infinite_ok = 8, flag_integer = 16
+  !> The sizes of a material (material_size).
+  integer, parameter :: size_dim = 1, size_planes = 2, size_state = 3, size_statev = 4
   !> The longest name a C caller may give (interlock_material_from_names).
   integer, parameter :: name_len = 64
   !> The largest state of a point: STATEV for max_planes planes, separation and traction.
@@ -239,35 +241,43 @@ contains
 
   integer(c_int) function c_dim(material) result(n) bind(C, name='interlock_dim')
     type(c_ptr), value :: material
-    type(c_material_t), pointer :: h
-    n = 0
-    h => handle(material)
-    if (associated(h)) n = h%dim
+    n = material_size(material, size_dim)
   end function c_dim
 
   integer(c_int) function c_plane_count(material) result(n) bind(C, name='interlock_plane_count')
     type(c_ptr), value :: material
-    type(c_material_t), pointer :: h
-    n = 0
-    h => handle(material)
-    if (associated(h)) n = h%mat%n_planes
+    n = material_size(material, size_planes)
   end function c_plane_count
 
   integer(c_int) function c_state_size(material) result(n) bind(C, name='interlock_state_size')
     type(c_ptr), value :: material
-    type(c_material_t), pointer :: h
-    n = 0
-    h => handle(material)
-    if (associated(h)) n = h%state_size
+    n = material_size(material, size_state)
   end function c_state_size
 
   integer(c_int) function c_statev_size(material) result(n) bind(C, name='interlock_statev_size')
     type(c_ptr), value :: material
+    n = material_size(material, size_statev)
+  end function c_statev_size
+
+  !> One of a material's sizes (`what`: size_*); 0 for NULL.
+  integer(c_int) function material_size(material, what) result(n)
+    type(c_ptr), intent(in) :: material
+    integer, intent(in) :: what
     type(c_material_t), pointer :: h
     n = 0
     h => handle(material)
-    if (associated(h)) n = h%nstatv
-  end function c_statev_size
+    if (.not. associated(h)) return
+    select case (what)
+    case (size_dim)
+      n = h%dim
+    case (size_planes)
+      n = h%mat%n_planes
+    case (size_state)
+      n = h%state_size
+    case (size_statev)
+      n = h%nstatv
+    end select
+  end function material_size
 
   ! --- The state.
 

@@ -218,22 +218,20 @@ static void updates_refused(void) {
   check(fraction[0] == 1.0, "a small step: fraction 1");
   check(fraction[9] > 0.0 && fraction[9] < 0.8, "a long slip: a suggested cut");
   check(fraction[1] == 0.25 && fraction[4] == 0.0 && fraction[7] == 0.0, "the fractions");
-  /* n = 0 and NULL pointers: nothing written */
+  /* n = 0 and NULL pointers (each argument in turn): nothing written */
   status[0] = 99;
   check(interlock_update(m, 0, sep, old_state, new_state, traction, tangent, status, fraction) == 0 &&
             status[0] == 99,
         "n = 0");
-  check(interlock_update(NULL, 2, sep, old_state, new_state, traction, tangent, status, fraction) == 2 &&
-            status[0] == 99,
-        "material NULL");
-  check(interlock_update(m, 2, NULL, old_state, new_state, traction, tangent, status, fraction) == 2 &&
-            status[0] == 99,
-        "separation NULL");
-  check(interlock_update(m, 2, sep, old_state, NULL, traction, tangent, status, fraction) == 2 &&
-            status[0] == 99,
-        "state_new NULL");
-  check(interlock_update(m, 2, sep, old_state, new_state, traction, tangent, NULL, fraction) == 2,
-        "status NULL");
+  for (i = 0; i < 7; ++i) {
+    char label[64];
+    snprintf(label, sizeof label, "argument %d NULL", i);
+    check(interlock_update(i == 0 ? NULL : m, 2, i == 1 ? NULL : sep, i == 2 ? NULL : old_state,
+                           i == 3 ? NULL : new_state, i == 4 ? NULL : traction, tangent,
+                           i == 5 ? NULL : status, i == 6 ? NULL : fraction) == 2 &&
+              status[0] == 99,
+          label);
+  }
   /* tangent NULL: the same update without it */
   check(interlock_update(m, 1, sep, old_state, one_new, one_traction, NULL, &one_status,
                          &one_fraction) == 0 &&
