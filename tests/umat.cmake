@@ -150,7 +150,7 @@ if(TARGET interlock-history AND INTERLOCK_TEST_CC AND INTERLOCK_TEST_CXX)
       -DDECK_3D=${PROJECT_SOURCE_DIR}/inputs/granite_3d_anisotropy.nml
       -DDECK_2D=${PROJECT_SOURCE_DIR}/inputs/fig5.nml -DOUT=${c_api_dir}/histories
       -P ${CMAKE_CURRENT_SOURCE_DIR}/test_c_api_install.cmake)
-  set_tests_properties(umat_c_api_install PROPERTIES TIMEOUT 300 LABELS umat
+  set_tests_properties(umat_c_api_install PROPERTIES TIMEOUT 600 LABELS umat
     FIXTURES_SETUP c_api)
   add_test(NAME umat_c_api COMMAND ${c_api_dir}/consumer/test_c_api
     ${c_api_dir}/histories/granite_3d_anisotropy.txt ${c_api_dir}/histories/fig5.txt)

@@ -83,10 +83,10 @@
 !> (interlock_material:interlock_paper_material_derive: no loops over the planes, one sine and
 !> cosine, derive's formulas shared). The local material and states are not filled with
 !> default values first (their derived and per-plane parts have none; props_n_to_material and
-!> statev_to_state set what the update reads). step_factor runs only when a PNEWDT bound is
-!> exceeded (bounds_met, one test per plane, first). This file is compiled for link-time
-!> optimisation with the UMAT's path (umat/CMakeLists.txt), so that the STATEV checks and
-!> copies inline here. Messages are built only on failure, in the procedures after the body.
+!> statev_to_state set what the update reads). The step fraction (interlock_step_control)
+!> interpolates only when a bound is exceeded (bounds_met, one test per plane, first). This
+!> file is compiled for link-time optimisation with the UMAT's path (umat/CMakeLists.txt), so
+!> that the STATEV checks and copies inline here. Messages are built only on failure, in the procedures after the body.
 !> interlock-bench measures the UMAT call against its update (docs/bench.md).
 !>
 !> **Threads.** No SAVE'd, module or COMMON state is written but the table of the messages

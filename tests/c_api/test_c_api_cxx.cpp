@@ -46,22 +46,25 @@ struct Outputs {
 };
 
 // n points along random separation paths (a random walk per point, some steps long enough
-// to damage, wear and ask for cuts), `steps` steps, serially and by 4 threads on disjoint
+// to damage, wear and ask for cuts; a NaN separation on every 97th point), `steps` steps, serially and by 4 threads on disjoint
 // chunks of uneven sizes: bitwise the same after every step.
 void threads_bitwise(const interlock_material *m, std::size_t n, int steps, const char *what) {
   const int dim = interlock_dim(m), ns = interlock_state_size(m);
   std::mt19937_64 random(20261127);
   std::normal_distribution<double> normal(0.0, 1.0);
-  std::vector<double> start(n * ns), separation(n * dim, 0.0);
+  std::vector<double> start(n * ns), path(n * dim, 0.0), separation(n * dim);
   check(interlock_state_init(m, 0, n, start.data()) == INTERLOCK_OK, "state_init");
   Outputs serial(n, ns, dim), threaded(n, ns, dim);
   std::size_t not_ok = 0, cut = 0;
   for (int step = 0; step < steps; ++step) {
     for (std::size_t p = 0; p < n; ++p) {
       const double size = (p % 7 == 0) ? 0.05 : 0.004;
-      separation[p * dim] = -0.02 + 0.01 * normal(random);
-      for (int c = 1; c < dim; ++c) separation[p * dim + c] += size * normal(random);
+      path[p * dim] = -0.02 + 0.01 * normal(random);
+      for (int c = 1; c < dim; ++c) path[p * dim + c] += size * normal(random);
     }
+    // (garbage on some points: refused on every thread alike)
+    separation = path;
+    for (std::size_t p = step % 5; p < n; p += 97) separation[p * dim + 1] = NAN;
     interlock_update(m, n, separation.data(), start.data(), serial.state.data(),
                      serial.traction.data(), serial.tangent.data(), serial.status.data(),
                      serial.fraction.data());
@@ -97,6 +100,7 @@ void threads_bitwise(const interlock_material *m, std::size_t n, int steps, cons
   std::cout << what << ": " << n << " points x " << steps << " steps, bitwise equal; "
             << not_ok << " point updates not OK, " << cut << " with a suggested cut\n";
   check(cut > 0, "some steps ask for a cut (the random paths reach the accuracy bounds)");
+  check(not_ok > 0, "some points are refused");
 }
 
 }  // namespace
