@@ -3,17 +3,7 @@
 # cmake -DBUILD_DIR= -DCONFIG= -DPREFIX= -DCONSUMER_SOURCE= -DCONSUMER_BUILD= -DGENERATOR= -DFC=
 #       -P test_umat_install.cmake
 file(REMOVE_RECURSE ${PREFIX} ${CONSUMER_BUILD})
-function(run)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  message("$ ${ARGN}\n${out}${err}")
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "failed (${rc})")
-  endif()
-endfunction()
-if(NOT CONFIG)
-  set(CONFIG Release)
-endif()
-run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${PREFIX} --config ${CONFIG})
+include(${CMAKE_CURRENT_LIST_DIR}/install_prefix.cmake)
 # pFUnit is for our tests only: nothing of it is installed with interlock.
 file(GLOB_RECURSE pfunit_files ${PREFIX}/*PFUNIT* ${PREFIX}/*funit* ${PREFIX}/*gftl* ${PREFIX}/*fargparse*)
 if(pfunit_files)

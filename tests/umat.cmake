@@ -144,3 +144,39 @@ target_include_directories(umat_layer PRIVATE ${PROJECT_BINARY_DIR}/umat/mod_uma
 set_tests_properties(umat_layer PROPERTIES
   PASS_REGULAR_EXPRESSION "layer PROPS\\(1\\): 'h' = 0 is inadmissible: admissible 1e-12 <= h <= 1e\\+12.*layer PROPS\\(2\\): 'e_other' = -5 is inadmissible.*layer PROPS\\(3\\): 'normal_axis' = 4 is inadmissible: admissible 1, 2 or 3.*layer PROPS\\(4\\): 'slip_axis' = 3 is inadmissible.*layer PROPS\\(8\\) = interlock PROPS\\(4\\): property 'eta' = 1.5 is inadmissible.*layer PROPS\\(24\\) = interlock PROPS\\(20\\): property 'tangent' = 3 is inadmissible.*NPROPS = 12 is inadmissible: admissible 13 <= NPROPS <= 26.*inadmissible with NTENS = 4.*diverged global iteration: DSTRAN\\(3\\) = \\+?Inf.*warning: element 9, point 4 \\(material 'LAYER', increment 1\\): the strain of component 3 = -0.3, which does not involve normal_axis = 1.*NSTATV = 29 is inadmissible for the thin layer: admissible NSTATV = 28 \\(the law's state\\) or NSTATV >= 34 \\(also the layer's separation and traction, STATEV 29-34\\).*OK\n \\([0-9]+ tests?\\)"
   FAIL_REGULAR_EXPRESSION "FAIL|ERROR STOP|Encountered 1 or more failures")
+
+# --- The C API (include/interlock.h, docs/c-api.md) from C and C++ programs built against an
+#     installed prefix (tests/c_api): the fixture installs, builds them and exports the
+#     histories of a 3D and a 2D deck; the tests replay them step by step, refuse garbage, run
+#     4 threads against the serial update, and run the documentation's example.
+find_program(INTERLOCK_TEST_CC NAMES cc gcc)
+find_program(INTERLOCK_TEST_CXX NAMES c++ g++)
+if(TARGET interlock-history AND INTERLOCK_TEST_CC AND INTERLOCK_TEST_CXX)
+  set(c_api_dir ${CMAKE_CURRENT_BINARY_DIR}/c_api_test)
+  add_test(NAME umat_c_api_install
+    COMMAND ${CMAKE_COMMAND}
+      -DBUILD_DIR=${PROJECT_BINARY_DIR} -DCONFIG=$<CONFIG> -DPREFIX=${c_api_dir}/prefix
+      -DCONSUMER_SOURCE=${CMAKE_CURRENT_SOURCE_DIR}/c_api -DCONSUMER_BUILD=${c_api_dir}/consumer
+      -DGENERATOR=${CMAKE_GENERATOR} -DCC=${INTERLOCK_TEST_CC} -DCXX=${INTERLOCK_TEST_CXX}
+      -DEXAMPLE=${PROJECT_SOURCE_DIR}/examples/c_api_example.c
+      -DHISTORY=$<TARGET_FILE:interlock-history> -DPYTHON=${INTERLOCK_TEST_PYTHON}
+      -DDECK_3D=${PROJECT_SOURCE_DIR}/inputs/granite_3d_anisotropy.nml
+      -DDECK_2D=${PROJECT_SOURCE_DIR}/inputs/fig5.nml -DOUT=${c_api_dir}/histories
+      -P ${CMAKE_CURRENT_SOURCE_DIR}/test_c_api_install.cmake)
+  set_tests_properties(umat_c_api_install PROPERTIES TIMEOUT 600 LABELS umat
+    FIXTURES_SETUP c_api)
+  add_test(NAME umat_c_api COMMAND ${c_api_dir}/consumer/test_c_api
+    ${c_api_dir}/histories/granite_3d_anisotropy.txt ${c_api_dir}/histories/fig5.txt)
+  add_test(NAME umat_c_api_cxx COMMAND ${c_api_dir}/consumer/test_c_api_cxx
+    ${c_api_dir}/histories/granite_3d_anisotropy.txt)
+  add_test(NAME umat_c_api_example COMMAND ${CMAKE_COMMAND}
+    -DDOC=${PROJECT_SOURCE_DIR}/docs/c-api.md -DSOURCE=${PROJECT_SOURCE_DIR}/examples/c_api_example.c
+    -DPROGRAM=${c_api_dir}/consumer/c_api_example
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/test_c_api_example.cmake)
+  set_tests_properties(umat_c_api umat_c_api_cxx umat_c_api_example PROPERTIES TIMEOUT 300
+    LABELS umat FIXTURES_REQUIRED c_api)
+  set_tests_properties(umat_c_api PROPERTIES
+    PASS_REGULAR_EXPRESSION "3D history: 1801 steps, dim 3, 60 STATEV: largest difference.*2D history: 2401 steps, dim 2, 22 STATEV.*all checks passed")
+  set_tests_properties(umat_c_api_cxx PROPERTIES
+    PASS_REGULAR_EXPRESSION "bitwise equal.*bitwise equal.*all checks passed")
+endif()

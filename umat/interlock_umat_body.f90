@@ -85,10 +85,10 @@
 !> (interlock_material:interlock_paper_material_derive: no loops over the planes, one sine and
 !> cosine, derive's formulas shared). The local material and states are not filled with
 !> default values first (their derived and per-plane parts have none; props_n_to_material and
-!> statev_to_state set what the update reads). step_factor runs only when a PNEWDT bound is
-!> exceeded (bounds_met, one test per plane, first). This file is compiled for link-time
-!> optimisation with the UMAT's path (umat/CMakeLists.txt), so that the STATEV checks and
-!> copies inline here. Messages are built only on failure, in the procedures after the body.
+!> statev_to_state set what the update reads). The step fraction (interlock_step_control)
+!> interpolates only when a bound is exceeded (bounds_met, one test per plane, first). This
+!> file is compiled for link-time optimisation with the UMAT's path (umat/CMakeLists.txt), so
+!> that the STATEV checks and copies inline here. Messages are built only on failure, in the procedures after the body.
 !> interlock-bench measures the UMAT call against its update (docs/bench.md).
 !>
 !> **Threads.** No SAVE'd, module or COMMON state is written but the table of the messages
@@ -102,35 +102,18 @@ module interlock_umat_body
       said_stress, said_start_strain, said_diverged, said_local_failure, said_replay
   use interlock, only: dp, separation_bound, state_bound, interlock_material_t, &
       interlock_solver_t, interlock_state_t, interlock_info_t, interlock_update, umat_controls_t, &
-      status_ok, status_local_failure, scheme_explicit
+      status_ok, status_local_failure
+  use interlock_step_control, only: step_fraction, pnewdt_bad_input, pnewdt_local_failure, &
+      pnewdt_diverged, pnewdt_none, separation_bits, increment_bits, state_bits
   implicit none
   private
   public :: interlock_umat_cohesive, diverged_iteration_message, pnewdt_diverged
   ! (for the three-dimensional body, umat/interlock_umat_body_3d.f90: the same checks,
-  ! messages and PNEWDT rules)
-  public :: pnewdt_bad_input, pnewdt_local_failure, keep_fraction, pnewdt_min_factor, &
-            separation_bits, increment_bits, state_bits, bad_precision, bad_ntens, bad_nstatv, bad_stress, &
-            report, report_update_failure, separation_text, lower_pnewdt, step_factor, property_index, name_layer_property, &
+  ! messages and PNEWDT rules; the PNEWDT values and bounds are interlock_step_control's)
+  public :: bad_precision, bad_ntens, bad_nstatv, bad_stress, &
+            report, report_update_failure, separation_text, lower_pnewdt, property_index, name_layer_property, &
             reject_argument, reject_start_separation, write_replay, pnewdt_none, &
             layer_nstatv_between, reject_layer_nstatv
-
-  real(dp), parameter :: pnewdt_bad_input = -1.0_dp
-  !> "No request" in Abaqus' convention (what a NaN PNEWDT on entry is replaced by).
-  real(dp), parameter :: pnewdt_none = 1.0_dp
-  real(dp), parameter :: pnewdt_local_failure = 0.5_dp
-  !> A diverged global iteration: the cut hosts make for their own diverged iterations.
-  real(dp), parameter :: pnewdt_diverged = 0.25_dp
-  !> The accuracy bounds: no request for a fraction f >= keep_fraction (the cut would shave
-  !> too little to pay for the discarded attempt); requests no smaller than pnewdt_min_factor.
-  real(dp), parameter :: keep_fraction = 0.8_dp
-  real(dp), parameter :: pnewdt_min_factor = 0.01_dp
-  !> A damage or angle bound exceeded by less (relative) is met (step_factor).
-  real(dp), parameter :: slack = 1.0e-6_dp
-  !> The bounds of STRAN, DSTRAN and STRESS on entry as ordered keys (key_in_range: the
-  !> symmetric range [-1 - B, B] of keys is |x| <= B, one test on the magnitude's bits).
-  integer(int64), parameter :: separation_bits = transfer(separation_bound, 0_int64), &
-    increment_bits = transfer(2.0_dp * separation_bound, 0_int64), &
-    state_bits = transfer(state_bound, 0_int64)
 
   !> What reject_argument reports.
   integer, parameter :: bad_precision = 1, bad_ntens = 2, bad_nstatv = 3, bad_stress = 4
@@ -292,100 +275,11 @@ contains
     DRPLDE(1:2) = 0.0_dp
     DRPLDT = 0.0_dp
 
-    ! --- Accuracy control: propose the fraction of the increment that meets the bounds.
-    ! (every bound met, the common case: one test per plane, no call)
-    if (bounds_met(mat, controls, old, new)) return
-    factor = step_factor(mat, controls, old, old, new)
-    ! (in the implicit and trapezoidal schemes a zero increment is a no-op, SPEC D10: `old`
-    ! is the anchor already)
-    if (factor < keep_fraction .and. mat%use_wear .and. solver%scheme == scheme_explicit) &
-      factor = step_factor_from_zero(mat, solver, controls, old, new, factor)
-    if (factor < keep_fraction) call lower_pnewdt(PNEWDT, max(pnewdt_min_factor, factor))
+    ! --- Accuracy control: propose the fraction of the increment that meets the bounds
+    ! (interlock_step_control:step_fraction).
+    factor = step_fraction(mat, solver, controls, old, new)
+    if (factor < 1.0_dp) call lower_pnewdt(PNEWDT, factor)
   end subroutine interlock_umat_cohesive
-
-  !> Every plane's damage and angle increments within their bounds (the slack of step_factor
-  !> included): step_factor would return 1. Any other case (NaN too) goes to step_factor.
-  pure logical function bounds_met(mat, controls, old, new)
-    use interlock, only: umat_planes
-    type(interlock_material_t), intent(in) :: mat
-    type(umat_controls_t), intent(in) :: controls
-    type(interlock_state_t), intent(in) :: old, new
-    real(dp) :: damage_bound, angle_bound
-    integer :: k
-    damage_bound = controls%max_damage_increment * (1.0_dp + slack)
-    angle_bound = controls%max_angle_increment * (1.0_dp + slack)
-    bounds_met = .true.
-    ! (the UMAT's material has umat_planes planes: the loops unrolled, no branch per plane)
-    !GCC$ unroll 3
-    do k = 1, umat_planes
-      bounds_met = bounds_met .and. new%damage(k) - old%damage(k) <= damage_bound
-    end do
-    if (bounds_met .and. mat%use_wear) then
-      !GCC$ unroll 3
-      do k = 1, umat_planes
-        bounds_met = bounds_met .and. abs(new%theta(k) - old%theta(k)) <= angle_bound
-      end do
-    end if
-  end function bounds_met
-
-  !> With wear, a zero increment is not a no-op in the explicit scheme (the angle stored at the
-  !> end of the last increment turns the local frame): interpolate from the state that the zero
-  !> increment gives instead (one more update, only when a bound is exceeded). `factor` is the
-  !> fraction from `old`, kept when the zero increment fails.
-  real(dp) function step_factor_from_zero(mat, solver, controls, old, new, factor) result(f)
-    type(interlock_material_t), intent(in) :: mat
-    type(interlock_solver_t), intent(in) :: solver
-    type(umat_controls_t), intent(in) :: controls
-    type(interlock_state_t), intent(in) :: old, new
-    real(dp), intent(in) :: factor
-    type(interlock_state_t) :: anchor
-    type(interlock_info_t) :: info
-    real(dp) :: sigma(2), tangent(2, 2)
-    f = factor
-    call interlock_update(mat, solver, old%s, old, anchor, sigma, tangent, info)
-    if (info%status == status_ok) f = step_factor(mat, controls, old, anchor, new)
-  end function step_factor_from_zero
-
-  !> Fraction f of the increment old -> new that meets the damage and angle bounds (1 when
-  !> both hold), interpolating the drivers beta and zeta linearly between `zero` (the state a
-  !> zero increment gives) and `new` (see the header).
-  pure real(dp) function step_factor(mat, controls, old, zero, new) result(f)
-    type(interlock_material_t), intent(in) :: mat
-    type(umat_controls_t), intent(in) :: controls
-    type(interlock_state_t), intent(in) :: old, zero, new
-    integer :: k
-    real(dp) :: d_target, beta_target, span, dzeta_target, dzeta_zero
-    f = 1.0_dp
-    do k = 1, mat%n_planes
-      if (new%damage(k) - old%damage(k) > controls%max_damage_increment * (1.0_dp + slack)) then
-        ! D = (beta - 1) / (eta beta)  <=>  beta = 1 / (1 - eta D)
-        d_target = old%damage(k) + controls%max_damage_increment
-        beta_target = 1.0_dp / (1.0_dp - mat%eta * d_target)
-        ! (no cut helps when the zero increment is already beyond the target: no request)
-        if (new%beta(k) > zero%beta(k) .and. beta_target > zero%beta(k)) then
-          ! (the quotient only when below f <= 1: no overflow on a tiny denominator)
-          if (beta_target - zero%beta(k) < f * (new%beta(k) - zero%beta(k))) &
-            f = (beta_target - zero%beta(k)) / (new%beta(k) - zero%beta(k))
-        end if
-      end if
-      if (mat%plane_wears(k) .and. abs(new%theta(k) - old%theta(k)) > &
-          controls%max_angle_increment * (1.0_dp + slack)) then
-        ! theta(zeta) - theta_f = (theta_0 - theta_f) exp(-zeta/zeta_0): the angle turns by
-        ! |theta_old - theta_f| (1 - exp(-dzeta/zeta_0)) when zeta grows by dzeta.
-        span = abs(old%theta(k) - mat%thetaf_eff(k))
-        dzeta_zero = zero%zeta(k) - old%zeta(k)
-        if (span > controls%max_angle_increment) then
-          dzeta_target = -mat%zeta0(k) * log(1.0_dp - controls%max_angle_increment / span)
-        else
-          dzeta_target = 0.0_dp
-        end if
-        if (new%zeta(k) > zero%zeta(k) .and. dzeta_target > dzeta_zero) then
-          if (dzeta_target - dzeta_zero < f * (new%zeta(k) - zero%zeta(k))) &
-            f = (dzeta_target - dzeta_zero) / (new%zeta(k) - zero%zeta(k))
-        end if
-      end if
-    end do
-  end function step_factor
 
   !> PNEWDT = min(PNEWDT, proposal); a NaN on entry is replaced (tested on its bits: an
   !> ordered comparison of a NaN raises the invalid flag, a trap in hosts that run with traps).

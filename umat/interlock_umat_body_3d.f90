@@ -28,15 +28,16 @@
 module interlock_umat_body_3d
   use interlock_numbers, only: key_in_range
   use interlock_umat_messages, only: said_argument, said_property, said_statev, said_diverged
-  use interlock_umat_body, only: pnewdt_bad_input, pnewdt_diverged, keep_fraction, &
-      pnewdt_min_factor, separation_bits, increment_bits, state_bits, bad_precision, bad_ntens, &
-      bad_nstatv, bad_stress, report, report_update_failure, lower_pnewdt, step_factor, &
+  use interlock_step_control, only: step_fraction_3d, pnewdt_bad_input, pnewdt_diverged, &
+      separation_bits, increment_bits, state_bits
+  use interlock_umat_body, only: bad_precision, bad_ntens, &
+      bad_nstatv, bad_stress, report, report_update_failure, lower_pnewdt, &
       property_index, name_layer_property, reject_argument, reject_start_separation, separation_text, &
       diverged_iteration_message, write_replay, pnewdt_none, layer_nstatv_between, &
       reject_layer_nstatv
   use interlock, only: dp, separation_bound, interlock_material_t, interlock_solver_t, &
       interlock_state_3d_t, interlock_info_t, interlock_update_3d, umat_controls_t, status_ok, &
-      status_local_failure, scheme_explicit
+      status_local_failure
   implicit none
   private
   public :: interlock_umat_cohesive_3d
@@ -190,29 +191,8 @@ contains
     DRPLDT = 0.0_dp
 
     ! --- Accuracy control, as in 2D (the damage and the dip angles of every plane).
-    factor = step_factor(mat, controls, old%interlock_state_t, old%interlock_state_t, &
-                         new%interlock_state_t)
-    if (factor < keep_fraction .and. mat%use_wear .and. solver%scheme == scheme_explicit) &
-      factor = step_factor_from_zero_3d(mat, solver, controls, old, new, factor)
-    if (factor < keep_fraction) call lower_pnewdt(PNEWDT, max(pnewdt_min_factor, factor))
+    factor = step_fraction_3d(mat, solver, controls, old, new)
+    if (factor < 1.0_dp) call lower_pnewdt(PNEWDT, factor)
   end subroutine interlock_umat_cohesive_3d
-
-  !> The 2D body's step_factor_from_zero for a three-dimensional point: in the explicit scheme
-  !> with wear, interpolate from the state a zero increment gives (one more update, only when
-  !> a bound is exceeded); `factor` is kept when that update fails.
-  real(dp) function step_factor_from_zero_3d(mat, solver, controls, old, new, factor) result(f)
-    type(interlock_material_t), intent(in) :: mat
-    type(interlock_solver_t), intent(in) :: solver
-    type(umat_controls_t), intent(in) :: controls
-    type(interlock_state_3d_t), intent(in) :: old, new
-    real(dp), intent(in) :: factor
-    type(interlock_state_3d_t) :: anchor
-    type(interlock_info_t) :: info
-    real(dp) :: sigma(3), tangent(3, 3)
-    f = factor
-    call interlock_update_3d(mat, solver, [old%s, old%s_t2], old, anchor, sigma, tangent, info)
-    if (info%status == status_ok) f = step_factor(mat, controls, old%interlock_state_t, &
-                                                  anchor%interlock_state_t, new%interlock_state_t)
-  end function step_factor_from_zero_3d
 
 end module interlock_umat_body_3d

@@ -80,8 +80,9 @@ module interlock_umat_layer
       n_required_properties, n_properties, separation_bound, is_finite_bits, is_nan_value, &
       umat_nstatv_3d, props_n_planes_3d
   use interlock_numbers, only: key_in_range
-  use interlock_umat_body, only: interlock_umat_cohesive, diverged_iteration_message, &
-      pnewdt_diverged, pnewdt_none, separation_increment_bits => increment_bits
+  use interlock_umat_body, only: interlock_umat_cohesive, diverged_iteration_message
+  use interlock_step_control, only: pnewdt_diverged, pnewdt_none, &
+      separation_increment_bits => increment_bits
   use interlock_umat_body_3d, only: interlock_umat_cohesive_3d
   use interlock_umat_messages, only: umat_say, said_argument, said_start_strain, &
       said_diverged, said_layer_axes

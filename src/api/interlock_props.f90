@@ -26,7 +26,7 @@ module interlock_props
   public :: props_to_material, props_n_to_material, statev_to_state, state_to_statev, umat_controls_t
   public :: statev_bounds, statev_bad_index, statev_message, state_bound
   public :: props_n_to_material_3d, props_n_planes_3d, statev_bad_index_3d, statev_message_3d, statev_to_state_3d, &
-            state_to_statev_3d
+            state_to_statev_3d, statev_bounds_3d, statev_variable, nprops_message
 
   !> Largest magnitude admitted for a state variable that is not otherwise bounded (slips,
   !> works, energies, friction tractions) and for the traction STRESS on entry: far beyond any
@@ -216,9 +216,7 @@ contains
     integer :: i
     logical :: ok
     if (what == 0) then
-      message = 'NPROPS = ' // format_integer(size(props)) // ' is inadmissible: admissible ' // &
-                format_integer(n_required_properties) // ' <= NPROPS <= ' // &
-                format_integer(n_properties) // ' (see interlock-query --props)'
+      call nprops_message(size(props), message)
       return
     end if
     do i = 1, size(props)
@@ -238,6 +236,15 @@ contains
     message = "property 'thetaf_deg' must not exceed 'theta0_deg': admissible 0 <= thetaf_deg" &
               // ' <= theta0_deg'
   end subroutine props_message
+
+  !> The message of a PROPS of n values (n outside the admissible count).
+  pure subroutine nprops_message(n, message)
+    integer, intent(in) :: n
+    character(len=*), intent(out) :: message
+    message = 'NPROPS = ' // format_integer(n) // ' is inadmissible: admissible ' // &
+              format_integer(n_required_properties) // ' <= NPROPS <= ' // &
+              format_integer(n_properties) // ' (see interlock-query --props)'
+  end subroutine nprops_message
 
   !> The admissible range of every STATEV slot for material `mat` (NaN lies in none): damage in
   !> [0, 1] (exactly 1 when pre-fractured, with beta >= 1/(1 - eta)), beta and zeta >= 0, theta
@@ -341,13 +348,7 @@ contains
     real(dp) :: lo(umat_nstatv), hi(umat_nstatv)
     integer :: ivar, k
     call statev_bounds(mat, lo, hi)
-    if (i <= n_statevars_per_plane * umat_planes) then
-      ivar = (i - 1) / umat_planes + 1
-      k = i - (ivar - 1) * umat_planes
-    else
-      ivar = n_statevars_per_plane + i - n_statevars_per_plane * umat_planes
-      k = 0
-    end if
+    call statev_variable(i, umat_planes, ivar, k)
     call slot_message(i, statev(i), ivar, k, lo(i), hi(i), mat%prefractured, message)
   end subroutine statev_message
 
@@ -470,9 +471,20 @@ contains
     type(interlock_material_t), intent(in) :: mat
     character(len=*), intent(out) :: message
     real(dp) :: lo(size(statev)), hi(size(statev))
-    integer :: ivar, k, n
-    n = mat%n_planes
+    integer :: ivar, k
     call statev_bounds_3d(mat, lo, hi)
+    call statev_variable(i, mat%n_planes, ivar, k)
+    call slot_message(i, statev(i), ivar, k, lo(i), hi(i), mat%prefractured, message)
+  end subroutine statev_message_3d
+
+  !> The state variable (ivar, statevar_3d) and plane (k; 0 for a variable of the point) of
+  !> STATEV(i) of a point with n_planes planes (statevar_index_3d's layout; for the 2D
+  !> element's three planes the 2D layout, statevar_index).
+  pure subroutine statev_variable(i, n_planes, ivar, k)
+    integer, intent(in) :: i, n_planes
+    integer, intent(out) :: ivar, k
+    integer :: n
+    n = n_planes
     if (i <= n_statevars_per_plane * n) then
       ivar = (i - 1) / n + 1
       k = i - (ivar - 1) * n
@@ -483,8 +495,7 @@ contains
       ivar = sv_frictional_slip_strike + (i - n_statevars_per_plane * n - n_statevars_global - 1) / n
       k = i - statevar_index_3d(ivar, 0, n)
     end if
-    call slot_message(i, statev(i), ivar, k, lo(i), hi(i), mat%prefractured, message)
-  end subroutine statev_message_3d
+  end subroutine statev_variable
 
   !> STATEV -> the state of a three-dimensional point (statev_to_state's conventions).
   pure subroutine statev_to_state_3d(statev, mat, state)
