@@ -8,7 +8,8 @@ Reads README.md and docs/*.md and checks every
   -DINTERLOCK_CCX, mpi without deal.II: given on the command line) are listed as not checked;
 - repository path (a code span or a relative link starting with a top-level folder of the
   repository), against the tree (wildcards allowed);
-- CMake option `INTERLOCK_*`, against the CMake files that define it;
+- name `INTERLOCK_*`, against the CMake files that define it (an option), the C header (a
+  macro) and the test scripts (an environment variable);
 - program `interlock-*`, against the executables the CMake files build;
 - command-line option `--x` of a program or script in a code span that names it, against that
   program's or script's sources.
@@ -90,7 +91,7 @@ def main():
     programs = set(re.findall(r"add_executable\(\s*(interlock-[a-z0-9-]+)", cmake))
     programs |= set(re.findall(r"OUTPUT_NAME\s+(interlock-[a-z0-9-]+)", cmake))
     sources = {}
-    test_scripts = source_text(root, ["tests", "scripts"])
+    test_scripts = source_text(root, ["tests", "scripts", "include"])
 
     docs = [os.path.join(root, "README.md")] + sorted(glob.glob(os.path.join(root, "docs", "*.md")))
     problems, counts, unchecked = [], {"test": 0, "path": 0, "option": 0, "program": 0,
@@ -151,11 +152,11 @@ def main():
                 path = os.path.normpath(os.path.join(base, token))
                 if not glob.glob(path) and not glob.glob(os.path.join(root, token)):
                     problem(where, f"path `{token}`", "does not exist")
-            # CMake options (and the environment variables the test scripts read).
+            # CMake options, the C header's macros, the environment variables tests read.
             for option in set(re.findall(r"\b(INTERLOCK_[A-Z0-9_]+)\b", line)):
                 counts["option"] += 1
                 if option not in cmake and option not in test_scripts:
-                    problem(where, f"option `{option}`", "no CMake file or test script reads it")
+                    problem(where, f"option `{option}`", "no CMake file, C header or test script has it")
             # Programs and their options.
             for span in spans:
                 for prog in set(re.findall(r"\b(interlock-[a-z0-9]+(?:-[a-z0-9]+)*)(?![\w.-])", span)):
