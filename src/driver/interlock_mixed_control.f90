@@ -12,7 +12,7 @@ module interlock_mixed_control
   use interlock_path, only: arc_t, path_point
   use interlock_history_sink, only: history_row_t, history_sink_t, history_t, begin_history, &
       note_sliding_jump
-  use interlock_step_solver, only: control_t, solve_step, point_s
+  use interlock_step_solver, only: control_t, solve_step, point_vector
   implicit none
   private
   public :: control_t, arc_t, history_row_t, history_sink_t, history_t, solve_step, run_history, &
@@ -128,7 +128,8 @@ contains
         end do
         if (extrapolated) then
           row = state_row(time, new_f, sigma_f, iterations, substeps)
-          row%separation(1:n) = 2.0_dp * point_s(new_f, n) - point_s(new_c, n)
+          row%separation(1:n) = 2.0_dp * point_vector(new_f%s, new_f%s_t2, n) - &
+                                point_vector(new_c%s, new_c%s_t2, n)
           row%traction(1:n) = 2.0_dp * sigma_f - sigma_c
         else
           row = state_row(time, new_c, sigma_c, iterations, substeps)
@@ -183,7 +184,7 @@ contains
     integer, intent(in) :: iterations, substeps
     type(history_row_t) :: row
     row%time = time
-    row%separation(1:size(sigma)) = point_s(new, size(sigma))
+    row%separation(1:size(sigma)) = point_vector(new%s, new%s_t2, size(sigma))
     row%traction(1:size(sigma)) = sigma
     row%sf_strike = new%sf_strike
     row%tauf_strike = new%tauf_strike

@@ -19,7 +19,7 @@ module interlock_step_solver
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   implicit none
   private
-  public :: control_t, solve_step, point_s
+  public :: control_t, solve_step, point_vector
 
   !> The names of the components in messages: 2D (N, T) and 3D (N, T1, T2).
   character(len=8), parameter :: traction_names(2) = [character(len=8) :: 'sigma_N', 'sigma_T']
@@ -68,14 +68,15 @@ contains
     state%sigma_t2 = 0.0_dp
   end function initial_3d
 
-  !> The separation of a point with n components: (s_N, s_T) or (s_N, s_T1, s_T2).
-  pure function point_s(state, n) result(s)
-    type(interlock_state_3d_t), intent(in) :: state
+  !> The separation or the traction of a point with n components from its in-plane pair and
+  !> its T2 component: (N, T) or (N, T1, T2).
+  pure function point_vector(pair, t2, n) result(v)
+    real(dp), intent(in) :: pair(2), t2
     integer, intent(in) :: n
-    real(dp) :: s(n)
-    s(1:2) = state%s
-    if (n == 3) s(3) = state%s_t2
-  end function point_s
+    real(dp) :: v(n)
+    v(1:2) = pair
+    if (n == 3) v(3) = t2
+  end function point_vector
 
   !> The update of a point with n = size(s) components: interlock_update (2D, the 2D part of
   !> the states) or interlock_update_3d.
@@ -153,7 +154,7 @@ contains
     max_attempts = 4 * (ctl%max_cuts + 1) * (ctl%max_cuts + 2)
     stat = status_ok
     message = ''
-    sigma = point_sigma(old, ctl%n)
+    sigma = point_vector(old%sigma, old%sigma_t2, ctl%n)
     do while (f < 1.0_dp)
       attempts = attempts + 1
       if (attempts > max_attempts) then
@@ -188,21 +189,12 @@ contains
     end do
     if (stat == status_ok) then
       new = cur
-      sigma = point_sigma(cur, ctl%n)
+      sigma = point_vector(cur%sigma, cur%sigma_t2, ctl%n)
     else
       new = old
-      sigma = point_sigma(old, ctl%n)
+      sigma = point_vector(old%sigma, old%sigma_t2, ctl%n)
     end if
   end subroutine solve_step_3d
-
-  !> The traction of a point with n components.
-  pure function point_sigma(state, n) result(sigma)
-    type(interlock_state_3d_t), intent(in) :: state
-    integer, intent(in) :: n
-    real(dp) :: sigma(n)
-    sigma(1:2) = state%sigma
-    if (n == 3) sigma(3) = state%sigma_t2
-  end function point_sigma
 
   !> "sigma_N = 0.01 MPa", "sigma_N = -2 MPa, sigma_T = 0.3 MPa", or the prescribed separations
   !> when no component is traction-driven: the values a (sub-)step is to reach.
@@ -254,7 +246,7 @@ contains
     integer :: i, n, driven(ctl%n), m
 
     n = ctl%n
-    s = point_s(old, n)
+    s = point_vector(old%s, old%s_t2, n)
     m = 0
     do i = 1, n
       if (ctl%traction(i)) then
