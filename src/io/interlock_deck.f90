@@ -19,7 +19,8 @@ module interlock_deck
       prop_max_dtheta, prop_tangent, prop_effect_damage, prop_effect_wear, is_nan_value, same_value, &
       is_infinite_value, prop_ria, prop_n_azimuths, ria_paper, &
       status_ok, status_bad_input
-  use interlock_mixed_control, only: control_t, arc_t
+  use interlock_step_solver, only: control_t
+  use interlock_path, only: arc_t, path_points
   use interlock_files, only: path_kind, path_absent, path_folder, path_other
   use interlock_deck_text, only: group_scan_t, scan_deck, probe_text, value_text, lower
   use interlock_deck_checks
@@ -28,7 +29,7 @@ module interlock_deck
   implicit none
   private
   public :: deck_t, read_deck, deck_case, deck_n_cases, deck_groups, deck_set_property, &
-            deck_loading, sweep_slip_angle, deck_ria_name, case_n_azimuths, path_points
+            deck_loading, sweep_slip_angle, deck_ria_name, case_n_azimuths
   public :: max_points, max_sweep_values, max_total_steps, max_deck_bytes
   public :: n_datasets, history_datasets, curves_datasets, datasets_text, dataset_index
 
@@ -544,60 +545,6 @@ contains
       if (allocated(deck%arcs)) arcs = deck%arcs
     end if
   end subroutine deck_loading
-
-  !> The points of a path in the (T1, T2) plane (docs/deck-format.md): the origin at time 0; the
-  !> normal component from 0 to `normal` at zero slip by time 1 (the preload, SPEC D8); then the
-  !> path at that normal value, turned by angle_deg from t1, with time = 1 + the slip length.
-  !> straight: one leg of length `size`; square: 0 -> (a, 0) -> (a, a) -> (0, a) -> 0 with
-  !> a = `size`; circle: out to (r, 0), r = `size`, then `turns` counter-clockwise turns about
-  !> the origin (one arc). legs: the segments after the preload.
-  pure subroutine path_points(path, angle_deg, size_mm, turns, normal, times, values, arcs)
-    character(len=*), intent(in) :: path
-    real(dp), intent(in) :: angle_deg, size_mm, turns, normal
-    real(dp), allocatable, intent(out) :: times(:), values(:, :)
-    type(arc_t), allocatable, intent(out) :: arcs(:)
-    real(dp), allocatable :: local(:, :)
-    real(dp) :: c, s, angle
-    integer :: m, k
-    angle = angle_deg * deg_to_rad
-    c = 1.0_dp
-    s = 0.0_dp
-    ! A direction along t1 to the bit (cos and sin of 0 are exact; of pi/2 they are not).
-    if (.not. same_value(angle_deg, 0.0_dp)) then
-      c = cos(angle)
-      s = sin(angle)
-    end if
-    select case (trim(path))
-    case ('straight')
-      local = reshape([0.0_dp, 0.0_dp, size_mm, 0.0_dp], [2, 2])
-    case ('square')
-      local = reshape([0.0_dp, 0.0_dp, size_mm, 0.0_dp, size_mm, size_mm, 0.0_dp, size_mm, &
-                       0.0_dp, 0.0_dp], [2, 5])
-    case default
-      local = reshape([0.0_dp, 0.0_dp, size_mm, 0.0_dp, size_mm, 0.0_dp], [2, 3])
-    end select
-    m = size(local, 2) + 1
-    allocate (times(m), values(3, m), arcs(m - 1))
-    values(:, 1) = 0.0_dp
-    times(1) = 0.0_dp
-    do k = 2, m
-      values(1, k) = normal
-      values(2, k) = c * local(1, k - 1) - s * local(2, k - 1)
-      values(3, k) = s * local(1, k - 1) + c * local(2, k - 1)
-    end do
-    times(2) = 1.0_dp
-    do k = 3, m
-      times(k) = times(k - 1) + hypot(values(2, k) - values(2, k - 1), values(3, k) - values(3, k - 1))
-    end do
-    if (trim(path) == 'circle') then
-      arcs(3)%sweep = 2.0_dp * pi * turns
-      arcs(3)%angle0 = angle
-      arcs(3)%radius = size_mm
-      arcs(3)%center = 0.0_dp
-      values(2:3, 4) = size_mm * [cos(angle + arcs(3)%sweep), sin(angle + arcs(3)%sweep)]
-      times(4) = times(3) + abs(arcs(3)%sweep) * size_mm
-    end if
-  end subroutine path_points
 
   !> The kind of the RIA of case `icase` (SPEC section 9): 'paper', 'azimuthal' or 'general'.
   pure function deck_ria_name(deck, icase) result(name)
