@@ -3,7 +3,7 @@
   shear      scene a at np 2: every layer point's traction (N, T1, T2) and dilation s_N equal
              interlock-history's on the matching deck (examples/dealii/direct_shear_45.nml)
              to 1e-6 [MPa, mm], the slip is the platen's, the joint uniform
-  partition  scene b0 (the joint between elastic blocks, cut-backs on) at np 1, 2 and 4: the
+  partition  scene block (the joint between elastic blocks, cut-backs on) at np 1, 2 and 4: the
              same substeps and Newton iterations per increment, every column of the curve
              within 1e-9 of its largest value
   restart    the same scene stopped after increment K and restarted from its checkpoint, on
@@ -36,8 +36,8 @@ def run_example(args, np_, work, *settings):
     """Runs the example on np_ processes in work; returns the curve as a dict of arrays."""
     os.makedirs(work, exist_ok=True)
     command = [args.mpiexec, "-n", str(np_)]
-    if "Open MPI" in subprocess.run([args.mpiexec, "--version"], capture_output=True,
-                                    text=True).stdout:
+    version = subprocess.run([args.mpiexec, "--version"], capture_output=True, text=True)
+    if "open-mpi" in (version.stdout + version.stderr).lower().replace("openrte", "open-mpi"):
         command.append("--oversubscribe")  # np 4 on a 2-core machine
     command += [args.example, "output_dir=" + work] + list(settings)
     print("$ " + " ".join(command), flush=True)
