@@ -5,7 +5,7 @@
              to 1e-6 [MPa, mm], the slip is the platen's, the joint uniform
   partition  scene block (the joint between elastic blocks, cut-backs on) at np 1, 2 and 4: the
              same substeps and Newton iterations per increment, every column of the curve
-             within 1e-9 of its largest value
+             within 1e-9 of its largest value; the VTU/PVTU output, one piece per process
   restart    the same scene stopped after increment K and restarted from its checkpoint, on
              the same number of processes (to 1e-12 of each column's largest value) and on
              another (the quadrature-point state repartitioned with its cells; to 1e-9)
@@ -102,9 +102,27 @@ def block_settings():
     return ["scene=block"]
 
 
+def check_vtu(work, increment, n_processes):
+    """The PVTU record of an increment names one VTU piece per process; each piece is
+    well-formed XML with the displacement and the layer's damage, slip and dilation."""
+    import xml.etree.ElementTree as ET
+    record = os.path.join(work, f"joint_{increment:04d}.pvtu")
+    pieces = [p.get("Source") for p in ET.parse(record).getroot().iter("Piece")]
+    check(len(pieces) == n_processes, f"{record}: {len(pieces)} pieces for {n_processes} processes")
+    for piece in pieces:
+        root = ET.parse(os.path.join(work, piece)).getroot()
+        names = {a.get("Name") for a in root.iter("DataArray")}
+        points = sum(int(p.get("NumberOfPoints")) for p in root.iter("Piece"))
+        check(points > 0 and {"displacement", "damage", "slip", "dilation"} <= names,
+              f"{piece}: {points} points, arrays {sorted(n for n in names if n)}")
+
+
 def case_partition(args):
-    curves = {n: run_example(args, n, os.path.join(args.work, f"np{n}"), *block_settings())
+    curves = {n: run_example(args, n, os.path.join(args.work, f"np{n}"), *block_settings(),
+                             "vtu_every=10")
               for n in (1, 2, 4)}
+    for n in (1, 2, 4):
+        check_vtu(os.path.join(args.work, f"np{n}"), 20, n)
     c1 = curves[1]
     check(np.max(c1["substeps"]) > 1, "the scene cuts increments back "
           f"(up to {int(np.max(c1['substeps']))} substeps)")
