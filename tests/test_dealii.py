@@ -41,7 +41,10 @@ def run_example(args, np_, work, *settings):
         command.append("--oversubscribe")  # np 4 on a 2-core machine
     command += [args.example, "output_dir=" + work] + list(settings)
     print("$ " + " ".join(command), flush=True)
-    result = subprocess.run(command, capture_output=True, text=True, timeout=1200)
+    # One BLAS thread per process: a threaded BLAS inside MUMPS sums in an order that varies
+    # between runs (6e-11 of the curve measured), and a restart is compared bit for bit.
+    env = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1")
+    result = subprocess.run(command, capture_output=True, text=True, timeout=1200, env=env)
     sys.stdout.write(result.stdout)
     sys.stderr.write(result.stderr)
     if result.returncode != 0:

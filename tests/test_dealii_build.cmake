@@ -2,13 +2,7 @@
 # scratch prefix, then configure and build examples/dealii against it, as a user would.
 # cmake -DBUILD_DIR= -DPREFIX= -DSOURCE= -DBINARY= -DGENERATOR= -DDEAL_II_DIR= -P test_dealii_build.cmake
 file(REMOVE_RECURSE ${PREFIX})
-function(run)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  message("$ ${ARGN}\n${out}${err}")
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "failed (${rc})")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/interlock_run.cmake)
 run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${PREFIX} --config Release)
 run(${CMAKE_COMMAND} -S ${SOURCE} -B ${BINARY} -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release
     -DCMAKE_PREFIX_PATH=${PREFIX} -DDEAL_II_DIR=${DEAL_II_DIR})

@@ -3,13 +3,7 @@
 # cmake -DBUILD_DIR= -DCONFIG= -DPREFIX= -DCONSUMER_SOURCE= -DCONSUMER_BUILD= -DGENERATOR= -DFC=
 #       -P test_umat_install.cmake
 file(REMOVE_RECURSE ${PREFIX} ${CONSUMER_BUILD})
-function(run)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  message("$ ${ARGN}\n${out}${err}")
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "failed (${rc})")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/interlock_run.cmake)
 if(NOT CONFIG)
   set(CONFIG Release)
 endif()

@@ -57,6 +57,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <ctime>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -98,6 +99,7 @@ namespace interlock_dealii
     int          checkpoint_after = -1;   // save a checkpoint after increment k and stop
     bool         restart          = false; // continue from output_dir's checkpoint
     unsigned int max_iterations   = 25;
+    unsigned int verbose          = 0;    // 1: every Newton iteration's residual and cut
     double       tolerance        = 1e-10; // residual / (|sigma_N| A)
 
     void
@@ -129,65 +131,57 @@ namespace interlock_dealii
       }
     else if (scene == "block")
       {
-        // The joint between elastic rock blocks with free sides: a non-uniform joint.
-        n_xy    = 3;
+        // The joint between elastic rock blocks with free sides: a non-uniform joint. With
+        // 4 x 4 cells the platen's dof is not locally relevant on every process at np 2 and 4.
+        n_xy    = 4;
         n_block = 1;
         n_slip  = 20;
       }
     else
       throw std::invalid_argument("scene = '" + scene + "': admissible shear or block");
+    const std::map<std::string, double *> reals = {
+      {"length", &length},   {"layer", &layer},       {"block", &block},
+      {"e_block", &e_block}, {"nu_block", &nu_block}, {"e_other", &e_other},
+      {"normal", &normal},   {"slip", &slip},         {"angle_deg", &angle_deg},
+      {"tolerance", &tolerance}};
+    const std::map<std::string, unsigned int *> counts = {
+      {"n_xy", &n_xy},           {"n_block", &n_block},     {"refine", &refine},
+      {"n_slip", &n_slip},       {"vtu_every", &vtu_every}, {"max_iterations", &max_iterations},
+      {"verbose", &verbose}};
+    const std::map<std::string, bool *>        flags = {{"accuracy_cuts", &accuracy_cuts},
+                                                        {"restart", &restart}};
+    const std::map<std::string, std::string *> texts = {{"solver", &solver},
+                                                        {"output_dir", &output_dir},
+                                                        {"curve", &curve}};
     for (const auto &kv : given)
       {
         const std::string &k = kv.first, &v = kv.second;
-        auto               u = [&]() { return static_cast<unsigned int>(std::stoul(v)); };
-        if (k == "scene")
-          continue;
-        else if (k == "n_xy")
-          n_xy = u();
-        else if (k == "n_block")
-          n_block = u();
-        else if (k == "refine")
-          refine = u();
-        else if (k == "length")
-          length = std::stod(v);
-        else if (k == "layer")
-          layer = std::stod(v);
-        else if (k == "block")
-          block = std::stod(v);
-        else if (k == "e_block")
-          e_block = std::stod(v);
-        else if (k == "nu_block")
-          nu_block = std::stod(v);
-        else if (k == "e_other")
-          e_other = std::stod(v);
-        else if (k == "normal")
-          normal = std::stod(v);
-        else if (k == "slip")
-          slip = std::stod(v);
-        else if (k == "angle_deg")
-          angle_deg = std::stod(v);
-        else if (k == "n_slip")
-          n_slip = u();
-        else if (k == "accuracy_cuts")
-          accuracy_cuts = (u() != 0);
-        else if (k == "solver")
-          solver = v;
-        else if (k == "output_dir")
-          output_dir = v;
-        else if (k == "curve")
-          curve = v;
-        else if (k == "vtu_every")
-          vtu_every = u();
-        else if (k == "checkpoint_after")
-          checkpoint_after = std::stoi(v);
-        else if (k == "restart")
-          restart = (u() != 0);
-        else if (k == "max_iterations")
-          max_iterations = u();
-        else if (k == "tolerance")
-          tolerance = std::stod(v);
-        else
-          throw std::invalid_argument("unknown setting '" + k + "'");
+        try
+          {
+            size_t used = v.size();
+            if (k == "scene")
+              continue;
+            else if (reals.count(k))
+              *reals.at(k) = std::stod(v, &used);
+            else if (counts.count(k))
+              *counts.at(k) = static_cast<unsigned int>(std::stoul(v, &used));
+            else if (flags.count(k))
+              *flags.at(k) = (std::stoi(v, &used) != 0);
+            else if (texts.count(k))
+              *texts.at(k) = v;
+            else if (k == "checkpoint_after")
+              checkpoint_after = std::stoi(v, &used);
+            else
+              throw std::invalid_argument("unknown setting '" + k + "'");
+            if (used != v.size())
+              throw std::invalid_argument("");
+          }
+        catch (const std::logic_error &e) // stod and friends: invalid_argument, out_of_range
+          {
+            if (std::string(e.what()).rfind("unknown setting", 0) == 0)
+              throw;
+            throw std::invalid_argument("setting " + k + " = '" + v + "' is not a valid value");
+          }
       }
     if (solver != "mumps" && solver != "gmres")
       throw std::invalid_argument("solver = '" + solver + "': admissible mumps or gmres");
@@ -230,12 +224,20 @@ namespace interlock_dealii
     return {m, interlock_material_free};
   }
 
-  // Wall-clock seconds spent in each part of the Newton iterations.
+  // Seconds spent in each part of the Newton iterations: wall clock, and the process's CPU
+  // time (what a loaded machine does not inflate; it counts an MPI wait that spins).
   struct Cost
   {
     double       law = 0, assembly = 0, solve = 0;
+    double       law_cpu = 0, assembly_cpu = 0, solve_cpu = 0;
     unsigned int iterations = 0;
   };
+
+  inline double
+  cpu_seconds()
+  {
+    return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
+  }
 
   class JointProblem
   {
@@ -417,9 +419,14 @@ namespace interlock_dealii
         }
     constraints.close();
 
-    DynamicSparsityPattern dsp(relevant_dofs);
+    // The platen's row couples to every top-face dof of every process (the ties condense into
+    // it): each process keeps its share of that row, even where the platen's dof is not
+    // locally relevant, and hands it to the owner.
+    IndexSet rows = relevant_dofs;
+    rows.add_index(platen_dof);
+    DynamicSparsityPattern dsp(rows);
     DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-    SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, comm, relevant_dofs);
+    SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, comm, rows);
     matrix.reinit(owned_dofs, owned_dofs, dsp, comm);
     solution.reinit(owned_dofs, comm);
     rhs.reinit(owned_dofs, comm);
@@ -477,6 +484,7 @@ namespace interlock_dealii
   JointProblem::assemble(Cost &cost, double &min_fraction)
   {
     const auto         t0 = Clock::now();
+    const double       c0 = cpu_seconds();
     const unsigned int nq = quadrature.size(), nd = fe.n_dofs_per_cell();
     const double       h  = settings.layer;
     FEValues<dim>      fv(fe, quadrature, update_gradients | update_JxW_values);
@@ -513,13 +521,16 @@ namespace interlock_dealii
                         batch_old.begin() + state_size * p);
             }
         }
-    const auto t1 = Clock::now();
+    const auto   t1 = Clock::now();
+    const double c1 = cpu_seconds();
     // 2. The law.
     const size_t failed =
       interlock_update(material.get(), n, batch_separation.data(), batch_old.data(),
                        batch_new.data(), batch_traction.data(), batch_tangent.data(),
                        batch_status.data(), batch_fraction.data());
-    const auto t2 = Clock::now();
+    const auto   t2 = Clock::now();
+    const double c2 = cpu_seconds();
+    cost.law_cpu += c2 - c1;
     min_fraction  = 1.0;
     for (size_t i = 0; i < n; ++i)
       min_fraction = std::min(min_fraction, batch_fraction[i]);
@@ -540,6 +551,7 @@ namespace interlock_dealii
             }
         cost.law += std::chrono::duration<double>(t2 - t1).count();
         cost.assembly += std::chrono::duration<double>(t1 - t0).count();
+        cost.assembly_cpu += c1 - c0;
         return false;
       }
 
@@ -642,6 +654,7 @@ namespace interlock_dealii
     matrix.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);
     const auto t3 = Clock::now();
+    cost.assembly_cpu += (c1 - c0) + (cpu_seconds() - c2);
     cost.law += std::chrono::duration<double>(t2 - t1).count();
     cost.assembly += std::chrono::duration<double>((t1 - t0) + (t3 - t2)).count();
     return true;
@@ -653,6 +666,7 @@ namespace interlock_dealii
   JointProblem::solve(Cost &cost)
   {
     const auto                 t0 = Clock::now();
+    const double               c0 = cpu_seconds();
     PETScWrappers::MPI::Vector du(owned_dofs, comm);
     if (settings.solver == "mumps")
       {
@@ -672,6 +686,7 @@ namespace interlock_dealii
     constraints.distribute(du);
     solution += du;
     cost.solve += std::chrono::duration<double>(Clock::now() - t0).count();
+    cost.solve_cpu += cpu_seconds() - c0;
   }
 
   // Newton on the increment whose end is already in the platen's values. False when a point
@@ -686,6 +701,9 @@ namespace interlock_dealii
         if (!assemble(cost, min_fraction))
           return false;
         const double r = rhs.l2_norm();
+        if (settings.verbose > 0)
+          pcout << "    iteration " << it << ": residual " << r / force_scale
+                << ", smallest step fraction " << min_fraction << std::endl;
         if (!std::isfinite(r))
           return false;
         if (r <= settings.tolerance * force_scale)
@@ -946,12 +964,18 @@ namespace interlock_dealii
             set_platen(t_new);
             double     fraction   = 1;
             const bool converged  = newton(cost, iterations, fraction);
-            if (!converged || fraction < 1)
+            // A converged iterate whose points ask for a cut is accepted all the same once the
+            // step cannot be cut further (the request is about accuracy, not failure).
+            const double cut = converged ? std::max(fraction, 0.01) : std::min(fraction, 0.5);
+            if (!converged || (fraction < 1 && dt * cut >= dt_min))
               {
                 if (!(fraction > 0))
                   throw std::runtime_error("a layer point refuses its input");
+                if (settings.verbose > 0)
+                  pcout << "    cut back by " << cut << " at t = " << t_new
+                        << (converged ? " (a point asks for it)" : " (no convergence)")
+                        << std::endl;
                 solution = last;
-                const double cut = converged ? std::max(fraction, 0.01) : std::min(fraction, 0.5);
                 if (dt * cut < dt_min)
                   throw std::runtime_error("increment " + std::to_string(increment) +
                                            ": the step would fall below " +
@@ -989,17 +1013,22 @@ namespace interlock_dealii
           throw std::runtime_error("cannot write the curve");
       }
     // The cost split per Newton iteration, the slowest process's; the memory per interface
-    // point: its state in the cell storage and its share of the batch.
+    // point: its state in the cell storage (with the storage's pointer, its control block and
+    // the vector's header) and its share of the batch (old and new state, separation,
+    // traction, tangent, step fraction, status).
     const unsigned int its = std::max(1u, cost.iterations);
     const double       bytes =
-      sizeof(double) * (2.0 * state_size + 3 + 3 + 9 + 1) + sizeof(int) + sizeof(PointState) +
+      sizeof(double) * (3.0 * state_size + 3 + 3 + 9 + 1) + sizeof(int) + sizeof(PointState) +
       sizeof(std::shared_ptr<PointState>) + 2 * sizeof(void *);
     pcout << std::setprecision(4) << "cost: processes " << Utilities::MPI::n_mpi_processes(comm)
           << " points " << n_points << " dofs " << dof_handler.n_dofs() << " iterations "
           << cost.iterations << " law_s "
           << Utilities::MPI::max(cost.law, comm) / its << " assembly_s "
           << Utilities::MPI::max(cost.assembly, comm) / its << " solve_s "
-          << Utilities::MPI::max(cost.solve, comm) / its << " wall_s " << wall
+          << Utilities::MPI::max(cost.solve, comm) / its << " law_cpu_s "
+          << Utilities::MPI::max(cost.law_cpu, comm) / its << " assembly_cpu_s "
+          << Utilities::MPI::max(cost.assembly_cpu, comm) / its << " solve_cpu_s "
+          << Utilities::MPI::max(cost.solve_cpu, comm) / its << " wall_s " << wall
           << " bytes_per_point " << bytes << std::endl;
   }
 } // namespace interlock_dealii
