@@ -309,6 +309,10 @@ namespace interlock_dealii
     types::global_dof_index           platen_dof = 0; // the platen's normal displacement
     PETScWrappers::MPI::SparseMatrix  matrix;
     PETScWrappers::MPI::Vector        solution, ghosted, rhs;
+    // The solution before the last accepted substep of the slip phase and that substep's
+    // length: the predictor of the next substep (0: none).
+    PETScWrappers::MPI::Vector        previous;
+    double                            dt_previous = 0;
 
     CellDataStorage<typename Triangulation<dim>::cell_iterator, PointState> storage;
 
@@ -429,6 +433,7 @@ namespace interlock_dealii
     SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, comm, rows);
     matrix.reinit(owned_dofs, owned_dofs, dsp, comm);
     solution.reinit(owned_dofs, comm);
+    previous.reinit(owned_dofs, comm);
     rhs.reinit(owned_dofs, comm);
     ghosted.reinit(owned_dofs, relevant_dofs, comm);
   }
@@ -840,7 +845,10 @@ namespace interlock_dealii
     ghosted = solution;
     parallel::distributed::SolutionTransfer<dim, PETScWrappers::MPI::Vector> transfer(
       dof_handler);
-    transfer.prepare_for_serialization(ghosted);
+    PETScWrappers::MPI::Vector ghosted_previous(owned_dofs, relevant_dofs, comm);
+    ghosted_previous = previous;
+    transfer.prepare_for_serialization(
+      std::vector<const PETScWrappers::MPI::Vector *>{&ghosted, &ghosted_previous});
     const unsigned int nq = quadrature.size();
     triangulation.register_data_attach(
       [this, nq](const typename Triangulation<dim>::cell_iterator &cell,
@@ -862,7 +870,7 @@ namespace interlock_dealii
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
         std::ofstream f(settings.output_dir + "/checkpoint.txt");
-        f << increment << ' ' << std::setprecision(17) << t << '\n';
+        f << increment << ' ' << std::setprecision(17) << t << ' ' << dt_previous << '\n';
         for (const auto &r : curve_rows)
           f << r << '\n';
         if (!f)
@@ -875,7 +883,7 @@ namespace interlock_dealii
   {
     std::ifstream f(settings.output_dir + "/checkpoint.txt");
     unsigned int  increment = 0;
-    if (!(f >> increment >> t))
+    if (!(f >> increment >> t >> dt_previous))
       throw std::runtime_error("no checkpoint in " + settings.output_dir);
     std::string line;
     std::getline(f, line);
@@ -887,7 +895,8 @@ namespace interlock_dealii
     setup_system();
     parallel::distributed::SolutionTransfer<dim, PETScWrappers::MPI::Vector> transfer(
       dof_handler);
-    transfer.deserialize(solution);
+    std::vector<PETScWrappers::MPI::Vector *> vectors{&solution, &previous};
+    transfer.deserialize(vectors);
     initialise_state();
     const unsigned int nq     = quadrature.size();
     const unsigned int handle = triangulation.register_data_attach(
@@ -960,6 +969,15 @@ namespace interlock_dealii
             dt                    = std::min(dt, t_end - t);
             const double t_new    = (t_end - t - dt <= 1e-12) ? t_end : t + dt;
             last                  = solution;
+            // In the slip phase the last substep's rate carries on: the layer's points start
+            // Newton off the state they converged to (where a point that slid sits on its
+            // friction cone to round-off, and its tangent would depend on the partition).
+            if (dt_previous > 0 && t - dt_previous >= 1.0 - 1e-12)
+              {
+                PETScWrappers::MPI::Vector rate = last;
+                rate -= previous;
+                solution.add((t_new - t) / dt_previous, rate);
+              }
             current_normal        = settings.normal * normal_factor(t_new);
             set_platen(t_new);
             double     fraction   = 1;
@@ -984,7 +1002,9 @@ namespace interlock_dealii
                 continue;
               }
             commit_state();
-            t = t_new;
+            previous    = last;
+            dt_previous = t_new - t;
+            t           = t_new;
             ++substeps;
             dt *= 2;
           }
