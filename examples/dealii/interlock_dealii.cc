@@ -728,8 +728,7 @@ namespace interlock_dealii
   void
   JointProblem::commit_state()
   {
-    const unsigned int nq = quadrature.size();
-    size_t             p  = 0;
+    size_t p = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned() && in_layer(cell))
         for (auto &d : storage.get_data(cell))
@@ -738,7 +737,6 @@ namespace interlock_dealii
                       batch_new.begin() + state_size * (p + 1), d->committed.begin());
             ++p;
           }
-    (void)nq;
   }
 
   // One row of the curve: the platen's displacement, the layer's mean separation and traction
