@@ -28,18 +28,6 @@ add_test(NAME core_layers
   COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_layers.py ${PROJECT_SOURCE_DIR})
 set_tests_properties(core_layers PROPERTIES LABELS core)
 
-# The docs cite only what exists: every CTest name (against this tree's tests), path, CMake
-# option, program and program option that README.md and docs/*.md name.
-# The areas this configuration leaves out are named, so that their tests are not looked for.
-set(docs_unconfigured_areas)
-if(NOT INTERLOCK_CCX)
-  list(APPEND docs_unconfigured_areas calculix)
-endif()
-add_test(NAME core_docs
-  COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_docs.py ${PROJECT_SOURCE_DIR}
-          ${PROJECT_BINARY_DIR} ${CMAKE_CTEST_COMMAND} ${docs_unconfigured_areas})
-set_tests_properties(core_docs PROPERTIES LABELS core)
-
 # The README's example, built and run (examples/).
 interlock_add_suite(core_readme_example core ${PROJECT_SOURCE_DIR}/examples/readme_example.f90)
 
