@@ -298,7 +298,7 @@ contains
     real(dp), intent(in) :: statev(umat_nstatv)
     type(interlock_material_t), intent(in) :: mat
     real(dp) :: lo(umat_nstatv), hi(umat_nstatv), theta_lo, theta_hi
-    integer :: i, k
+    integer :: i
     logical :: ok
     bad = 0
     if (.not. is_finite_bits(statev(slot_flag))) then
@@ -322,13 +322,21 @@ contains
         exit
       end if
     end do
-    if (ok .and. mat%prefractured) ok = &
-      all(statev(slot_damage + 1:slot_damage + umat_planes) >= 1.0_dp) .and. &
-      all(statev(slot_beta + 1:slot_beta + umat_planes) >= mat%beta_break)
+    ! The bounds the material narrows, as the rows say (unrolled: slot_bound a constant per
+    ! slot, so that only the slots with such a bound are compared; plane k of a per-plane slot
+    ! i <= n_statevars_per_plane * umat_planes is mod(i - 1, umat_planes) + 1).
     if (ok) then
-      do k = 1, umat_planes
-        call angle_range(mat, k, theta_lo, theta_hi)
-        ok = ok .and. statev(slot_theta + k) >= theta_lo .and. statev(slot_theta + k) <= theta_hi
+      !GCC$ unroll 22
+      do i = 1, umat_nstatv
+        select case (slot_bound(i))
+        case (bound_broken)
+          if (mat%prefractured) ok = ok .and. statev(i) >= 1.0_dp
+        case (bound_broken_history)
+          if (mat%prefractured) ok = ok .and. statev(i) >= mat%beta_break
+        case (bound_plane_angle)
+          call angle_range(mat, mod(i - 1, umat_planes) + 1, theta_lo, theta_hi)
+          ok = ok .and. statev(i) >= theta_lo .and. statev(i) <= theta_hi
+        end select
       end do
       if (ok) return
     end if
