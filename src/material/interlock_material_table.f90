@@ -1,8 +1,9 @@
 !> The single source of truth for the material description (in the spirit of an MFront
 !> `.mfront` file): every property (name, symbol, unit, default, admissible range, deck group,
-!> one-line description) and every state variable. The UMAT's PROPS and STATEV layouts, the
-!> validation messages, the names used by decks and HDF5 files, `interlock-query` and
-!> `docs/material.md` are all generated from these two tables.
+!> one-line description) and every state variable (name, unit, admissible range and how the
+!> material narrows it, description). The UMAT's PROPS and STATEV layouts and checks, the
+!> validation messages, the names used by decks and HDF5 files, `interlock-query`, the C API's
+!> descriptions and `docs/material.md` are all generated from these two tables.
 module interlock_material_table
   use, intrinsic :: iso_fortran_env, only: int64
   use interlock_kinds, only: dp, infinite_threshold, exponent_bits
