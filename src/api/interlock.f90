@@ -23,7 +23,8 @@ module interlock
   use interlock_props, only: props_to_material, props_n_to_material, statev_to_state, &
       state_to_statev, umat_controls_t, &
       statev_bounds, statev_bad_index, statev_message, state_bound, props_n_to_material_3d, props_n_planes_3d, &
-      statev_bad_index_3d, statev_message_3d, statev_to_state_3d, state_to_statev_3d
+      statev_bad_index_3d, statev_message_3d, statev_to_state_3d, state_to_statev_3d, statev_range, &
+      statev_variable
   use interlock_host_tangent, only: interlock_symmetric_tangent, interlock_symmetric_tangent_3d
   use interlock_version, only: interlock_version_string
   use interlock_replay, only: interlock_write_replay_deck

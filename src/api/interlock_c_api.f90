@@ -34,7 +34,7 @@ module interlock_c_api
   use interlock_props, only: umat_controls_t, state_bound, props_n_to_material, &
       props_n_to_material_3d, nprops_message, statev_bad_index, statev_message, &
       statev_bad_index_3d, statev_message_3d, statev_to_state, state_to_statev, &
-      statev_to_state_3d, state_to_statev_3d, statev_bounds, statev_bounds_3d, statev_variable
+      statev_to_state_3d, state_to_statev_3d, statev_range, statev_variable
   use interlock_host_tangent, only: interlock_symmetric_tangent, interlock_symmetric_tangent_3d
   use interlock_step_control, only: step_fraction, step_fraction_3d, pnewdt_local_failure, &
       pnewdt_diverged, separation_bits, state_bits
@@ -555,7 +555,7 @@ contains
     integer(c_int), value :: i
     integer(c_size_t), value :: name_len_c, unit_len_c
     type(c_material_t), pointer :: h
-    real(dp) :: lows(max_state_size), highs(max_state_size)
+    real(dp) :: low, high
     type(statevar_t) :: row
     character(len=*), parameter :: components_2d(2) = ['n ', 't '], &
                                    components_3d(3) = ['n ', 't1', 't2']
@@ -569,17 +569,16 @@ contains
     if (slot <= h%nstatv) then
       if (h%dim == 2) then
         call statev_variable(slot, umat_planes, ivar, k)
-        call statev_bounds(h%mat, lows(1:h%nstatv), highs(1:h%nstatv))
       else
         call statev_variable(slot, h%mat%n_planes, ivar, k)
-        call statev_bounds_3d(h%mat, lows(1:h%nstatv), highs(1:h%nstatv))
       end if
+      call statev_range(h%mat, ivar, k, low, high)
       row = statevar_3d(ivar)
       call copy_text(row%name, name, name_len_c)
       call copy_text(row%unit, unit, unit_len_c)
       call put_int(plane, k)
-      call put_real(lo, lows(slot))
-      call put_real(hi, highs(slot))
+      call put_real(lo, low)
+      call put_real(hi, high)
     else
       j = slot - h%nstatv
       if (h%dim == 2) then

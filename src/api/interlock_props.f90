@@ -14,7 +14,9 @@ module interlock_props
       ria_azimuthal, property_ok, umat_nstatv_3d, statevar_index_3d, statevar_3d, &
       n_statevars_global, sv_frictional_slip_strike, sv_friction_traction_strike, &
       sv_damage, sv_beta, sv_frictional_slip, sv_zeta, sv_theta, sv_friction_traction, &
-      sv_work, sv_damage_dissipation, sv_friction_dissipation, sv_initialized
+      sv_work, sv_damage_dissipation, sv_friction_dissipation, sv_initialized, statevars, &
+      n_statevars_strike, state_bound, bound_broken, bound_broken_history, bound_plane_angle, &
+      bound_flag
   use interlock_material, only: interlock_material_t, interlock_solver_t, &
       interlock_paper_material_derive, n_effects, interlock_azimuthal_ria, &
       interlock_material_derive
@@ -26,14 +28,7 @@ module interlock_props
   public :: props_to_material, props_n_to_material, statev_to_state, state_to_statev, umat_controls_t
   public :: statev_bounds, statev_bad_index, statev_message, state_bound
   public :: props_n_to_material_3d, props_n_planes_3d, statev_bad_index_3d, statev_message_3d, statev_to_state_3d, &
-            state_to_statev_3d, statev_bounds_3d, statev_variable, nprops_message
-
-  !> Largest magnitude admitted for a state variable that is not otherwise bounded (slips,
-  !> works, energies, friction tractions) and for the traction STRESS on entry: far beyond any
-  !> value the law reaches from separations within separation_bound (tractions <= 1e100 MPa,
-  !> works <= 1e110 N/mm for stiffnesses <= 1e90 MPa/mm), and far enough below overflow that
-  !> no product of the update with such a value overflows.
-  real(dp), parameter :: state_bound = 1.0e150_dp
+            state_to_statev_3d, statev_range, statev_variable, nprops_message
 
   ! The STATEV layout of interlock_material_table:statevar_index as constants, for the path
   ! every UMAT call takes: per-plane variable `v` of plane k in slot slot_v + k.
@@ -48,30 +43,27 @@ module interlock_props
                         slot_diss_damage = slot_global + sv_damage_dissipation, &
                         slot_diss_friction = slot_global + sv_friction_dissipation, &
                         slot_flag = slot_global + sv_initialized
-  !> The ranges of the STATEV slots that do not depend on the material (statev_bounds).
-  real(dp), parameter :: statev_lo(umat_nstatv) = [ &
-    [0.0_dp, 0.0_dp, 0.0_dp], [0.0_dp, 0.0_dp, 0.0_dp], [-state_bound, -state_bound, -state_bound], &
-    [0.0_dp, 0.0_dp, 0.0_dp], [0.0_dp, 0.0_dp, 0.0_dp], [-state_bound, -state_bound, -state_bound], &
-    [-state_bound, -state_bound, -state_bound], 0.0_dp]
-  real(dp), parameter :: statev_hi(umat_nstatv) = [ &
-    [1.0_dp, 1.0_dp, 1.0_dp], [state_bound, state_bound, state_bound], &
-    [state_bound, state_bound, state_bound], [state_bound, state_bound, state_bound], &
-    [0.0_dp, 0.0_dp, 0.0_dp], [state_bound, state_bound, state_bound], &
-    [state_bound, state_bound, state_bound], 1.0_dp]
+  !> The 2D STATEV layout's rows of the table, slot by slot (per-plane variables by variable,
+  !> then plane; then the point's): their bounds and how the material narrows them.
+  real(dp), parameter :: slot_lower(umat_nstatv) = [reshape(spread( &
+    statevars(1:n_statevars_per_plane)%lower, 1, umat_planes), [n_statevars_per_plane * umat_planes]), &
+    statevars(n_statevars_per_plane + 1:)%lower]
+  real(dp), parameter :: slot_upper(umat_nstatv) = [reshape(spread( &
+    statevars(1:n_statevars_per_plane)%upper, 1, umat_planes), [n_statevars_per_plane * umat_planes]), &
+    statevars(n_statevars_per_plane + 1:)%upper]
+  integer, parameter :: slot_bound(umat_nstatv) = [reshape(spread( &
+    statevars(1:n_statevars_per_plane)%bound, 1, umat_planes), [n_statevars_per_plane * umat_planes]), &
+    statevars(n_statevars_per_plane + 1:)%bound]
 
-  !> statev_lo and statev_hi as ordered keys (interlock_material_table:key_in_range), the angles
-  !> within +-state_bound (their ranges depend on the material: statev_bad_index compares them
-  !> after these), the flag 1 (statev_bad_index has taken the uninitialised STATEV before); a
-  !> lower bound 0 admits -0 (key -1), as the comparison -0 >= 0 does.
-  logical, parameter :: angle_slot(umat_nstatv) = [spread(.false., 1, slot_theta), &
-    spread(.true., 1, umat_planes), spread(.false., 1, umat_nstatv - slot_theta - umat_planes)]
-  logical, parameter :: flag_slot(umat_nstatv) = [spread(.false., 1, slot_flag - 1), &
-    spread(.true., 1, umat_nstatv - slot_flag + 1)]
+  !> The rows' bounds as ordered keys (interlock_material_table:key_in_range), for the check of
+  !> every UMAT call: the flag 1 (statev_bad_index has taken the uninitialised STATEV before);
+  !> the bounds the material narrows (pre-fractured, the angles) are compared after these, on
+  !> values then known finite. A lower bound 0 admits -0 (key -1), as the comparison -0 >= 0
+  !> does.
   real(dp), parameter :: statev_lo_fixed(umat_nstatv) = &
-    merge(-state_bound, merge(1.0_dp, statev_lo, flag_slot), angle_slot)
-  real(dp), parameter :: statev_hi_fixed(umat_nstatv) = merge(state_bound, statev_hi, angle_slot)
+    merge(1.0_dp, slot_lower, slot_bound == bound_flag)
   integer(int64), parameter :: lo_bits(umat_nstatv) = transfer(statev_lo_fixed, 0_int64, umat_nstatv)
-  integer(int64), parameter :: hi_bits(umat_nstatv) = transfer(statev_hi_fixed, 0_int64, umat_nstatv)
+  integer(int64), parameter :: hi_bits(umat_nstatv) = transfer(slot_upper, 0_int64, umat_nstatv)
   integer(int64), parameter :: statev_lo_key(umat_nstatv) = merge(-1_int64, &
     merge(lo_bits, ieor(lo_bits, huge(0_int64)), lo_bits >= 0), lo_bits == 0)
   integer(int64), parameter :: statev_hi_key(umat_nstatv) = &
@@ -246,24 +238,48 @@ contains
               format_integer(n_properties) // ' (see interlock-query --props)'
   end subroutine nprops_message
 
-  !> The admissible range of every STATEV slot for material `mat` (NaN lies in none): damage in
-  !> [0, 1] (exactly 1 when pre-fractured, with beta >= 1/(1 - eta)), beta and zeta >= 0, theta
-  !> between theta_f and theta_0 of its plane (4 ulps of slack for the rounding of the wear
-  !> law), the other values finite within +-state_bound, the flag 0 or 1.
+  !> The admissible range of STATEV(1:size(lo)) for material `mat` in the layout of its
+  !> planes (statevar_index_3d; the 2D layout for the paper's three planes), the strike
+  !> components included where size(lo) covers them: each slot's row (statevar_range).
   pure subroutine statev_bounds(mat, lo, hi)
     type(interlock_material_t), intent(in) :: mat
-    real(dp), intent(out) :: lo(umat_nstatv), hi(umat_nstatv)
-    integer :: k
-    lo = statev_lo
-    hi = statev_hi
-    if (mat%prefractured) then
-      lo(slot_damage + 1:slot_damage + umat_planes) = 1.0_dp
-      lo(slot_beta + 1:slot_beta + umat_planes) = mat%beta_break
-    end if
-    do k = 1, umat_planes
-      call angle_range(mat, k, lo(slot_theta + k), hi(slot_theta + k))
+    real(dp), intent(out) :: lo(:), hi(:)
+    integer :: ivar, k, n, n_vars, slot
+    n = mat%n_planes
+    n_vars = n_statevars_per_plane + n_statevars_global
+    if (size(lo) > n_statevars_per_plane * n + n_statevars_global) n_vars = n_vars + n_statevars_strike
+    do ivar = 1, n_vars
+      if (ivar <= n_statevars_per_plane .or. ivar > n_statevars_per_plane + n_statevars_global) then
+        do k = 1, n
+          slot = statevar_index_3d(ivar, k, n)
+          call statev_range(mat, ivar, k, lo(slot), hi(slot))
+        end do
+      else
+        slot = statevar_index_3d(ivar, 0, n)
+        call statev_range(mat, ivar, 0, lo(slot), hi(slot))
+      end if
     end do
   end subroutine statev_bounds
+
+  !> The admissible range of state variable ivar (statevar_3d) of plane k (0: of the point)
+  !> for material `mat`: its row's [lower, upper] narrowed as its `bound` says.
+  pure subroutine statev_range(mat, ivar, k, lo, hi)
+    type(interlock_material_t), intent(in) :: mat
+    integer, intent(in) :: ivar, k
+    real(dp), intent(out) :: lo, hi
+    type(statevar_t) :: row
+    row = statevar_3d(ivar)
+    lo = row%lower
+    hi = row%upper
+    select case (row%bound)
+    case (bound_broken)
+      if (mat%prefractured) lo = 1.0_dp
+    case (bound_broken_history)
+      if (mat%prefractured) lo = mat%beta_break
+    case (bound_plane_angle)
+      call angle_range(mat, k, lo, hi)
+    end select
+  end subroutine statev_range
 
   !> The range of the angle of plane k: between theta_f and theta_0, with 4 ulps of slack.
   pure subroutine angle_range(mat, k, lo, hi)
@@ -282,7 +298,7 @@ contains
     real(dp), intent(in) :: statev(umat_nstatv)
     type(interlock_material_t), intent(in) :: mat
     real(dp) :: lo(umat_nstatv), hi(umat_nstatv), theta_lo, theta_hi
-    integer :: i, k
+    integer :: i
     logical :: ok
     bad = 0
     if (.not. is_finite_bits(statev(slot_flag))) then
@@ -306,13 +322,21 @@ contains
         exit
       end if
     end do
-    if (ok .and. mat%prefractured) ok = &
-      all(statev(slot_damage + 1:slot_damage + umat_planes) >= 1.0_dp) .and. &
-      all(statev(slot_beta + 1:slot_beta + umat_planes) >= mat%beta_break)
+    ! The bounds the material narrows, as the rows say (unrolled: slot_bound a constant per
+    ! slot, so that only the slots with such a bound are compared; plane k of a per-plane slot
+    ! i <= n_statevars_per_plane * umat_planes is mod(i - 1, umat_planes) + 1).
     if (ok) then
-      do k = 1, umat_planes
-        call angle_range(mat, k, theta_lo, theta_hi)
-        ok = ok .and. statev(slot_theta + k) >= theta_lo .and. statev(slot_theta + k) <= theta_hi
+      !GCC$ unroll 22
+      do i = 1, umat_nstatv
+        select case (slot_bound(i))
+        case (bound_broken)
+          if (mat%prefractured) ok = ok .and. statev(i) >= 1.0_dp
+        case (bound_broken_history)
+          if (mat%prefractured) ok = ok .and. statev(i) >= mat%beta_break
+        case (bound_plane_angle)
+          call angle_range(mat, mod(i - 1, umat_planes) + 1, theta_lo, theta_hi)
+          ok = ok .and. statev(i) >= theta_lo .and. statev(i) <= theta_hi
+        end select
       end do
       if (ok) return
     end if
@@ -345,35 +369,36 @@ contains
     integer, intent(in) :: i
     type(interlock_material_t), intent(in) :: mat
     character(len=*), intent(out) :: message
-    real(dp) :: lo(umat_nstatv), hi(umat_nstatv)
-    integer :: ivar, k
-    call statev_bounds(mat, lo, hi)
-    call statev_variable(i, umat_planes, ivar, k)
-    call slot_message(i, statev(i), ivar, k, lo(i), hi(i), mat%prefractured, message)
+    call slot_message(i, statev(i), umat_planes, mat, message)
   end subroutine statev_message
 
-  !> The message for STATEV(i) = x, variable ivar (statevar_3d) of plane k (0: of the point),
-  !> outside [lo, hi].
-  pure subroutine slot_message(i, x, ivar, k, lo, hi, prefractured, message)
-    integer, intent(in) :: i, ivar, k
-    real(dp), intent(in) :: x, lo, hi
-    logical, intent(in) :: prefractured
+  !> The message for STATEV(i) = x of a point with n_planes planes (statev_variable) outside
+  !> its range (statev_range).
+  pure subroutine slot_message(i, x, n_planes, mat, message)
+    integer, intent(in) :: i, n_planes
+    real(dp), intent(in) :: x
+    type(interlock_material_t), intent(in) :: mat
     character(len=*), intent(out) :: message
     character(len=:), allocatable :: name
     type(statevar_t) :: row
+    real(dp) :: lo, hi
+    integer :: ivar, k
+    call statev_variable(i, n_planes, ivar, k)
+    call statev_range(mat, ivar, k, lo, hi)
     row = statevar_3d(ivar)
     name = trim(row%name)
     if (k > 0) name = name // ' of plane ' // format_integer(k)
-    if (ivar == sv_initialized) then
+    if (row%bound == bound_flag) then
       message = 'STATEV(' // format_integer(i) // ') = ' // format_real(x) // ' (' // &
                 name // ') is inadmissible: admissible 0 (first increment) or 1'
     else
       message = 'STATEV(' // format_integer(i) // ') = ' // format_real(x) // ' (' // &
                 name // ') is inadmissible: admissible ' // format_real(lo) // ' <= ' // &
                 trim(row%name) // ' <= ' // format_real(hi) // ' [' // &
-                trim(row%unit) // ']' // &
-                trim(merge(' (pre-fractured: PROPS(10) = 1)', '                               ', &
-                           prefractured .and. (ivar == sv_damage .or. ivar == sv_beta)))
+                trim(row%unit) // ']'
+      if (mat%prefractured .and. (row%bound == bound_broken .or. &
+                                  row%bound == bound_broken_history)) message = trim(message) &
+        // ' (pre-fractured: PROPS(' // format_integer(prop_prefractured) // ') = 1)'
     end if
   end subroutine slot_message
 
@@ -420,27 +445,6 @@ contains
   ! for the material's planes, umat_nstatv_3d(mat%n_planes) slots. Off the 2D UMAT's path:
   ! plain loops over the planes.
 
-  !> The admissible range of every STATEV slot of a three-dimensional point: the 2D ranges
-  !> (statev_bounds) for its planes, the strike components finite within +-state_bound.
-  pure subroutine statev_bounds_3d(mat, lo, hi)
-    type(interlock_material_t), intent(in) :: mat
-    real(dp), intent(out) :: lo(:), hi(:)
-    integer :: k, n
-    n = mat%n_planes
-    lo = -state_bound
-    hi = state_bound
-    do k = 1, n
-      lo(statevar_index_3d(sv_damage, k, n)) = merge(1.0_dp, 0.0_dp, mat%prefractured)
-      hi(statevar_index_3d(sv_damage, k, n)) = 1.0_dp
-      lo(statevar_index_3d(sv_beta, k, n)) = merge(mat%beta_break, 0.0_dp, mat%prefractured)
-      lo(statevar_index_3d(sv_zeta, k, n)) = 0.0_dp
-      call angle_range(mat, k, lo(statevar_index_3d(sv_theta, k, n)), &
-                       hi(statevar_index_3d(sv_theta, k, n)))
-    end do
-    lo(statevar_index_3d(sv_initialized, 0, n)) = 0.0_dp
-    hi(statevar_index_3d(sv_initialized, 0, n)) = 1.0_dp
-  end subroutine statev_bounds_3d
-
   !> The first STATEV slot of a three-dimensional point outside its range, 0 when every one
   !> is admissible (an uninitialised STATEV, flag 0, whatever its other slots); every value
   !> tested on its bits before it is compared (no comparison of a NaN).
@@ -459,7 +463,7 @@ contains
       if (.not. same_value(statev(flag), 0.0_dp)) bad = flag
       return
     end if
-    call statev_bounds_3d(mat, lo, hi)
+    call statev_bounds(mat, lo, hi)
     lo(flag) = 1.0_dp
     bad = first_out_of_range(statev, lo, hi)
   end function statev_bad_index_3d
@@ -470,11 +474,7 @@ contains
     integer, intent(in) :: i
     type(interlock_material_t), intent(in) :: mat
     character(len=*), intent(out) :: message
-    real(dp) :: lo(size(statev)), hi(size(statev))
-    integer :: ivar, k
-    call statev_bounds_3d(mat, lo, hi)
-    call statev_variable(i, mat%n_planes, ivar, k)
-    call slot_message(i, statev(i), ivar, k, lo(i), hi(i), mat%prefractured, message)
+    call slot_message(i, statev(i), mat%n_planes, mat, message)
   end subroutine statev_message_3d
 
   !> The state variable (ivar, statevar_3d) and plane (k; 0 for a variable of the point) of

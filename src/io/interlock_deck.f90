@@ -183,6 +183,8 @@ module interlock_deck
     end subroutine read_output
   end interface
 
+  public :: deck_property
+
 contains
 
   !> Number of cases: one per sweep value, or one.
@@ -622,6 +624,45 @@ contains
       d%effect(ip - prop_effect_damage + 1) = v > 0.5_dp
     end select
   end subroutine deck_set_property
+
+  !> The deck's value of property `ip` as deck_set_property sets it (a per-plane angle: the
+  !> magnitude of plane 1; thetaf_deg not given: theta0_deg, no wear; zeta0 of plane 1); a row
+  !> the deck does not hold: the table's default.
+  pure real(dp) function deck_property(d, ip) result(v)
+    type(deck_t), intent(in) :: d
+    integer, intent(in) :: ip
+    select case (ip)
+    case (prop_sigma0_n)
+      v = d%sigma0_n
+    case (prop_sigma0_t)
+      v = d%sigma0_t
+    case (prop_gc)
+      v = d%gc
+    case (prop_eta)
+      v = d%eta
+    case (prop_mu)
+      v = d%mu
+    case (prop_h_n)
+      v = d%h_n
+    case (prop_theta0)
+      v = abs(d%theta0_deg(1))
+    case (prop_thetaf)
+      v = abs(d%thetaf_deg(1))
+      if (.not. d%thetaf_given) v = abs(d%theta0_deg(1))
+    case (prop_zeta0)
+      v = d%zeta0(1)
+    case (prop_prefractured)
+      v = merge(1.0_dp, 0.0_dp, d%prefractured)
+    case (prop_scheme)
+      v = real(d%solver%scheme, dp)
+    case (prop_substep_tol)
+      v = d%solver%substep_tol
+    case (prop_effect_damage:prop_effect_wear)
+      v = merge(1.0_dp, 0.0_dp, d%effect(ip - prop_effect_damage + 1))
+    case default
+      v = properties(ip)%default
+    end select
+  end function deck_property
 
   !> "case 3 (h_n = 0.5 mm): " for sweeps, '' otherwise.
   function case_text(deck, icase) result(text)

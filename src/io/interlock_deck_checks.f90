@@ -26,7 +26,20 @@ module interlock_deck_checks
     character(len=24) :: name
     character(len=72) :: what
   end type var_t
-  character(len=*), parameter :: real_list = 'real numbers, one per microplane (at most 13)'
+  !> The limits the material owns (max_planes, max_azimuths) as text, for the constant texts
+  !> of deck_vars: a whole number below 100 as its digits (tens by an exact division; two_digits
+  !> fails to compile, by a division by zero, should a limit reach 100).
+  integer, parameter :: two_digits = 1 / merge(1, 0, max(max_planes, max_azimuths) < 100)
+  integer, parameter :: planes_tens = (max_planes - mod(max_planes, 10)) / 10, &
+                        azimuths_tens = (max_azimuths - mod(max_azimuths, 10)) / 10
+  character(len=*), parameter :: max_planes_text = &
+    repeat(achar(48 + planes_tens), min(two_digits, planes_tens)) // &
+    achar(48 + mod(max_planes, 10))
+  character(len=*), parameter :: max_azimuths_text = &
+    repeat(achar(48 + azimuths_tens), min(two_digits, azimuths_tens)) // &
+    achar(48 + mod(max_azimuths, 10))
+  character(len=*), parameter :: real_list = &
+    'real numbers, one per microplane (at most ' // max_planes_text // ')'
   type(var_t), parameter :: deck_vars(*) = [ &
     var_t(1, 'sigma0_n', 'a real number [MPa]'), var_t(1, 'sigma0_t', 'a real number [MPa]'), &
     var_t(1, 'gc', 'a real number [N/mm]'), var_t(1, 'eta', 'a real number [-]'), &
@@ -34,7 +47,8 @@ module interlock_deck_checks
     var_t(1, 'prefractured', 'a logical (.true. or .false.)'), &
     var_t(2, 'theta0_deg', real_list // ' [deg]'), var_t(2, 'thetaf_deg', real_list // ' [deg]'), &
     var_t(2, 'zeta0', real_list // ' [N/mm] (or Inf)'), &
-    var_t(2, 'n_planes', 'an integer (1 to 13)'), var_t(2, 'gamma_hat', real_list // ' [-]'), &
+    var_t(2, 'n_planes', 'an integer (1 to ' // max_planes_text // ')'), &
+    var_t(2, 'gamma_hat', real_list // ' [-]'), &
     var_t(3, 'damage', 'a logical (.true. or .false.)'), &
     var_t(3, 'friction', 'a logical (.true. or .false.)'), &
     var_t(3, 'interlocking', 'a logical (.true. or .false.)'), &
@@ -64,7 +78,7 @@ module interlock_deck_checks
     var_t(8, 'title', 'a quoted string (at most 1024 characters)'), &
     var_t(8, 'every', 'an integer (1 to 2000000)'), &
     var_t(8, 'store', "a quoted string: 'all', 'curves' or a list of dataset names"), &
-    var_t(2, 'n_azimuths', 'an integer (1 to 6): the azimuthal RIA'), &
+    var_t(2, 'n_azimuths', 'an integer (1 to ' // max_azimuths_text // '): the azimuthal RIA'), &
     var_t(2, 'phi_deg', real_list // ' [deg]'), &
     var_t(4, 't2_control', "a quoted string: 'traction' or 'separation'"), &
     var_t(4, 't2', 'real numbers, one per point (at most 10001) [MPa or mm]'), &

@@ -1,8 +1,9 @@
 !> The single source of truth for the material description (in the spirit of an MFront
 !> `.mfront` file): every property (name, symbol, unit, default, admissible range, deck group,
-!> one-line description) and every state variable. The UMAT's PROPS and STATEV layouts, the
-!> validation messages, the names used by decks and HDF5 files, `interlock-query` and
-!> `docs/material.md` are all generated from these two tables.
+!> one-line description) and every state variable (name, unit, admissible range and how the
+!> material narrows it, description). The UMAT's PROPS and STATEV layouts and checks, the
+!> validation messages, the names used by decks and HDF5 files, `interlock-query`, the C API's
+!> descriptions and `docs/material.md` are all generated from these two tables.
 module interlock_material_table
   use, intrinsic :: iso_fortran_env, only: int64
   use interlock_kinds, only: dp, infinite_threshold, exponent_bits
@@ -25,6 +26,8 @@ module interlock_material_table
             tangent_exact, tangent_symmetric
   public :: sv_damage, sv_beta, sv_frictional_slip, sv_zeta, sv_theta, sv_friction_traction, &
             sv_work, sv_damage_dissipation, sv_friction_dissipation, sv_initialized
+  public :: state_bound, bound_fixed, bound_broken, bound_broken_history, bound_plane_angle, &
+            bound_flag, format_statevar_range
 
   integer, parameter :: kind_real = 1   !< a real number in a range
   integer, parameter :: kind_flag = 2   !< 0 (off / false) or 1 (on / true)
@@ -50,11 +53,30 @@ module interlock_material_table
     character(len=96) :: description
   end type property_t
 
-  !> One state variable; per-plane variables occupy one STATEV slot per microplane.
+  !> Largest magnitude admitted for a state variable that is not otherwise bounded (slips,
+  !> works, energies, friction tractions) and for the traction STRESS on entry: far beyond any
+  !> value the law reaches from separations within separation_bound (tractions <= 1e100 MPa,
+  !> works <= 1e110 N/mm for stiffnesses <= 1e90 MPa/mm), and far enough below overflow that
+  !> no product of the update with such a value overflows.
+  real(dp), parameter :: state_bound = 1.0e150_dp
+
+  !> How a state variable's admissible range follows from the material, besides its row's
+  !> [lower, upper]: not at all; raised to 1 on a pre-fractured interface (damage); raised to
+  !> beta_break = 1/(1 - eta) on a pre-fractured interface (beta); between theta_f and theta_0
+  !> of its plane, with 4 ulps of slack for the rounding of the wear law (theta; the row's
+  !> bounds then only keep it finite); 0 before the first increment, 1 after (the flag).
+  integer, parameter :: bound_fixed = 0, bound_broken = 1, bound_broken_history = 2, &
+                        bound_plane_angle = 3, bound_flag = 4
+
+  !> One state variable; per-plane variables occupy one STATEV slot per microplane. A value
+  !> lies in [lower, upper] (a NaN in none), narrowed for the material as `bound` says.
   type :: statevar_t
     character(len=24) :: name
     character(len=6)  :: unit
     logical :: per_plane
+    real(dp) :: lower
+    real(dp) :: upper
+    integer :: bound
     character(len=96) :: description
   end type statevar_t
 
@@ -187,21 +209,28 @@ module interlock_material_table
                         sv_initialized = 10
 
   type(statevar_t), parameter :: statevars(n_statevars_per_plane + n_statevars_global) = [ &
-    statevar_t('damage', '-', .true., 'damage D_k in [0, 1], non-decreasing'), &
-    statevar_t('beta', '-', .true., 'history maximum of the equivalent relative displacement'), &
-    statevar_t('frictional_slip', 'mm', .true., &
+    statevar_t('damage', '-', .true., 0.0_dp, 1.0_dp, bound_broken, &
+               'damage D_k in [0, 1], non-decreasing'), &
+    statevar_t('beta', '-', .true., 0.0_dp, state_bound, bound_broken_history, &
+               'history maximum of the equivalent relative displacement'), &
+    statevar_t('frictional_slip', 'mm', .true., -state_bound, state_bound, bound_fixed, &
                'frictional slip sf_k along the microplane (3D: along its dip e_k at its phi_k ' // &
                'as given)'), &
-    statevar_t('zeta', 'N/mm', .true., 'accumulated frictional work zeta_k (drives wear)'), &
-    statevar_t('theta', 'rad', .true., &
+    statevar_t('zeta', 'N/mm', .true., 0.0_dp, state_bound, bound_fixed, &
+               'accumulated frictional work zeta_k (drives wear)'), &
+    statevar_t('theta', 'rad', .true., -state_bound, state_bound, bound_plane_angle, &
                'current inclination theta_k of the microplane (signed in the frame of its ' // &
                'phi_k as given)'), &
-    statevar_t('friction_traction', 'MPa', .true., &
+    statevar_t('friction_traction', 'MPa', .true., -state_bound, state_bound, bound_fixed, &
                'friction traction K_t (s_kt - sf_k) at the end of the increment'), &
-    statevar_t('work', 'N/mm', .false., 'work done on the interface, sum of sigma . ds'), &
-    statevar_t('damage_dissipation', 'N/mm', .false., 'energy dissipated by damage'), &
-    statevar_t('friction_dissipation', 'N/mm', .false., 'energy dissipated by friction'), &
-    statevar_t('initialized', '-', .false., '0 before the first increment, 1 after') ]
+    statevar_t('work', 'N/mm', .false., -state_bound, state_bound, bound_fixed, &
+               'work done on the interface, sum of sigma . ds'), &
+    statevar_t('damage_dissipation', 'N/mm', .false., -state_bound, state_bound, bound_fixed, &
+               'energy dissipated by damage'), &
+    statevar_t('friction_dissipation', 'N/mm', .false., -state_bound, state_bound, bound_fixed, &
+               'energy dissipated by friction'), &
+    statevar_t('initialized', '-', .false., 0.0_dp, 1.0_dp, bound_flag, &
+               '0 before the first increment, 1 after') ]
 
   !> The UMAT uses the paper's symmetric three-plane RIA.
   integer, parameter :: umat_planes = 3
@@ -215,11 +244,11 @@ module interlock_material_table
   integer, parameter :: n_statevars_strike = 2
   integer, parameter :: sv_frictional_slip_strike = 11, sv_friction_traction_strike = 12
   type(statevar_t), parameter :: strike_statevars(n_statevars_strike) = [ &
-    statevar_t('frictional_slip_strike', 'mm', .true., &
+    statevar_t('frictional_slip_strike', 'mm', .true., -state_bound, state_bound, bound_fixed, &
                '3D: frictional slip of plane k along its strike q_k (the frame of its phi_k ' // &
                'as given)'), &
-    statevar_t('friction_traction_strike', 'MPa', .true., &
-               '3D: friction traction of plane k along its strike q_k (the frame of its ' // &
+    statevar_t('friction_traction_strike', 'MPa', .true., -state_bound, state_bound, &
+               bound_fixed, '3D: friction traction of plane k along its strike q_k (the frame of its ' // &
                'phi_k as given)') ]
 
 contains
@@ -388,5 +417,38 @@ contains
     character(len=len_trim(format_range_padded(i))) :: text
     text = format_range_padded(i)
   end function format_range
+
+  !> format_statevar_range's text, blank-padded (see interlock_numbers:format_real).
+  pure function format_statevar_range_padded(ivar) result(padded)
+    integer, intent(in) :: ivar
+    character(len=160) :: padded
+    character(len=:), allocatable :: text
+    type(statevar_t) :: v
+    v = statevar_3d(ivar)
+    select case (v%bound)
+    case (bound_flag)
+      text = trim(v%name) // ' = 0 (before the first increment) or 1'
+    case (bound_plane_angle)
+      text = trim(v%name) // ' between theta_f and theta_0 of its plane'
+    case default
+      if (v%lower <= -state_bound .and. v%upper >= state_bound) then
+        text = '|' // trim(v%name) // '| <= ' // trim(format_real(state_bound))
+      else
+        text = trim(format_real(v%lower)) // ' <= ' // trim(v%name) // ' <= ' // &
+               trim(format_real(v%upper))
+      end if
+      if (v%bound == bound_broken) text = text // ' (1 when pre-fractured)'
+      if (v%bound == bound_broken_history) text = text // ' (>= 1/(1 - eta) when pre-fractured)'
+    end select
+    padded = text // ' [' // trim(v%unit) // ']'
+  end function format_statevar_range_padded
+
+  !> The admissible range of state variable ivar (statevar_3d) as text, e.g.
+  !> "0 <= damage <= 1 (1 when pre-fractured) [-]".
+  pure function format_statevar_range(ivar) result(text)
+    integer, intent(in) :: ivar
+    character(len=len_trim(format_statevar_range_padded(ivar))) :: text
+    text = format_statevar_range_padded(ivar)
+  end function format_statevar_range
 
 end module interlock_material_table

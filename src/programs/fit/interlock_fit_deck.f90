@@ -5,9 +5,9 @@
 !> Every error names the deck, the group, the variable and what is admissible.
 module interlock_fit_deck
   use interlock, only: dp, properties, property_index, check_property, format_range, &
-      format_integer, format_real, same_value, prop_sigma0_n, prop_zeta0, prop_h_n, prop_theta0, prop_thetaf, &
-      prop_sigma0_t, prop_gc, prop_eta, prop_mu, status_ok
-  use interlock_deck, only: deck_t, read_deck, deck_groups
+      format_integer, format_real, same_value, prop_sigma0_n, prop_zeta0, prop_h_n, prop_theta0, &
+      prop_thetaf, status_ok
+  use interlock_deck, only: deck_t, read_deck, deck_groups, deck_property
   use interlock_deck_text, only: group_scan_t, scan_deck, to_lower => lower
   use interlock_csv, only: csv_t, read_csv, csv_column, printable_text
   use interlock_lm, only: lm_options_t
@@ -15,7 +15,7 @@ module interlock_fit_deck
   implicit none
   private
   public :: fit_t, curve_t, stage_t, read_fit_deck, output_names, n_outputs, fit_groups, &
-            split_branches, deck_value, join_selected, law_angles, folder_of
+            split_branches, join_selected, law_angles, folder_of
 
   integer, parameter :: max_curves = 32, max_free = 16, max_stages = 16
   integer, parameter :: name_len = 64, file_len = 1024, list_len = 1024
@@ -404,7 +404,7 @@ contains
         return
       end if
       fd%property(i) = ip
-      if (same_value(fd%start(i), unset)) fd%start(i) = deck_value(fd%deck, ip)
+      if (same_value(fd%start(i), unset)) fd%start(i) = deck_property(fd%deck, ip)
       if (same_value(fd%lower(i), unset) .or. same_value(fd%upper(i), unset)) then
         message = prefix // 'parameter ' // name // ' needs both bounds (lower and upper, ' // &
                   'finite, in ' // format_range(ip) // ')'
@@ -690,33 +690,6 @@ contains
       thetaf = maxval(abs(fit%deck%thetaf_deg(1:np)))
     end if
   end subroutine law_angles
-
-  !> The deck's value of property ip (plane 1 for per-plane properties).
-  pure real(dp) function deck_value(deck, ip) result(v)
-    type(deck_t), intent(in) :: deck
-    integer, intent(in) :: ip
-    select case (ip)
-    case (prop_sigma0_n)
-      v = deck%sigma0_n
-    case (prop_sigma0_t)
-      v = deck%sigma0_t
-    case (prop_gc)
-      v = deck%gc
-    case (prop_eta)
-      v = deck%eta
-    case (prop_mu)
-      v = deck%mu
-    case (prop_h_n)
-      v = deck%h_n
-    case (prop_theta0)
-      v = abs(deck%theta0_deg(1))
-    case (prop_thetaf)
-      v = abs(deck%thetaf_deg(1))
-      if (.not. deck%thetaf_given) v = abs(deck%theta0_deg(1))   ! no thetaf_deg: no wear
-    case default
-      v = deck%zeta0(1)
-    end select
-  end function deck_value
 
   !> Number each value by the monotone run of x it is on (1, 2, ...): a run ends where x turns
   !> back by more than `tolerance` from its extreme; the points after the extreme start the next.

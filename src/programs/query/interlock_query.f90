@@ -8,7 +8,7 @@ program interlock_query
       umat_planes, umat_nstatv, format_range, format_real, property_t, statevar_t, kind_real, &
       kind_flag, kind_choice, &
       interlock_version_string, format_integer, statevar_index_3d, statevar_3d, &
-      umat_nstatv_3d, n_statevars_strike, prop_ria, max_azimuths
+      umat_nstatv_3d, n_statevars_strike, prop_ria, max_azimuths, format_statevar_range
   implicit none
   character(len=:), allocatable :: arg
   integer :: iarg, n
@@ -168,11 +168,12 @@ contains
     integer :: i
     type(statevar_t) :: v
     write (output_unit, '(a)') pad('name', 25) // pad('unit', 6) // pad('per plane', 11) // &
-      'description'
+      pad('admissible', 64) // 'description'
     do i = 1, size(statevars) + n_statevars_strike
       v = statevar_3d(i)
       write (output_unit, '(a)') pad(v%name, 25) // pad(v%unit, 6) // &
-        pad(merge('yes', 'no ', v%per_plane), 11) // trim(v%description)
+        pad(merge('yes', 'no ', v%per_plane), 11) // pad(format_statevar_range(i), 64) // &
+        trim(v%description)
     end do
   end subroutine print_state_variables
 
@@ -180,25 +181,25 @@ contains
     integer :: i, k, slot
     type(statevar_t) :: v
     write (output_unit, '(a)') pad('STATEV', 8) // pad('name', 25) // pad('plane', 14) // &
-      pad('unit', 6) // 'description'
+      pad('unit', 6) // pad('admissible', 64) // 'description'
     do slot = 1, umat_nstatv
       call locate(slot, .false., i, k)
       v = statevars(i)
       write (output_unit, '(a)') pad(format_integer(slot), 8) // pad(v%name, 25) // &
         pad(plane_column(v%per_plane, k), 14) // pad(v%unit, 6) // &
-        trim(v%description)
+        pad(format_statevar_range(i), 64) // trim(v%description)
     end do
     write (output_unit, '(a)') 'NSTATV >= ' // format_integer(umat_nstatv) // ' (*DEPVAR ' // &
       format_integer(umat_nstatv) // '); all zero before the first increment.'
     write (output_unit, '(a)') '', '3D cohesive element (NTENS = 3), the paper''s RIA (ria = 0):'
     write (output_unit, '(a)') pad('STATEV', 8) // pad('name', 25) // pad('plane', 14) // &
-      pad('unit', 6) // 'description'
+      pad('unit', 6) // pad('admissible', 64) // 'description'
     do slot = 1, umat_nstatv_3d(umat_planes)
       call locate(slot, .true., i, k)
       v = statevar_3d(i)
       write (output_unit, '(a)') pad(format_integer(slot), 8) // pad(v%name, 25) // &
         pad(plane_column(v%per_plane, k), 14) // pad(v%unit, 6) // &
-        trim(v%description)
+        pad(format_statevar_range(i), 64) // trim(v%description)
     end do
     write (output_unit, '(a)') trim(statev_3d_note())
   end subroutine print_statev
@@ -284,12 +285,13 @@ contains
       '', &
       '## State variables', &
       '', &
-      '| name | unit | per plane | description |', &
-      '|---|---|---|---|'
+      '| name | unit | per plane | admissible | description |', &
+      '|---|---|---|---|---|'
     do i = 1, size(statevars) + n_statevars_strike
       v = statevar_3d(i)
       write (output_unit, '(a)') '| `' // trim(v%name) // '` | ' // trim(v%unit) // ' | ' // &
-        trim(merge('yes', 'no ', v%per_plane)) // ' | ' // trim(v%description) // ' |'
+        trim(merge('yes', 'no ', v%per_plane)) // ' | ' // format_statevar_range(i) // ' | ' // &
+        trim(v%description) // ' |'
     end do
     write (output_unit, '(a)') &
       '', &
@@ -333,14 +335,14 @@ contains
       'NSTATV >= ' // format_integer(umat_nstatv) // ' (`*DEPVAR` ' // format_integer(umat_nstatv) // &
       '); all zero before the first increment.', &
       '', &
-      '| STATEV | name | plane | unit | description |', &
-      '|---|---|---|---|---|'
+      '| STATEV | name | plane | unit | admissible | description |', &
+      '|---|---|---|---|---|---|'
     do slot = 1, umat_nstatv
       call locate(slot, .false., i, k)
       v = statevars(i)
       write (output_unit, '(a)') '| ' // format_integer(slot) // ' | `' // trim(v%name) // '` | ' // &
-        plane_column(v%per_plane, k) // ' | ' // trim(v%unit) // &
-        ' | ' // trim(v%description) // ' |'
+        plane_column(v%per_plane, k) // ' | ' // trim(v%unit) // ' | ' // &
+        format_statevar_range(i) // ' | ' // trim(v%description) // ' |'
     end do
     write (output_unit, '(a)') &
       '', &
@@ -349,14 +351,14 @@ contains
       'The paper''s RIA (`ria` = 0): STATEV 1-22 as in 2D, then the strike components.', &
       statev_3d_note(), &
       '', &
-      '| STATEV | name | plane | unit | description |', &
-      '|---|---|---|---|---|'
+      '| STATEV | name | plane | unit | admissible | description |', &
+      '|---|---|---|---|---|---|'
     do slot = 1, umat_nstatv_3d(umat_planes)
       call locate(slot, .true., i, k)
       v = statevar_3d(i)
       write (output_unit, '(a)') '| ' // format_integer(slot) // ' | `' // trim(v%name) // '` | ' // &
-        plane_column(v%per_plane, k) // ' | ' // trim(v%unit) // &
-        ' | ' // trim(v%description) // ' |'
+        plane_column(v%per_plane, k) // ' | ' // trim(v%unit) // ' | ' // &
+        format_statevar_range(i) // ' | ' // trim(v%description) // ' |'
     end do
   end subroutine print_markdown
 
