@@ -104,7 +104,9 @@ contains
     mu_p = constant(0.0_dp)
     if (s_o(1)%v * mat%inv_h_n < 1.0_dp) then
       dip = cp * s_o(2) + sp * s_o(3)
-      mu_p = mat%mu_eff * mat%kn * max(0.0_dp, -(c * s_o(1) + sn * dip))
+      ! (max takes its first argument at a tie: at s_kn = 0 the closed side's derivative,
+      ! SPEC D13)
+      mu_p = mat%mu_eff * mat%kn * max(-(c * s_o(1) + sn * dip), 0.0_dp)
     end if
   end function start_pressure_3d
 
@@ -118,8 +120,9 @@ contains
     type(plane_dual_t), intent(in) :: o
     type(plane_response_3d_t), intent(out) :: p
     type(dual_t) :: dip, sl_n, sl_t(2), pos, an, at, beq2, beq, mu_p, tr(2), tr_norm, dsf(2), &
-                    slip_norm, kpos, sig_n, sig_t(2), sig_dip
+                    slip_norm, kpos, sig_n, sig_t(2), sig_dip, atau_dip
     real(dp) :: work, tauf_norm
+    logical :: closed_at_zero
 
     ! Kinematics: the separation's component along the dip direction d = cos(phi) t1 +
     ! sin(phi) t2, then m = cos(theta) n + sin(theta) d, e = -sin(theta) n + cos(theta) d and
@@ -155,14 +158,17 @@ contains
     end if
 
     ! Friction on the damaged part, radial return to |tau_f| = mu p (p = K_n <-s_kn>_+);
-    ! free (sf = s_kt, tau_f = 0) on an open plane or without friction.
+    ! free (sf = s_kt, tau_f = 0) on an open plane or without friction. At s_kn = 0 exactly
+    ! mu p carries the closed side's derivative (SPEC D13: min takes its first argument at a
+    ! tie).
     mu_p = constant(0.0_dp)
-    if (mat%use_friction) mu_p = -mat%mu_eff * mat%kn * min(0.0_dp, sl_n)
+    if (mat%use_friction) mu_p = -mat%mu_eff * mat%kn * min(sl_n, 0.0_dp)
     p%dip_share = constant(1.0_dp)
+    closed_at_zero = .false.
     if (mu_p%v > 0.0_dp) then
       tr(1) = mat%kt * (sl_t(1) - o%sf(1))
       tr(2) = mat%kt * (sl_t(2) - o%sf(2))
-      tr_norm = sqrt(tr(1) * tr(1) + tr(2) * tr(2))
+      tr_norm = vector_norm(tr)
       if (tr_norm%v <= mu_p%v) then
         p%sf = o%sf
         p%tauf = tr
@@ -184,9 +190,32 @@ contains
       dsf(1) = p%sf(1) - o%sf(1)
       dsf(2) = p%sf(2) - o%sf(2)
       p%slip_dip = abs(dsf(1))
-      slip_norm = sqrt(dsf(1) * dsf(1) + dsf(2) * dsf(2))
+      slip_norm = vector_norm(dsf)
+      if (mat%use_friction .and. .not. sl_n%v > 0.0_dp) then
+        ! s_kn = 0 exactly: in contact for every derivative (SPEC D13). The values are the
+        ! free plane's, the same as the slide's with mu p = 0 (tau_f = 0, sf = s_kt); the
+        ! derivatives are the slide's: d tau_f = d(mu p) n, the slip shortened by d(mu p) / K_t
+        ! along n. At the cone's apex (|tau_tr| = 0) a kink where they stay 0.
+        tr(1) = mat%kt * (sl_t(1) - o%sf(1))
+        tr(2) = mat%kt * (sl_t(2) - o%sf(2))
+        tr_norm = vector_norm(tr)
+        if (tr_norm%v > 0.0_dp) then
+          atau_dip = mu_p * abs(tr(1) / tr_norm)
+          p%tauf(1) = mu_p * (tr(1) / tr_norm)
+          p%tauf(2) = mu_p * (tr(2) / tr_norm)
+          p%tauf(1)%v = 0.0_dp
+          p%tauf(2)%v = 0.0_dp
+          p%sf(1) = sl_t(1) - p%tauf(1) * mat%inv_kt
+          p%sf(2) = sl_t(2) - p%tauf(2) * mat%inv_kt
+          slip_norm = slip_norm - mu_p * mat%inv_kt
+          p%slip_dip = p%slip_dip - atau_dip * mat%inv_kt
+          atau_dip%v = 0.0_dp
+          closed_at_zero = .true.
+        end if
+      end if
     end if
     if (slip_norm%v > 0.0_dp) p%dip_share = p%slip_dip / slip_norm
+    if (.not. closed_at_zero) atau_dip = abs(p%tauf(1))
 
     ! The traction (eq. 6) in the plane's frame and back in the macro one.
     kpos = mat%kn * pos
@@ -201,7 +230,7 @@ contains
     ! Energies, as the 2D law's (interlock_plane_law) with vectors: the frictional work on the
     ! damaged part, the damage dissipation Y dD (the elastic part exact, the friction part at
     ! first order), the stored energy (sigma_k . s_k - D tau_f . sf) / 2.
-    p%wfric_dip = p%dmg * abs(p%tauf(1)) * p%slip_dip
+    p%wfric_dip = p%dmg * atau_dip * p%slip_dip
     tauf_norm = sqrt(p%tauf(1)%v**2 + p%tauf(2)%v**2)
     p%wfric = p%dmg%v * tauf_norm * slip_norm%v
     p%wdmg = 0.0_dp
@@ -214,5 +243,23 @@ contains
            p%dmg%v * (p%tauf(1)%v * p%sf(1)%v + p%tauf(2)%v * p%sf(2)%v)
     p%psi = 0.5_dp * work
   end subroutine plane_law_3d
+
+  !> |a| of a tangential 2-vector. Its squares are taken as they are while they stay far from
+  !> overflow, else scaled by the larger component: an admissible state (a frictional slip of
+  !> 1e150 mm) times a stiff interface's K_t gives a trial traction whose square is beyond the
+  !> largest number.
+  pure type(dual_t) function vector_norm(a) result(r)
+    type(dual_t), intent(in) :: a(2)
+    type(dual_t) :: b(2)
+    real(dp) :: m
+    m = max(abs(a(1)%v), abs(a(2)%v))
+    if (m < 1.0e150_dp) then
+      r = sqrt(a(1) * a(1) + a(2) * a(2))
+    else
+      b(1) = a(1) / m
+      b(2) = a(2) / m
+      r = m * sqrt(b(1) * b(1) + b(2) * b(2))
+    end if
+  end function vector_norm
 
 end module interlock_plane_law_3d
