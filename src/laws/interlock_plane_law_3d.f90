@@ -110,7 +110,9 @@ contains
     mu_p = constant(0.0_dp)
     if (s_o(1)%v * mat%inv_h_n < 1.0_dp) then
       dip = cp * s_o(2) + sp * s_o(3)
-      mu_p = mat%mu_eff * mat%kn * max(0.0_dp, -(c * s_o(1) + sn * dip))
+      ! (max takes its first argument at a tie: at s_kn = 0 the closed side's derivative,
+      ! SPEC D13)
+      mu_p = mat%mu_eff * mat%kn * max(-(c * s_o(1) + sn * dip), 0.0_dp)
     end if
   end function start_pressure_3d
 
@@ -126,9 +128,9 @@ contains
     type(plane_dual_t), intent(in) :: o
     type(plane_response_3d_t), intent(out) :: p
     type(dual_t) :: dip, sl_n, sl_t(2), pos, an, at, beq2, beq, mu_p, tr(2), tr_norm, dsf(2), &
-                    slip_norm, kpos, sig_n, sig_t(2), sig_dip, n_new(2), n_o(2)
+                    slip_norm, kpos, sig_n, sig_t(2), sig_dip, atau_dip, n_new(2), n_o(2)
     real(dp) :: work, tauf_norm
-    logical :: mean_direction
+    logical :: closed_at_zero, mean_direction
 
     ! Kinematics: the separation's component along the dip direction d = cos(phi) t1 +
     ! sin(phi) t2, then m = cos(theta) n + sin(theta) d, e = -sin(theta) n + cos(theta) d and
@@ -164,15 +166,18 @@ contains
     end if
 
     ! Friction on the damaged part, radial return to |tau_f| = mu p (p = K_n <-s_kn>_+);
-    ! free (sf = s_kt, tau_f = 0) on an open plane or without friction.
+    ! free (sf = s_kt, tau_f = 0) on an open plane or without friction. At s_kn = 0 exactly
+    ! mu p carries the closed side's derivative (SPEC D13: min takes its first argument at a
+    ! tie).
     mu_p = constant(0.0_dp)
-    if (mat%use_friction) mu_p = -mat%mu_eff * mat%kn * min(0.0_dp, sl_n)
+    if (mat%use_friction) mu_p = -mat%mu_eff * mat%kn * min(sl_n, 0.0_dp)
     p%dip_share = constant(1.0_dp)
+    closed_at_zero = .false.
     mean_direction = .false.
     if (mu_p%v > 0.0_dp) then
       tr(1) = mat%kt * (sl_t(1) - o%sf(1))
       tr(2) = mat%kt * (sl_t(2) - o%sf(2))
-      tr_norm = sqrt(tr(1) * tr(1) + tr(2) * tr(2))
+      tr_norm = vector_norm(tr)
       if (tr_norm%v <= mu_p%v) then
         p%sf = o%sf
         p%tauf = tr
@@ -190,7 +195,7 @@ contains
           dsf(2) = (tr(2) - p%tauf(2)) * mat%inv_kt
           p%sf(1) = sl_t(1) - p%tauf(1) * mat%inv_kt
           p%sf(2) = sl_t(2) - p%tauf(2) * mat%inv_kt
-          slip_norm = sqrt(dsf(1) * dsf(1) + dsf(2) * dsf(2))
+          slip_norm = vector_norm(dsf)
           p%slip_dip = abs(dsf(1))
           ! the flow is along the friction traction: the wear rate D mu p n_1^2 |d sf| / dt
           ! at the start and at the end of the step, for the trapezoidal rule
@@ -213,9 +218,56 @@ contains
       dsf(1) = p%sf(1) - o%sf(1)
       dsf(2) = p%sf(2) - o%sf(2)
       p%slip_dip = abs(dsf(1))
-      slip_norm = sqrt(dsf(1) * dsf(1) + dsf(2) * dsf(2))
+      slip_norm = vector_norm(dsf)
+      if (mat%use_friction .and. .not. sl_n%v > 0.0_dp) then
+        ! s_kn = 0 exactly: in contact for every derivative (SPEC D13). The values are the
+        ! free plane's, the same as the slide's with mu p = 0 (tau_f = 0, sf = s_kt); the
+        ! derivatives are the slide's: d tau_f = d(mu p) n, the slip shortened by d(mu p) / K_t
+        ! along n. At the cone's apex (|tau_tr| = 0) a kink where they stay 0.
+        tr(1) = mat%kt * (sl_t(1) - o%sf(1))
+        tr(2) = mat%kt * (sl_t(2) - o%sf(2))
+        tr_norm = vector_norm(tr)
+        if (tr_norm%v > 0.0_dp .and. mu_p_o%v > 0.0_dp) &
+          call mean_direction_return(o%tauf, mu_p_o%v, tr, mu_p, mean_direction, n_o, n_new)
+        if (mean_direction) then
+          ! and D14's direction where the plane slid at the start (the trapezoidal scheme):
+          ! the slip (tau_tr - mu p n_new) / K_t, its values the free plane's
+          p%tauf(1) = mu_p * n_new(1)
+          p%tauf(2) = mu_p * n_new(2)
+          p%tauf(1)%v = 0.0_dp
+          p%tauf(2)%v = 0.0_dp
+          p%sf(1) = sl_t(1) - p%tauf(1) * mat%inv_kt
+          p%sf(2) = sl_t(2) - p%tauf(2) * mat%inv_kt
+          dsf(1) = (tr(1) - p%tauf(1)) * mat%inv_kt
+          dsf(2) = (tr(2) - p%tauf(2)) * mat%inv_kt
+          tr_norm = slip_norm
+          slip_norm = vector_norm(dsf)
+          slip_norm%v = tr_norm%v
+          tr_norm = p%slip_dip
+          p%slip_dip = abs(dsf(1))
+          p%slip_dip%v = tr_norm%v
+          atau_dip = mu_p * abs(n_new(1))
+          atau_dip%v = 0.0_dp
+          p%wear_start = slip_norm * (n_o(1) * n_o(1))
+          p%wear_end = p%dmg * atau_dip * (slip_norm * abs(n_new(1)))
+          closed_at_zero = .true.
+        else if (tr_norm%v > 0.0_dp) then
+          atau_dip = mu_p * abs(tr(1) / tr_norm)
+          p%tauf(1) = mu_p * (tr(1) / tr_norm)
+          p%tauf(2) = mu_p * (tr(2) / tr_norm)
+          p%tauf(1)%v = 0.0_dp
+          p%tauf(2)%v = 0.0_dp
+          p%sf(1) = sl_t(1) - p%tauf(1) * mat%inv_kt
+          p%sf(2) = sl_t(2) - p%tauf(2) * mat%inv_kt
+          slip_norm = slip_norm - mu_p * mat%inv_kt
+          p%slip_dip = p%slip_dip - atau_dip * mat%inv_kt
+          atau_dip%v = 0.0_dp
+          closed_at_zero = .true.
+        end if
+      end if
     end if
     if (slip_norm%v > 0.0_dp) p%dip_share = p%slip_dip / slip_norm
+    if (.not. closed_at_zero) atau_dip = abs(p%tauf(1))
 
     ! The traction (eq. 6) in the plane's frame and back in the macro one.
     kpos = mat%kn * pos
@@ -230,7 +282,7 @@ contains
     ! Energies, as the 2D law's (interlock_plane_law) with vectors: the frictional work on the
     ! damaged part, the damage dissipation Y dD (the elastic part exact, the friction part at
     ! first order), the stored energy (sigma_k . s_k - D tau_f . sf) / 2.
-    p%wfric_dip = p%dmg * abs(p%tauf(1)) * p%slip_dip
+    p%wfric_dip = p%dmg * atau_dip * p%slip_dip
     if (.not. mean_direction) then
       p%wear_start = p%slip_dip * p%dip_share
       p%wear_end = p%wfric_dip
@@ -266,8 +318,9 @@ contains
     logical, intent(out) :: ok
     type(dual_t), intent(out) :: n_o(2), n_new(2)
     type(dual_t) :: t_norm, a, b, a2, b2, v2
+    real(dp) :: m
     ok = .false.
-    t_norm = sqrt(tauf_o(1) * tauf_o(1) + tauf_o(2) * tauf_o(2))
+    t_norm = vector_norm(tauf_o)
     if (.not. slides_at_start(t_norm%v, mu_p_o)) return
     n_o(1) = tauf_o(1) / t_norm
     n_o(2) = tauf_o(2) / t_norm
@@ -275,6 +328,13 @@ contains
     b = n_o(1) * tr(2) - n_o(2) * tr(1)
     if (.not. (a%v > 0.0_dp .and. a%v >= abs(b%v))) return
     ok = .true.
+    ! n_new depends on the direction of (a, b) only: scaled where the squares would overflow
+    ! (a trial traction from a huge admissible slip, as vector_norm)
+    m = max(abs(a%v), abs(b%v))
+    if (m >= 1.0e150_dp) then
+      a = a / m
+      b = b / m
+    end if
     a2 = a * a
     b2 = b * b
     v2 = a2 + b2
@@ -290,5 +350,23 @@ contains
     real(dp), parameter :: sliding_tol = 1.0e-10_dp
     slides_at_start = mu_p_o > 0.0_dp .and. tauf_o_norm >= (1.0_dp - sliding_tol) * mu_p_o
   end function slides_at_start
+
+  !> |a| of a tangential 2-vector. Its squares are taken as they are while they stay far from
+  !> overflow, else scaled by the larger component: an admissible state (a frictional slip of
+  !> 1e150 mm) times a stiff interface's K_t gives a trial traction whose square is beyond the
+  !> largest number.
+  pure type(dual_t) function vector_norm(a) result(r)
+    type(dual_t), intent(in) :: a(2)
+    type(dual_t) :: b(2)
+    real(dp) :: m
+    m = max(abs(a(1)%v), abs(a(2)%v))
+    if (m < 1.0e150_dp) then
+      r = sqrt(a(1) * a(1) + a(2) * a(2))
+    else
+      b(1) = a(1) / m
+      b(2) = a(2) / m
+      r = m * sqrt(b(1) * b(1) + b(2) * b(2))
+    end if
+  end function vector_norm
 
 end module interlock_plane_law_3d
