@@ -226,8 +226,8 @@ def mean_direction_slip(tr1, tr2, mup, n_o):
     (|tau_tr| > mu p). Unknown: the turn 2u of the slip direction over the step, n_new = n_o
     turned by 2u; the slip increment is lam m with m = n_o turned by u (the mean of n_o and
     n_new), and tau_f = mu p n_new = tau_tr - K_t lam m. Its component across m vanishes:
-    f(u) = (tau_tr - mu p n_new(u)) x m(u) = 0, solved by bisection on u in [-pi/4, pi/4]
-    (a turn of at most 90 deg). Returns (n_new, m, lam K_t) or None where the rule does not
+    f(u) = (tau_tr - mu p n_new(u)) x m(u) = 0, solved on u in [-pi/4, pi/4] (a turn of at
+    most 90 deg) by the bracketing refinement below, split at u = 0 first. Returns (n_new, m, lam K_t) or None where the rule does not
     apply (no root there, or lam <= 0: a reversal) and radial return is taken instead."""
     def rot(v, a):
         c, s = math.cos(a), math.sin(a)
@@ -241,24 +241,22 @@ def mean_direction_slip(tr1, tr2, mup, n_o):
 
     lo, hi = -0.25 * math.pi, 0.25 * math.pi
     flo, fhi = f(lo), f(hi)
-    if flo == 0.0:
-        hi, fhi = lo, flo
-    elif fhi != 0.0:
-        if (flo > 0.0) == (fhi > 0.0):
-            return None
-        for _ in range(200):
-            mid = 0.5 * (lo + hi)
-            if mid <= lo or mid >= hi:
-                break
-            fm = f(mid)
-            if fm == 0.0:
-                lo = hi = mid
-                break
-            if (fm > 0.0) == (flo > 0.0):
-                lo, flo = mid, fm
-            else:
-                hi, fhi = mid, fm
-    u = 0.5 * (lo + hi)
+    exact = None
+    if flo == 0.0 or fhi == 0.0:
+        exact = lo if flo == 0.0 else hi
+    elif (flo > 0.0) == (fhi > 0.0):
+        return None
+    else:
+        f0 = f(0.0)
+        if f0 == 0.0:
+            exact = 0.0
+        elif (f0 > 0.0) == (flo > 0.0):
+            lo, flo = 0.0, f0
+        else:
+            hi, fhi = 0.0, f0
+        if exact is None:
+            lo, flo, hi, fhi, exact, _ = refine_bracket(f, lo, flo, hi, fhi, 1e-16)
+    u = exact if exact is not None else (lo if abs(flo) < abs(fhi) else hi)
     nn = rot(n_o, 2.0 * u)
     m = rot(n_o, u)
     lam_kt = m[0] * (tr1 - mup * nn[0]) + m[1] * (tr2 - mup * nn[1])
