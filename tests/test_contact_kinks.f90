@@ -112,6 +112,32 @@ contains
     end do
   end subroutine ridges_closed_3d
 
+  !> The interface values (sigma0_n, sigma0_t, gc, eta, mu, h_n) and the pre-fractured start.
+  subroutine set_interface(mat, values, prefractured)
+    type(interlock_material_t), intent(inout) :: mat
+    real(dp), intent(in) :: values(6)
+    logical, intent(in) :: prefractured
+    mat%sigma0_n = values(1)
+    mat%sigma0_t = values(2)
+    mat%gc = values(3)
+    mat%eta = values(4)
+    mat%mu = values(5)
+    mat%h_n = values(6)
+    mat%prefractured = prefractured
+  end subroutine set_interface
+
+  !> The material with the effect switches `effects`, prepared (asserted).
+  logical function prepared(mat, effects)
+    type(interlock_material_t), intent(inout) :: mat
+    logical, intent(in) :: effects(5)
+    integer :: stat
+    character(len=message_len) :: msg
+    mat%effect = effects
+    call interlock_material_prepare(mat, stat, msg)
+    prepared = stat == status_ok
+    call assert_true(prepared, 'material: ' // trim(msg))
+  end function prepared
+
   !> The update at s (status ok asserted).
   subroutine update_3d(mat, solver, old, s, sig, tg)
     type(interlock_material_t), intent(in) :: mat
@@ -174,29 +200,16 @@ contains
     type(interlock_state_3d_t) :: old
     real(dp) :: s(3)
     real(dp) :: th0(3), thf(3), ph(3)
-    integer :: stat
-    character(len=message_len) :: msg
-    mat%sigma0_n = 1.97472395927967654E+002_dp; mat%sigma0_t = 7.05162764263538406E+001_dp
-    mat%gc = 1.71049580762713411E+001_dp
-    mat%eta = 9.99902306264728313E-001_dp
-    mat%mu = 1.86996231644730870E+000_dp
-    mat%h_n = 1.0E30_dp
-    mat%prefractured = .false.
+    call set_interface(mat, [1.97472395927967654E+002_dp, 7.05162764263538406E+001_dp, &
+        1.71049580762713411E+001_dp, 9.99902306264728313E-001_dp, &
+        1.86996231644730870E+000_dp, 1.0E30_dp], .false.)
     th0 = [-9.0243782677492590E-01_dp, 0.0000000000000000E+00_dp, 9.0243782677492590E-01_dp]
     thf = [-2.9170733223206347E-01_dp, 0.0000000000000000E+00_dp, 2.9170733223206347E-01_dp]
     ph = [0.0000000000000000E+00_dp, 0.0000000000000000E+00_dp, 0.0000000000000000E+00_dp]
     call interlock_general_ria(mat, 3, [3.3333333333333331E-01_dp, 3.3333333333333331E-01_dp, &
         3.3333333333333331E-01_dp], th0, thf, [1.0308378724310705E-04_dp, &
         1.7976931348623157E+308_dp, 1.0308378724310705E-04_dp], ph)
-    mat%effect(1) = .true.
-    mat%effect(2) = .true.
-    mat%effect(3) = .true.
-    mat%effect(4) = .true.
-    mat%effect(5) = .true.
-    call interlock_material_prepare(mat, stat, msg)
-    if (stat /= status_ok) then
-      call assert_true(.false., 'material: ' // trim(msg)); return
-    end if
+    if (.not. prepared(mat, [.true., .true., .true., .true., .true.])) return
     solver%scheme = 2
     solver%substep_tol = 2.12539906316697099E-004_dp
     call interlock_state_3d_init(mat, old)
@@ -231,14 +244,9 @@ contains
     type(interlock_state_3d_t) :: old
     real(dp) :: s(3)
     real(dp) :: th0(7), thf(7), ph(7)
-    integer :: stat
-    character(len=message_len) :: msg
-    mat%sigma0_n = 4.09665541562170893E+003_dp; mat%sigma0_t = 1.18913397021449828E+003_dp
-    mat%gc = 2.43062877452970213E+002_dp
-    mat%eta = 7.34005917607541969E-001_dp
-    mat%mu = 6.36711825672772291E-001_dp
-    mat%h_n = 1.16843805031055792E-001_dp
-    mat%prefractured = .true.
+    call set_interface(mat, [4.09665541562170893E+003_dp, 1.18913397021449828E+003_dp, &
+        2.43062877452970213E+002_dp, 7.34005917607541969E-001_dp, &
+        6.36711825672772291E-001_dp, 1.16843805031055792E-001_dp], .true.)
     th0 = [8.7204755692711555E-01_dp, 3.6717451745998268E-02_dp, -5.6657063597338531E-01_dp, &
         4.8694215548319292E-01_dp, 1.1844531079311238E+00_dp, -9.8014319901017377E-01_dp, &
         -1.3056148083952672E+00_dp]
@@ -254,15 +262,7 @@ contains
         [6.5425775824011078E-04_dp, 6.5425775824011078E-04_dp, 6.5425775824011078E-04_dp, &
         6.5425775824011078E-04_dp, 6.5425775824011078E-04_dp, 6.5425775824011078E-04_dp, &
         6.5425775824011078E-04_dp], ph)
-    mat%effect(1) = .false.
-    mat%effect(2) = .true.
-    mat%effect(3) = .true.
-    mat%effect(4) = .true.
-    mat%effect(5) = .true.
-    call interlock_material_prepare(mat, stat, msg)
-    if (stat /= status_ok) then
-      call assert_true(.false., 'material: ' // trim(msg)); return
-    end if
+    if (.not. prepared(mat, [.false., .true., .true., .true., .true.])) return
     solver%scheme = 2
     solver%substep_tol = 1.01218310898620710E-005_dp
     call interlock_state_3d_init(mat, old)
@@ -305,14 +305,9 @@ contains
     type(interlock_state_3d_t) :: old
     real(dp) :: s(3)
     real(dp) :: th0(13), thf(13), ph(13)
-    integer :: stat
-    character(len=message_len) :: msg
-    mat%sigma0_n = 3.89471849967853677E+003_dp; mat%sigma0_t = 1.15382264001123076E+003_dp
-    mat%gc = 2.09570850308926401E+003_dp
-    mat%eta = 9.99980192226486930E-001_dp
-    mat%mu = 3.19432712696390494E-002_dp
-    mat%h_n = 1.0E30_dp
-    mat%prefractured = .false.
+    call set_interface(mat, [3.89471849967853677E+003_dp, 1.15382264001123076E+003_dp, &
+        2.09570850308926401E+003_dp, 9.99980192226486930E-001_dp, &
+        3.19432712696390494E-002_dp, 1.0E30_dp], .false.)
     th0 = [6.4109827689600829E-01_dp, 1.1309695893558054E+00_dp, 1.3346505970029032E+00_dp, &
         1.4389998812868423E+00_dp, 1.0089312172365783E+00_dp, -9.0224247514810996E-01_dp, &
         -3.3907296190673714E-01_dp, -6.6809595412491740E-01_dp, 4.8042376758373340E-01_dp, &
@@ -338,15 +333,7 @@ contains
         2.0741934443170160E-06_dp, 2.0741934443170160E-06_dp, 2.0741934443170160E-06_dp, &
         2.0741934443170160E-06_dp, 2.0741934443170160E-06_dp, 2.0741934443170160E-06_dp, &
         2.0741934443170160E-06_dp], ph)
-    mat%effect(1) = .true.
-    mat%effect(2) = .true.
-    mat%effect(3) = .true.
-    mat%effect(4) = .true.
-    mat%effect(5) = .true.
-    call interlock_material_prepare(mat, stat, msg)
-    if (stat /= status_ok) then
-      call assert_true(.false., 'material: ' // trim(msg)); return
-    end if
+    if (.not. prepared(mat, [.true., .true., .true., .true., .true.])) return
     solver%scheme = 2
     solver%substep_tol = 8.80473608500347330E-004_dp
     call interlock_state_3d_init(mat, old)
@@ -406,14 +393,9 @@ contains
     type(interlock_state_3d_t) :: old
     real(dp) :: s(3)
     real(dp) :: th0(11), thf(11), ph(11)
-    integer :: stat
-    character(len=message_len) :: msg
-    mat%sigma0_n = 1.03175257501287291E+002_dp; mat%sigma0_t = 1.19222529053951718E+002_dp
-    mat%gc = 1.93844317549325629E+000_dp
-    mat%eta = 9.99914379630897576E-001_dp
-    mat%mu = 1.77589080247595810E+000_dp
-    mat%h_n = 1.0E30_dp
-    mat%prefractured = .false.
+    call set_interface(mat, [1.03175257501287291E+002_dp, 1.19222529053951718E+002_dp, &
+        1.93844317549325629E+000_dp, 9.99914379630897576E-001_dp, &
+        1.77589080247595810E+000_dp, 1.0E30_dp], .false.)
     th0 = [-9.4987647983236501E-01_dp, 0.0000000000000000E+00_dp, 9.4987647983236501E-01_dp, &
         -9.4987647983236501E-01_dp, 9.4987647983236501E-01_dp, -9.4987647983236501E-01_dp, &
         9.4987647983236501E-01_dp, -9.4987647983236501E-01_dp, 9.4987647983236501E-01_dp, &
@@ -434,15 +416,7 @@ contains
         1.2952169382477417E-05_dp, 1.2952169382477417E-05_dp, 1.2952169382477417E-05_dp, &
         1.2952169382477417E-05_dp, 1.2952169382477417E-05_dp, 1.2952169382477417E-05_dp, &
         1.2952169382477417E-05_dp, 1.2952169382477417E-05_dp], ph)
-    mat%effect(1) = .true.
-    mat%effect(2) = .true.
-    mat%effect(3) = .true.
-    mat%effect(4) = .true.
-    mat%effect(5) = .true.
-    call interlock_material_prepare(mat, stat, msg)
-    if (stat /= status_ok) then
-      call assert_true(.false., 'material: ' // trim(msg)); return
-    end if
+    if (.not. prepared(mat, [.true., .true., .true., .true., .true.])) return
     solver%scheme = 2
     solver%substep_tol = 0.00000000000000000E+000_dp
     call interlock_state_3d_init(mat, old)
@@ -495,14 +469,9 @@ contains
     type(interlock_state_3d_t) :: old
     real(dp) :: s(3)
     real(dp) :: th0(7), thf(7), ph(7)
-    integer :: stat
-    character(len=message_len) :: msg
-    mat%sigma0_n = 1.23623491796286794E+003_dp; mat%sigma0_t = 6.63846275328821594E+003_dp
-    mat%gc = 2.67623884817113913E+003_dp
-    mat%eta = 9.98346958046869348E-001_dp
-    mat%mu = 3.13501838896263541E-001_dp
-    mat%h_n = 1.0E30_dp
-    mat%prefractured = .false.
+    call set_interface(mat, [1.23623491796286794E+003_dp, 6.63846275328821594E+003_dp, &
+        2.67623884817113913E+003_dp, 9.98346958046869348E-001_dp, &
+        3.13501838896263541E-001_dp, 1.0E30_dp], .false.)
     th0 = [-1.3910362474991655E+00_dp, 0.0000000000000000E+00_dp, 1.3910362474991655E+00_dp, &
         -1.3910362474991655E+00_dp, 1.3910362474991655E+00_dp, -1.3910362474991655E+00_dp, &
         1.3910362474991655E+00_dp]
@@ -518,15 +487,7 @@ contains
         [7.3916070892614329E+01_dp, 1.7976931348623157E+308_dp, 7.3916070892614329E+01_dp, &
         7.3916070892614329E+01_dp, 7.3916070892614329E+01_dp, 7.3916070892614329E+01_dp, &
         7.3916070892614329E+01_dp], ph)
-    mat%effect(1) = .true.
-    mat%effect(2) = .true.
-    mat%effect(3) = .true.
-    mat%effect(4) = .true.
-    mat%effect(5) = .true.
-    call interlock_material_prepare(mat, stat, msg)
-    if (stat /= status_ok) then
-      call assert_true(.false., 'material: ' // trim(msg)); return
-    end if
+    if (.not. prepared(mat, [.true., .true., .true., .true., .true.])) return
     solver%scheme = 2
     solver%substep_tol = 2.06612241126813354E-005_dp
     call interlock_state_3d_init(mat, old)
