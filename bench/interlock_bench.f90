@@ -24,12 +24,13 @@ program interlock_bench
   use interlock_bench_scenes, only: scene_t, make_scene, run_scene, slip_at, n_effect_sets, &
       effect_set_names, make_effect_set, make_histories
   use interlock_bench_umat, only: umat_props, time_umat, time_umat_floor, time_umat_3d
+  use interlock_bench_precision_3d, only: precision_study_3d
   implicit none
 
   integer, parameter :: n_scenes = 3
   character(len=8), parameter :: scene_names(n_scenes) = [character(len=8) :: &
     'fig11', 'fig12', 'granite']
-  logical :: quick, do_cost, do_precision
+  logical :: quick, do_cost, do_precision, do_precision_3d
   character(len=16) :: dump_scene, dump_scheme
   real(dp) :: dump_tol
   integer :: dump_steps, profile_set, profile_scheme, profile_passes
@@ -70,6 +71,7 @@ program interlock_bench
   if (do_cost) call cost_study()
   if (do_cost) call cost_study_3d()
   if (do_precision) call precision_study()
+  if (do_precision_3d) call precision_study_3d_csv()
   if (problems > 0) then
     write (error_unit, '(a,i0,a)') 'interlock-bench: ', problems, ' problem(s), see above'
     error stop 1
@@ -83,6 +85,7 @@ contains
     quick = .false.
     do_cost = .true.
     do_precision = .true.
+    do_precision_3d = .true.
     out_dir = ''
     target_error = 1.0e-4_dp
     dump_scene = ''
@@ -111,7 +114,9 @@ contains
         case ('--only')
           do_cost = trim(val) == 'cost'
           do_precision = trim(val) == 'precision'
-          if (.not. (do_cost .or. do_precision)) call usage('--only takes cost or precision')
+          do_precision_3d = trim(val) == 'precision3d'
+          if (.not. (do_cost .or. do_precision .or. do_precision_3d)) &
+            call usage('--only takes cost, precision or precision3d')
         case ('--target')
           read (val, *, iostat=ios) target_error
           if (ios /= 0 .or. .not. target_error > 0.0_dp) call usage('--target takes a positive error')
@@ -183,7 +188,7 @@ contains
       write (unit, '(a)') 'interlock-bench: error: ' // trim(message)
     end if
     write (unit, '(a)') 'usage: interlock-bench --out DIR [--quick] ' // &
-      '[--only cost|precision] [--target ERR]'
+      '[--only cost|precision|precision3d] [--target ERR]'
     write (unit, '(a)') '       interlock-bench --profile SET SCHEME PASSES [TOL]  ' // &
       '(one cost configuration only, for valgrind/gprof: SET 0 bilinear, 1..5 effect sets; ' // &
       'SCHEME 1 explicit, 2 implicit, 3 trapezoidal; TOL substepping tolerance, default 0; 3 x 4000-point ' // &
@@ -194,7 +199,7 @@ contains
       'SCHEME explicit|implicit|trapezoidal)'
     write (unit, '(a)') '       interlock-bench --help | --version'
     write (unit, '(a)') '  writes DIR/cost.csv, DIR/umat_cost.csv, DIR/cost3d.csv, DIR/work_precision.csv, ' // &
-      'DIR/reference.csv, DIR/wp_summary.csv (DIR must exist)'
+      'DIR/reference.csv, DIR/wp_summary.csv, DIR/work_precision_3d.csv (DIR must exist)'
     write (unit, '(a)') '  exit status: 0 done, 1 a problem found (see the output), 2 a usage error'
     if (len_trim(message) > 0) call exit_program(2)
     call exit_program(0)
@@ -903,6 +908,16 @@ contains
   ! ------------------------------------------------------------------------------------------
   ! 2. Work-precision
   ! ------------------------------------------------------------------------------------------
+
+  !> Part 3b (interlock_bench_precision_3d): the 3D scenes, into work_precision_3d.csv.
+  subroutine precision_study_3d_csv()
+    integer :: u
+    logical :: ok
+    call open_csv('work_precision_3d.csv', u, 'scene,config,n_steps_per_segment,cpu_s,error')
+    call precision_study_3d(u, quick, ok)
+    close (u)
+    if (.not. ok) problems = problems + 1
+  end subroutine precision_study_3d_csv
 
   subroutine precision_study()
     real(dp), allocatable :: tols_explicit(:), tols_implicit(:), tols_trapezoidal(:)

@@ -86,4 +86,13 @@ if(TARGET interlock-history)
     WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
   set_tests_properties(stability_history_replay PROPERTIES LABELS stability
     FAIL_REGULAR_EXPRESSION "completed" PASS_REGULAR_EXPRESSION "stopped at step 1")
+  # A fuzzed 3D step with very fast wear under error-controlled substepping completes (it
+  # stopped after 100000 sub-increments when a rejection or a failed wear equation took the
+  # size below the smallest controlled one, where it never grew back).
+  add_test(NAME stability_history_replay_fast_wear
+    COMMAND interlock-history ${INTERLOCK_TEST_DATA}/stability_fast_wear_substeps.nml
+    WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  set_tests_properties(stability_history_replay_fast_wear PROPERTIES LABELS stability
+    TIMEOUT 120 PASS_REGULAR_EXPRESSION "case 0001: completed"
+    FAIL_REGULAR_EXPRESSION "stopped")
 endif()

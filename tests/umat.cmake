@@ -22,6 +22,12 @@ set_tests_properties(umat_3d PROPERTIES
   PASS_REGULAR_EXPRESSION "PROPS\\(21\\): property 'ria' = 2 is inadmissible: admissible ria an integer from 0 to 1.*PROPS\\(21\\): property 'ria' = NaN is inadmissible.*PROPS\\(22\\): property 'n_azimuths' = 0 is inadmissible: admissible n_azimuths an integer from 1 to 6.*NSTATV = 28 is inadmissible: admissible NSTATV >= 60 for a 3D interface \\(the 3D law\\) with a RIA of 7 planes.*STATEV\\(24\\) = NaN \\(frictional_slip_strike of plane 2\\) is inadmissible.*STRAN = \\(0, 0, NaN\\) mm is inadmissible: admissible \\|s_N\\|, \\|s_T1\\|, \\|s_T2\\| <= 1000000 mm.*PROPS\\(21\\): property 'ria' = 1 is inadmissible with a 2D element \\(NTENS = 2\\).*OK\n \\([0-9]+ tests?\\)"
   FAIL_REGULAR_EXPRESSION "FAIL|ERROR STOP|Encountered 1 or more failures")
 
+# --- An admissible frictional slip of 1e150 mm on a stiff interface: the 2D and 3D UMAT and
+#     the thin layer return finite values (a fuzzed 3D state too).
+interlock_add_suite(umat_huge_slip umat test_umat_huge_slip.f90 test_umat_interface.f90)
+target_link_libraries(umat_huge_slip PRIVATE interlock_umat)
+target_include_directories(umat_huge_slip PRIVATE ${PROJECT_BINARY_DIR}/umat/mod_umat)
+
 # --- The table tells the truth (defaults, PROPS slots, STATEV layout).
 interlock_add_pfunit_suite(umat_table LABEL umat TEST_SOURCES test_umat_table.pf)
 

@@ -33,6 +33,14 @@ contains
       sg = sign(1.0_dp, sf - sf_old)
       if (slip > 0.0_dp) then
         dslip = sg * [0.0_dp, 1.0_dp, -1.0_dp]
+        if (.not. sl(1) > 0.0_dp) then
+          ! s_kn = 0 exactly: in contact for every derivative (SPEC D13), the slide's with
+          ! mu p = 0 (the values are the same on both sides); at the cone's apex (no slip) a
+          ! kink where they stay 0.
+          dtauf(1) = -sg * mu * kn
+          dsf(1) = sg * mu * kn / kt
+          dslip(1) = sg * dsf(1)
+        end if
       else
         dslip = 0.0_dp
       end if
@@ -62,12 +70,15 @@ contains
   !> The return of friction_return in the fused kernels' form (scalars only, the material's
   !> inverse 1/K_t): mu_p = mu K_n <-s_n>_- is the bound (0 on an open plane or with friction
   !> off: the damaged part follows freely), mu_kn = mu K_n its derivative wrt -s_n, st the
-  !> tangential separation, sf_old the slip at the start. Returns the slip sf, the friction
-  !> traction tauf and its derivatives wrt (s_n, s_t), the slip increment |d sf| and its sign
-  !> (0 while sticking or without slip; d|d sf|/d s_t).
-  elemental subroutine friction_step(mu_p, mu_kn, kt, inv_kt, st, sf_old, sf, tauf, &
+  !> tangential separation, sf_old the slip at the start. `closed`: the plane is in contact
+  !> for the derivatives (s_n <= 0 with friction on): at s_n = 0 exactly, where mu_p = 0, the
+  !> derivatives are the closed side's (SPEC D13). Returns the slip sf, the friction traction
+  !> tauf and its derivatives wrt (s_n, s_t), the slip increment |d sf| and its sign (0 while
+  !> sticking or without slip; d|d sf|/d s_t).
+  elemental subroutine friction_step(mu_p, mu_kn, closed, kt, inv_kt, st, sf_old, sf, tauf, &
                                      dtauf_dsn, dtauf_dst, slip, slip_sign)
     real(dp), intent(in) :: mu_p, mu_kn, kt, inv_kt, st, sf_old
+    logical, intent(in) :: closed
     real(dp), intent(out) :: sf, tauf, dtauf_dsn, dtauf_dst, slip, slip_sign
     real(dp) :: tau_trial
     if (mu_p > 0.0_dp) then
@@ -94,7 +105,12 @@ contains
       dtauf_dst = 0.0_dp
       slip = abs(sf - sf_old)
       slip_sign = 0.0_dp
-      if (slip > 0.0_dp) slip_sign = sign(1.0_dp, sf - sf_old)
+      if (slip > 0.0_dp) then
+        slip_sign = sign(1.0_dp, sf - sf_old)
+        ! s_n = 0 exactly: the slide with mu p = 0 for the derivatives (the values are the
+        ! same on both sides); at the cone's apex (no slip) a kink where they stay 0.
+        if (closed) dtauf_dsn = -slip_sign * mu_kn
+      end if
     end if
   end subroutine friction_step
 

@@ -65,8 +65,9 @@ contains
     ! |tau_f| = mu p with the contact pressure p = K_n <-s_kn>_+.
     mu_p = 0.0_dp
     if (friction) mu_p = -mat%mu_eff * mat%kn * min(0.0_dp, sl_n)
-    call friction_step(mu_p, mat%mu_eff * mat%kn, mat%kt, mat%inv_kt, sl_t, sf_o, p%sf, p%tauf, &
-                       p%dtauf_n, p%dtauf_t, p%slip, p%dslip_t)
+    call friction_step(mu_p, mat%mu_eff * mat%kn, friction .and. .not. sl_n > 0.0_dp, mat%kt, &
+                       mat%inv_kt, sl_t, sf_o, p%sf, p%tauf, p%dtauf_n, p%dtauf_t, p%slip, &
+                       p%dslip_t)
 
     ! The traction (eq. 6): sigma_kn = K_n s_kn - D K_n <s_kn>_+,
     ! sigma_kt = (1 - D) K_t s_kt + D tau_f, and its derivative; tk = tau_f - K_t s_kt is

@@ -21,7 +21,8 @@ module interlock_integrate_3d
   use interlock_wear, only: wear_root_t, wear_root_begin, wear_root_update, worn_angle_slope
   use interlock_plane_law, only: plane_frame, wear_angle_error, add_wear_error, wear_error_of
   use interlock_plane_law_3d, only: plane_dual_t, plane_response_3d_t, plane_law_3d, &
-      plane_angle_frame, worn_angle_3d, start_pressure_3d, azimuths_t, azimuths_of
+      plane_angle_frame, worn_angle_3d, start_pressure_3d, azimuths_t, azimuths_of, &
+      slides_at_start
   use interlock_integrate, only: interlock_update
   use interlock_general_update, only: largest_increments
   use interlock_substep_control, only: next_sub_increment, count_attempt, after_failure, &
@@ -119,7 +120,7 @@ contains
     integer, intent(in) :: scheme
     real(dp), intent(in) :: s(3)
     type(interlock_state_3d_t), intent(in) :: old, new
-    real(dp) :: area, darea, c, sn, sl_n, atau, k_f, gam
+    real(dp) :: area, darea, c, sn, sl_n, atau, k_f, gam, slip
     integer :: k, n_eval
     k33 = 0.0_dp
     area = 1.0_dp
@@ -129,7 +130,16 @@ contains
     do k = 1, n_eval
       atau = abs(new%tauf(k))
       if (atau > 0.0_dp) then
-        k_f = mat%kt * (atau / (atau + mat%kt * abs(new%sf(k) - old%sf(k))))
+        slip = mat%kt * abs(new%sf(k) - old%sf(k))
+        if (scheme == scheme_trapezoidal .and. slip > 0.0_dp .and. &
+            ((new%tauf(k) > 0.0_dp) .eqv. (old%tauf(k) > 0.0_dp)) .and. &
+            plane_slides_at_start(mat, k, old)) then
+          ! D14's mean-direction rule, n_new = n_o turned by 2 atan(b / a), b = K_t s_kt,2
+          ! n_o,1, a = |tau_tr| + mu p: d tau_f,2 / d s_kt,2 = 2 K_t mu p / (|tau_tr| + mu p)
+          k_f = mat%kt * (2.0_dp * atau / (2.0_dp * atau + slip))
+        else
+          k_f = mat%kt * (atau / (atau + slip))
+        end if
       else
         ! closed (mu p > 0: sticking at a zero trial traction) or free; the angle the traction
         ! was computed at: the start one in the explicit scheme
@@ -146,6 +156,21 @@ contains
       k33 = k33 + gam * area * ((1.0_dp - new%damage(k)) * mat%kt + new%damage(k) * k_f)
     end do
   end function strike_stiffness
+
+  !> Plane k of a state in the (n, t1) plane slides: its friction traction is mu p of its
+  !> separation at its angle (D14's test, as mean_direction_return takes it; a separated state
+  !> does not slide).
+  pure logical function plane_slides_at_start(mat, k, old)
+    type(interlock_material_t), intent(in) :: mat
+    integer, intent(in) :: k
+    type(interlock_state_3d_t), intent(in) :: old
+    real(dp) :: c, sn, mu_p_o
+    plane_slides_at_start = .false.
+    if (old%s(1) * mat%inv_h_n >= 1.0_dp) return
+    call plane_frame(mat, k, old%theta(k), c, sn)
+    mu_p_o = mat%mu_eff * mat%kn * max(0.0_dp, -(c * old%s(1) + sn * old%s(2)))
+    plane_slides_at_start = slides_at_start(abs(old%tauf(k)), mu_p_o)
+  end function plane_slides_at_start
 
   !> The general three-dimensional update (interlock_update_3d's contract) for any material,
   !> solver and history. `info` comes reset.
@@ -468,7 +493,7 @@ contains
     logical, intent(out) :: ok
     real(dp), intent(out) :: e, dsig_dtheta(3)
     type(wear_root_t) :: rt
-    type(dual_t) :: c_o, sn_o, g_slip, g_trap, drv, theta, zeta, z
+    type(dual_t) :: c_o, sn_o, g_slip, g_trap, drv, theta, zeta, z, mu_p_o
     real(dp) :: a_end, fp, thp
     logical :: coupled, wears, trapezoidal
     integer :: i
@@ -480,12 +505,16 @@ contains
     coupled = solver%scheme /= scheme_explicit
     trapezoidal = solver%scheme == scheme_trapezoidal
     wears = mat%plane_wears(k)
-    ! The trapezoidal start value D_o mu p_o / 2 (also the error estimate's reference).
+    ! The trapezoidal start value D_o mu p_o / 2 (also the error estimate's reference); mu p_o
+    ! also decides whether the plane slides at the start (D14's mean-direction rule).
     g_trap = constant(0.0_dp)
+    mu_p_o = constant(0.0_dp)
     if (trapezoidal .or. estimate) then
       call plane_angle_frame(mat, k, o%theta, c_o, sn_o)
-      g_trap = (0.5_dp * o%dmg) * start_pressure_3d(mat, cp, sp, c_o, sn_o, s_o)
+      mu_p_o = start_pressure_3d(mat, cp, sp, c_o, sn_o, s_o)
+      g_trap = (0.5_dp * o%dmg) * mu_p_o
     end if
+    if (.not. trapezoidal) mu_p_o = constant(0.0_dp)
     if (.not. coupled) then
       a_end = 0.0_dp
       g_slip = o%dmg * abs(o%tauf(1))
@@ -503,7 +532,7 @@ contains
       ! d zeta); at zeta_o the stored angle and its slope, no exponential.
       thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), o%theta%v)
       theta%d(4) = thp
-      call evaluate(mat, cp, sp, k, theta, s, o, a_end, g_slip, trapezoidal, p, drv)
+      call evaluate(mat, cp, sp, k, theta, s, o, mu_p_o, a_end, g_slip, trapezoidal, p, drv)
       fp = 1.0_dp - drv%d(4)
       zeta = o%zeta
       if (drv%v > 0.0_dp) then
@@ -512,7 +541,7 @@ contains
           z = constant(rt%x)
           z%d(4) = 1.0_dp
           theta = worn_angle_3d(mat, k, z)
-          call evaluate(mat, cp, sp, k, theta, s, o, a_end, g_slip, trapezoidal, p, drv)
+          call evaluate(mat, cp, sp, k, theta, s, o, mu_p_o, a_end, g_slip, trapezoidal, p, drv)
           fp = 1.0_dp - drv%d(4)
           call wear_root_update(rt, rt%x - o%zeta%v - drv%v, fp, solver%newton_tol, &
                                 solver%newton_max_iterations)
@@ -531,7 +560,7 @@ contains
           z = constant(rt%x)
           z%d(4) = 1.0_dp
           theta = worn_angle_3d(mat, k, z)
-          call evaluate(mat, cp, sp, k, theta, s, o, a_end, g_slip, trapezoidal, p, drv)
+          call evaluate(mat, cp, sp, k, theta, s, o, mu_p_o, a_end, g_slip, trapezoidal, p, drv)
           fp = 1.0_dp - drv%d(4)
         end if
         zeta%v = rt%x
@@ -546,7 +575,7 @@ contains
     end if
     ! The traction's angle with column 4 = d / d theta at fixed s (the error estimate's).
     theta%d(4) = 1.0_dp
-    call evaluate(mat, cp, sp, k, theta, s, o, a_end, g_slip, trapezoidal, p, drv)
+    call evaluate(mat, cp, sp, k, theta, s, o, mu_p_o, a_end, g_slip, trapezoidal, p, drv)
     if (.not. (coupled .and. wears)) then
       zeta = o%zeta + drv
       if (.not. coupled .and. wears) then
@@ -566,7 +595,7 @@ contains
     if (estimate .and. wears) then
       if (coupled) then
         e = wear_angle_error(mat, k, solver%scheme, q%theta%v, o%theta%v, q%zeta%v, o%zeta%v, &
-                             p%wfric_dip%v, p%slip_dip%v * p%dip_share%v, g_slip%v, g_trap%v)
+                             p%wear_end%v, p%wear_start%v, g_slip%v, g_trap%v)
       else
         e = wear_angle_error(mat, k, solver%scheme, q%theta%v, o%theta%v, q%zeta%v, o%zeta%v, &
                              p%wfric_dip%v, p%slip_dip%v, g_slip%v, g_trap%v)
@@ -580,11 +609,12 @@ contains
   !> The plane law at angle theta and the scheme's wear driver G = a_end D |tau_f,1| |d sf_1| +
   !> g_slip |d sf_1| (explicit, implicit), with the trapezoidal start value the dip component of
   !> D_o mu p_o n: g_slip |d sf_1| times the dip share of the step's slip direction n.
-  pure subroutine evaluate(mat, cp, sp, k, theta, s, o, a_end, g_slip, trapezoidal, p, drv)
+  pure subroutine evaluate(mat, cp, sp, k, theta, s, o, mu_p_o, a_end, g_slip, trapezoidal, p, &
+                          drv)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: cp, sp
     integer, intent(in) :: k
-    type(dual_t), intent(in) :: theta, s(3), g_slip
+    type(dual_t), intent(in) :: theta, s(3), mu_p_o, g_slip
     type(plane_dual_t), intent(in) :: o
     real(dp), intent(in) :: a_end
     logical, intent(in) :: trapezoidal
@@ -592,9 +622,9 @@ contains
     type(dual_t), intent(out) :: drv
     type(dual_t) :: c, sn
     call plane_angle_frame(mat, k, theta, c, sn)
-    call plane_law_3d(mat, cp, sp, c, sn, s, o, p)
+    call plane_law_3d(mat, cp, sp, c, sn, s, o, mu_p_o, p)
     if (trapezoidal) then
-      drv = a_end * p%wfric_dip + g_slip * (p%slip_dip * p%dip_share)
+      drv = a_end * p%wear_end + g_slip * p%wear_start
     else
       drv = a_end * p%wfric_dip + g_slip * p%slip_dip
     end if

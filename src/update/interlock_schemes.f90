@@ -181,7 +181,8 @@ contains
     real(dp) :: skn, kmu, d_tmp, dd_db
     dg = 0.0_dp
     skn = c * s_o(1) + sn * s_o(2)
-    if (.not. (s_o(1) * mat%inv_h_n < 1.0_dp .and. skn < 0.0_dp)) return
+    ! (at s_kn = 0 exactly the closed side's derivative, SPEC D13)
+    if (.not. (s_o(1) * mat%inv_h_n < 1.0_dp .and. .not. skn > 0.0_dp)) return
     kmu = mat%mu_eff * mat%kn
     dg(1:2) = -0.5_dp * dmg_o * kmu * so_ratio * [c, sn]
     if (ncol > 2) then

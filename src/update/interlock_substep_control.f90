@@ -93,6 +93,9 @@ contains
       h = h * max(0.1_dp, 0.9_dp * sqrt(tol / err))
     end if
     h = scale(1.0_dp, exponent(h) - 1)
+    ! Error control takes no size below the smallest it accepts whatever the estimate (below
+    ! it, kept trials whose estimate stays above the tolerance would never grow back)
+    if (control) h = max(h, smallest_controlled_fraction)
   end subroutine next_size
 
   !> The largest stiffness the law can show (penalty, or traction over the asperity depth).

@@ -12,8 +12,9 @@ What is here:
   theta_f, zeta_0, phi) with the mapping of an azimuth outside [0, pi);
 - the RIAs `paper`, `azimuthal` (N_a, the plane order of section 9) and general lists;
 - PlaneState (D, beta, sf(2), zeta, theta, tauf(2)), virgin and pre-fractured;
-- step(): one step of every scheme (explicit, implicit, trapezoidal), with geometry decay,
-  D7 separation; the implicit and trapezoidal wear equations are solved per plane by a scan
+- step(): one step of every scheme (explicit, implicit, trapezoidal: the slip direction of a
+  plane that slides over the whole step by D14's mean-direction rule, solved as an equation in
+  the turn angle), with geometry decay, D7 separation; the implicit and trapezoidal wear equations are solved per plane by a scan
   from zeta_old and a bracketing (bisection / regula falsi) refinement to full precision;
 - energies (stored, damage and friction dissipation, work) accumulated along a history;
 - tangent_fd(): the tangent by central differences of step();
@@ -202,6 +203,9 @@ class PlaneResult:
     sig_n: float
     sig_t1: float
     sig_t2: float
+    # D14 (trapezoidal scheme): the start and end slip directions and the slip of the step when
+    # the mean-direction rule gave the slip direction; None under radial return
+    mean_dir: tuple = None
 
 
 def damage_of(beta, eta):
@@ -211,8 +215,59 @@ def damage_of(beta, eta):
     return max(0.0, min(1.0, (beta - 1.0) / (eta * beta)))
 
 
-def plane_law(mat, plane, old, theta, s):
-    """Points 2-5 of SPEC 9 for one plane at inclination theta, end-of-step separation s."""
+def slides_at_start(old, mup_start):
+    """D14: the plane slides at the start of the step, |tau_f,old| = mu p_old (to a relative
+    1e-10: the stored friction traction against mu p recomputed from the start separation)."""
+    return mup_start > 0.0 and math.hypot(old.tauf1, old.tauf2) >= (1.0 - 1e-10) * mup_start
+
+
+def mean_direction_slip(tr1, tr2, mup, n_o):
+    """D14's mean-direction rule on a plane sliding at the start (direction n_o) and at the end
+    (|tau_tr| > mu p). Unknown: the turn 2u of the slip direction over the step, n_new = n_o
+    turned by 2u; the slip increment is lam m with m = n_o turned by u (the mean of n_o and
+    n_new), and tau_f = mu p n_new = tau_tr - K_t lam m. Its component across m vanishes:
+    f(u) = (tau_tr - mu p n_new(u)) x m(u) = 0, solved on u in [-pi/4, pi/4] (a turn of at
+    most 90 deg) by the bracketing refinement below, split at u = 0 first. Returns (n_new, m, lam K_t) or None where the rule does not
+    apply (no root there, or lam <= 0: a reversal) and radial return is taken instead."""
+    def rot(v, a):
+        c, s = math.cos(a), math.sin(a)
+        return (c * v[0] - s * v[1], s * v[0] + c * v[1])
+
+    def f(u):
+        nn = rot(n_o, 2.0 * u)
+        m = rot(n_o, u)
+        d = (tr1 - mup * nn[0], tr2 - mup * nn[1])
+        return m[0] * d[1] - m[1] * d[0]
+
+    lo, hi = -0.25 * math.pi, 0.25 * math.pi
+    flo, fhi = f(lo), f(hi)
+    exact = None
+    if flo == 0.0 or fhi == 0.0:
+        exact = lo if flo == 0.0 else hi
+    elif (flo > 0.0) == (fhi > 0.0):
+        return None
+    else:
+        f0 = f(0.0)
+        if f0 == 0.0:
+            exact = 0.0
+        elif (f0 > 0.0) == (flo > 0.0):
+            lo, flo = 0.0, f0
+        else:
+            hi, fhi = 0.0, f0
+        if exact is None:
+            lo, flo, hi, fhi, exact, _ = refine_bracket(f, lo, flo, hi, fhi, 1e-16)
+    u = exact if exact is not None else (lo if abs(flo) < abs(fhi) else hi)
+    nn = rot(n_o, 2.0 * u)
+    m = rot(n_o, u)
+    lam_kt = m[0] * (tr1 - mup * nn[0]) + m[1] * (tr2 - mup * nn[1])
+    if not lam_kt > 0.0:
+        return None
+    return nn, m, lam_kt
+
+
+def plane_law(mat, plane, old, theta, s, mup_start=0.0):
+    """Points 2-5 of SPEC 9 for one plane at inclination theta, end-of-step separation s;
+    mup_start > 0: the start state's mu p, for D14's mean-direction rule (trapezoidal)."""
     m, e, q = frame(theta, plane.phi)
     s_kn, s_kt1, s_kt2 = dot(m, s), dot(e, s), dot(q, s)
     K_n, K_t = mat.K_n, mat.K_t
@@ -223,8 +278,9 @@ def plane_law(mat, plane, old, theta, s):
         D = damage_of(beta, mat.eta)
     else:
         beta, D = old.beta, old.D
-    # friction: isotropic Coulomb, radial return
+    # friction: isotropic Coulomb, radial return (D14's mean-direction rule where it applies)
     p = -K_n * min(0.0, s_kn)
+    mean_dir = None
     if s_kn >= 0.0:
         sf1, sf2, tf1, tf2 = s_kt1, s_kt2, 0.0, 0.0
     else:
@@ -236,7 +292,15 @@ def plane_law(mat, plane, old, theta, s):
             sf1, sf2 = old.sf1, old.sf2
             tf1, tf2 = tr1, tr2
         else:
-            if tr > 0.0:
+            d14 = None
+            if mup > 0.0 and slides_at_start(old, mup_start):
+                to = math.hypot(old.tauf1, old.tauf2)
+                n_o = (old.tauf1 / to, old.tauf2 / to)
+                d14 = mean_direction_slip(tr1, tr2, mup, n_o)
+            if d14 is not None:
+                n1, n2 = d14[0]
+                mean_dir = (n_o, d14[0], d14[2] / K_t)
+            elif tr > 0.0:
                 n1, n2 = tr1 / tr, tr2 / tr
             else:
                 n1, n2 = 0.0, 0.0
@@ -247,7 +311,7 @@ def plane_law(mat, plane, old, theta, s):
     sig_t1 = (1.0 - D) * K_t * s_kt1 + D * tf1
     sig_t2 = (1.0 - D) * K_t * s_kt2 + D * tf2
     return PlaneResult(theta, m, e, q, s_kn, s_kt1, s_kt2, D, beta, sf1, sf2, p, tf1, tf2,
-                       sig_n, sig_t1, sig_t2)
+                       sig_n, sig_t1, sig_t2, mean_dir)
 
 
 def worn_angle(plane, zeta):
@@ -265,6 +329,12 @@ def wear_increment_implicit(r, old):
     return r.D * abs(r.tauf1) * abs(r.sf1 - old.sf1)
 
 
+def start_pressure(mat, plane, old, s_old):
+    """mu p_o: the contact pressure of the start state at its start angle, times mu."""
+    m_o, _, _ = frame(old.theta, plane.phi)
+    return mat.mu * (-mat.K_n * min(0.0, dot(m_o, s_old)))
+
+
 def start_dip_friction(mat, plane, old, s_old, r):
     """Trapezoidal start value: |dip component of D_o mu p_o n|, p_o the contact pressure of the
     start state at its start angle, n the direction of the step's frictional slip."""
@@ -272,12 +342,19 @@ def start_dip_friction(mat, plane, old, s_old, r):
     dn = math.hypot(d1, d2)
     if dn == 0.0:
         return 0.0
-    m_o, _, _ = frame(old.theta, plane.phi)
-    p_o = -mat.K_n * min(0.0, dot(m_o, s_old))
-    return old.D * mat.mu * p_o * abs(d1) / dn
+    return old.D * start_pressure(mat, plane, old, s_old) * abs(d1) / dn
 
 
 def wear_increment_trapezoidal(mat, plane, old, s_old, r):
+    """The trapezoidal rule on the wear rate D |tau_f,1| |d sf_1 / dt|. Under D14 the slip flows
+    along the friction traction, whose direction turns from n_o to n_new over the step, so the
+    rate is D mu p n_1^2 |d sf| / dt at either end: (D_o mu p_o n_o1^2 + D mu p n_new1^2) lam / 2
+    with lam = |d sf|. Otherwise (radial return: one direction for the step) the start value is
+    the dip component of D_o mu p_o along the step's slip direction."""
+    if r.mean_dir is not None:
+        n_o, n_new, lam = r.mean_dir
+        mup_o = start_pressure(mat, plane, old, s_old)
+        return 0.5 * (old.D * mup_o * n_o[0] ** 2 + r.D * mat.mu * r.p * n_new[0] ** 2) * lam
     return 0.5 * (r.D * abs(r.tauf1) + start_dip_friction(mat, plane, old, s_old, r)) \
         * abs(r.sf1 - old.sf1)
 
@@ -382,13 +459,16 @@ def step(mat, s_old, s_new, old_states, scheme):
             zeta = old.zeta + old.D * abs(old.tauf1) * abs(r.sf1 - old.sf1)
             theta_next = worn_angle(plane, zeta)
         else:
+            mup_o = 0.0
             if scheme == "implicit":
                 def G(z):
                     rz = plane_law(mat, plane, old, worn_angle(plane, z), s)
                     return wear_increment_implicit(rz, old)
             else:
+                mup_o = start_pressure(mat, plane, old, so)
+
                 def G(z):
-                    rz = plane_law(mat, plane, old, worn_angle(plane, z), s)
+                    rz = plane_law(mat, plane, old, worn_angle(plane, z), s, mup_o)
                     return wear_increment_trapezoidal(mat, plane, old, so, rz)
             if plane.zeta0 == INF or plane.theta0 == plane.thetaf:
                 zeta = old.zeta + G(old.zeta)     # theta does not depend on zeta
@@ -396,7 +476,7 @@ def step(mat, s_old, s_new, old_states, scheme):
                 g0 = G(old.zeta)
                 zeta, _ = smallest_root(lambda z: z - old.zeta - G(z), old.zeta, g0)
             theta_next = worn_angle(plane, zeta)
-            r = plane_law(mat, plane, old, theta_next, s)
+            r = plane_law(mat, plane, old, theta_next, s, mup_o)
         new_states.append(PlaneState(r.D, r.beta, r.sf1, r.sf2, zeta, theta_next,
                                      r.tauf1, r.tauf2))
         results.append(r)

@@ -94,16 +94,15 @@ contains
   !> The order in the step of a history integrated by `scheme` (scheme_explicit, _implicit,
   !> _trapezoidal) in `n_components` dimensions (2 or 3), with (`extrapolate`) or without the
   !> history's global Richardson extrapolation. This states the schemes' measured orders
-  !> (docs/model.md section 5, SPEC section 9); the discretization check's bias estimate and
-  !> advice follow from it. Explicit and implicit: first order. Trapezoidal: second order in 2D;
-  !> first order in 3D, where its slip direction is radial return (SPEC D14 makes it second
-  !> order there: then this returns 2 for it in 3D too). Extrapolation, 2 u(2n) - u(n): second
-  !> order in 2D from any scheme; in 3D not measured, so counted as the scheme's own order.
+  !> (docs/model.md sections 5 and 9); the discretization check's bias estimate and advice
+  !> follow from it. Explicit and implicit: first order. Trapezoidal: second order in 2D and in
+  !> 3D (its slip direction by SPEC D14's mean-direction rule). Extrapolation, 2 u(2n) - u(n):
+  !> second order in 2D from any scheme; in 3D not measured, so counted as the scheme's own order.
   pure integer function scheme_order(scheme, n_components, extrapolate) result(order)
     integer, intent(in) :: scheme, n_components
     logical, intent(in) :: extrapolate
     order = 1
-    if (n_components == 2 .and. (scheme == scheme_trapezoidal .or. extrapolate)) order = 2
+    if (scheme == scheme_trapezoidal .or. (n_components == 2 .and. extrapolate)) order = 2
   end function scheme_order
 
   !> "name = value, ..." of every parameter, as the deck gives them (angles as magnitudes).
