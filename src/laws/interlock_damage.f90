@@ -42,7 +42,7 @@ contains
     gd_t = 0.0_dp
     ! The square root only where damage may grow: sqrt(x) <= b for every x <= fl(b^2) (b >= 0,
     ! round to nearest), so the test on the squares skips no growth the test on beta_eq makes,
-    ! and the one on beta_eq itself decides as before.
+    ! and the test on beta_eq itself decides.
     beq2 = an * an + at * at
     if (.not. beq2 > beta_old * beta_old) return
     beq = sqrt(beq2)
