@@ -34,6 +34,7 @@ NOT_TESTS = {
     "history_x": "a dataset of the fit's HDF5 output",
     "history_y": "a dataset of the fit's HDF5 output",
     "umat_abaqus": "a function of CalculiX",
+    "calculix_linear_iteration": "a function of the thin layer (umat/interlock_umat_layer.f90)",
 }
 # A program's sources: where its options are spelled.
 PROGRAM_SOURCES = {
