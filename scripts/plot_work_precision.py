@@ -5,7 +5,8 @@ scheme/tolerance, one panel per scene.
 usage: /usr/bin/python3 scripts/plot_work_precision.py DIR [-o docs/work_precision.png]
        [--target 1e-4]
        /usr/bin/python3 scripts/plot_work_precision.py DIR --markdown
-DIR holds work_precision.csv (and reference.csv, cost.csv, wp_summary.csv) written by
+DIR holds work_precision.csv (and reference.csv, cost.csv, wp_summary.csv, cost3d.csv,
+work_precision_3d.csv) written by
 `interlock-bench --out DIR`. --markdown prints the tables of docs/bench.md from those files
 instead of plotting (so that every number in the document comes from one run).
 """
@@ -120,6 +121,7 @@ def markdown(d):
         print(f"| {r['scene']} | {r['config']} | {float(r['cpu_s_at_target']):.3g}"
               f"{' (x)' if r['extrapolated'] == 'T' else ''} | "
               f"{ratio:.1f} | {r['n_steps_first_below'] if r['n_steps_first_below'] != '-1' else '-'} |")
+    markdown_3d(d)
     ref = os.path.join(d, "reference.csv")
     if os.path.exists(ref):
         print("\n| scene | reference steps | uncertainty | plain implicit error at those steps |")
@@ -127,6 +129,40 @@ def markdown(d):
         for r in read_csv(ref):
             print(f"| {r['scene']} | {r['n_reference']} | {float(r['uncertainty']):.1e} | "
                   f"{float(r['plain_error_at_n_reference']):.1e} |")
+
+
+def markdown_3d(d):
+    """Parts 1b and 3b: the 3D update's cost against the 2D one, and the 3D work-precision."""
+    cost3d = os.path.join(d, "cost3d.csv")
+    if os.path.exists(cost3d):
+        # The update's name holds commas: the scheme is the first field, the numbers the last four.
+        print("\nCost per call in three dimensions (part 1b):\n")
+        print("| scheme | update | ns/call | x 2D update |")
+        print("|---|---|---:|---:|")
+        with open(cost3d) as f:
+            for line in f.read().splitlines()[1:]:
+                fields = line.split(",")
+                scheme, ns, ratio = fields[0], float(fields[-4]), float(fields[-3])
+                update = ",".join(fields[1:-4]).strip()
+                print(f"| {scheme} | {update} | {ns:.1f} | {ratio:.2f} |")
+    wp3d = os.path.join(d, "work_precision_3d.csv")
+    if not os.path.exists(wp3d):
+        return
+    rows = read_csv(wp3d)
+    for scene in dict.fromkeys(r["scene"] for r in rows):
+        srows = [r for r in rows if r["scene"] == scene]
+        counts = sorted({int(r["n_steps_per_segment"]) for r in srows})
+        cols = counts[2::2]
+        print(f"\n*{scene}* (part 3b) — error (CPU ms per run) at n steps per segment:\n")
+        print("| configuration | " + " | ".join(f"n = {n}" for n in cols) + " |")
+        print("|---|" + "---:|" * len(cols))
+        for cfg in dict.fromkeys(r["config"] for r in srows):
+            cells = []
+            for n in cols:
+                m = [r for r in srows if r["config"] == cfg and int(r["n_steps_per_segment"]) == n]
+                cells.append(f"{fmt_err(m[0]['error'])} ({1e3 * float(m[0]['cpu_s']):.1f})"
+                             if m else "-")
+            print(f"| {cfg} | " + " | ".join(cells) + " |")
 
 
 def main():
