@@ -361,7 +361,7 @@ def mode_jumps(program, data, work):
         r = subprocess.run([program, "--output-dir", work, path], capture_output=True, text=True)
         said = "warning: planes slide or wear within a segment of one step (t = 0 to 1)" in r.stderr
         check(r.returncode == 0 and said == warned and
-              (not warned or "give that segment more steps" in r.stderr),
+              (not warned or "give each such segment more steps" in r.stderr),
               f"{stem}: exit status {r.returncode}, " + ("warned" if said else "no warning")
               + f" (expected {'a warning' if warned else 'none'})")
     n = 600

@@ -200,7 +200,7 @@ contains
         write (error_unit, '(a)') path // ': case ' // trim(cbuf) // ': warning: planes ' // &
           'slide or wear within a segment of one step (' // writer%sliding_jumps // '): ' // &
           'the state at its end is the scheme''s, not the law''s (the schemes differ there, ' // &
-          'whatever the steps elsewhere); give that segment more steps to follow the law ' // &
+          'whatever the steps elsewhere); give each such segment more steps to follow the law ' // &
           '(docs/deck-format.md, "steps")'
       end if
     end do
