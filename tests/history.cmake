@@ -142,12 +142,12 @@ foreach(mode overwrite fulldisk tmpfs signals pipe longname memory)
 endforeach()
 
 # Usage errors of the programs: message and usage on stderr, status 2
-# (interlock-history: 1), no ERROR STOP or backtrace; --help and --version on stdout, status 0;
+# (interlock-history and interlock-fit: 1), no ERROR STOP or backtrace; --help and --version on stdout, status 0;
 # nothing written into the working folder (interlock-bench needs --out).
 # (interlock-fuzz is defined in stability.cmake, after this file: generator expressions resolve
 # it at generate time.)
-set(cli_programs history=$<TARGET_FILE:interlock-history> query=$<TARGET_FILE:interlock_query>
-    fuzz=$<TARGET_FILE:interlock-fuzz>)
+set(cli_programs history=$<TARGET_FILE:interlock-history> fit=$<TARGET_FILE:interlock-fit>
+    query=$<TARGET_FILE:interlock_query> fuzz=$<TARGET_FILE:interlock-fuzz>)
 if(INTERLOCK_BUILD_BENCH)
   list(APPEND cli_programs bench=$<TARGET_FILE:interlock-bench>)
 endif()
