@@ -108,9 +108,11 @@ set_tests_properties(history_newton_tol_eps PROPERTIES LABELS history TIMEOUT 30
   PASS_REGULAR_EXPRESSION "case 0001: completed" FAIL_REGULAR_EXPRESSION "stopped")
 
 # --help documents the options and the exit status.
-add_test(NAME history_help COMMAND interlock-history --help)
-set_tests_properties(history_help PROPERTIES LABELS history
-  PASS_REGULAR_EXPRESSION "--output-dir DIR.*--version.*Exit status:.*0  every case.*1  a deck was rejected.*2  every file was written.*iterations <= newton_max_iterations.*extrapolate = .true.*2 u\\(2n\\) - u\\(n\\)")
+interlock_output_check(check EXPECT "--output-dir DIR" "--version" "Exit status:"
+  "0  every case" "1  a deck was rejected" "2  every file was written"
+  "iterations <= newton_max_iterations" "extrapolate = .true." "2 u\\(2n\\) - u\\(n\\)")
+add_test(NAME history_help COMMAND ${check} $<TARGET_FILE:interlock-history> --help)
+set_tests_properties(history_help PROPERTIES LABELS history)
 
 interlock_add_suite(history_mixed_control history test_history_mixed_control.f90)
 target_link_libraries(history_mixed_control PRIVATE interlock_driver)
