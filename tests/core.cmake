@@ -16,7 +16,7 @@ function(interlock_add_core_suite stem)
     LINK_LIBRARIES interlock_core_testlib)
 endfunction()
 
-foreach(stem tangent closed_forms limits invariants kinematics damage friction wear geometry
+foreach(stem tangent closed_forms limits invariants kinematics damage friction wear geometry plane_law
         reduction3d isotropy3d closed_forms3d tangent3d order3d
         kernels update_input state_frame numbers)
   interlock_add_core_suite(${stem})
