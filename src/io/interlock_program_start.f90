@@ -2,18 +2,19 @@
 !> interlock-fit): the command line (-h/--help, --version, -d/--output-dir DIR, -q/--quiet where
 !> the program has it, `--`, the decks), the output folder (an existing folder, checked before
 !> any work), the signal guard's handlers (a signal ends the program without the Fortran
-!> runtime's backtrace and removes the temporary files: interlock_posix.c) and the HDF5 library.
+!> runtime's backtrace and removes the temporary files: interlock_posix.c) and the HDF5 library;
+!> and its end (`program_end`).
 !> A usage error prints its message and the usage on standard error and ends the program with
 !> status 1; --help and --version print on standard output and end it with status 0.
 module interlock_program_start
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
   use interlock_cli, only: exit_program, command_argument, command_text
   use interlock_files, only: is_folder, guard_signals
-  use interlock_h5, only: h5_open_library
+  use interlock_h5, only: h5_open_library, h5_close_library
   use interlock_version, only: interlock_version_string
   implicit none
   private
-  public :: program_start_t, deck_path_t, program_start, in_output_dir
+  public :: program_start_t, deck_path_t, program_start, program_end, in_output_dir
 
   !> One deck named on the command line.
   type :: deck_path_t
@@ -120,6 +121,15 @@ contains
     end subroutine start_error
 
   end subroutine program_start
+
+  !> The end of a program that program_start started: the HDF5 library closed (every file is
+  !> closed by then), exit status `rc`.
+  subroutine program_end(rc)
+    integer, intent(in) :: rc
+    integer :: stat
+    call h5_close_library(stat)
+    call exit_program(rc)
+  end subroutine program_end
 
   !> The file `name` in the output folder `output_dir` (its base name there), or `name` itself
   !> when no output folder is given.

@@ -5,11 +5,10 @@
 !> (max_iterations, or no step lowers the cost).
 program interlock_fit
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-  use interlock_cli, only: exit_program, folder_writable, warn
-  use interlock_program_start, only: program_start_t, program_start, in_output_dir
+  use interlock_cli, only: folder_writable, warn
+  use interlock_program_start, only: program_start_t, program_start, program_end, in_output_dir
   use interlock, only: dp, format_integer, format_real, scheme_name, &
       scheme_trapezoidal
-  use interlock_h5, only: h5_close_library
   use interlock_mixed_control, only: history_t
   use interlock_history_output, only: output_check_target
   use interlock_fit_deck, only: fit_t, read_fit_deck, join_selected, output_names, folder_of
@@ -24,12 +23,11 @@ program interlock_fit
   implicit none
 
   type(program_start_t) :: start
-  integer :: stat, rc
+  integer :: rc
 
   call program_start('interlock-fit', usage, .true., .true., start)
   call run_fit(start%decks(1)%path, rc)
-  call h5_close_library(stat)
-  call exit_program(rc)
+  call program_end(rc)
 
 contains
 

@@ -7,8 +7,7 @@
 !> (interlock_posix.c).
 program interlock_history
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-  use interlock_cli, only: exit_program
-  use interlock_program_start, only: program_start_t, program_start, in_output_dir
+  use interlock_program_start, only: program_start_t, program_start, program_end, in_output_dir
   use interlock, only: interlock_material_t, interlock_solver_t, interlock_state_3d_t, status_ok
   use interlock, only: dp
   use interlock_deck, only: deck_t, read_deck, deck_case, deck_n_cases, deck_loading
@@ -16,20 +15,18 @@ program interlock_history
   use interlock_mixed_control, only: run_history, run_history_extrapolated
   use interlock_history_output, only: output_t, case_writer_t, output_check_target, output_open, &
       output_begin_case, output_end_case, output_close, output_abort
-  use interlock_h5, only: h5_close_library
   use interlock_files, only: is_folder
   implicit none
 
   type(program_start_t) :: start
-  integer :: i, rc, stat
+  integer :: i, rc
 
   rc = 0
   call program_start('interlock-history', usage, .false., .false., start)
   do i = 1, size(start%decks)
     call run_deck(start%decks(i)%path, rc)
   end do
-  call h5_close_library(stat)
-  call exit_program(rc)
+  call program_end(rc)
 
 contains
 
