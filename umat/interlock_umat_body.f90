@@ -89,8 +89,8 @@
 !> statev_to_state set what the update reads). The step fraction (interlock_step_control)
 !> interpolates only when a bound is exceeded (bounds_met, one test per plane, first). This
 !> file and the checks' are compiled for link-time optimisation with the UMAT's path
-!> (umat/CMakeLists.txt), so that the STATEV checks and copies inline here. Messages are built
-!> only on failure, in the support module's procedures after the check sequence.
+!> (umat/CMakeLists.txt), so that the check sequence, the STATEV checks and copies inline here.
+!> Messages are built only on failure, in umat/interlock_umat_reports.f90.
 !> interlock-bench measures the UMAT call against its update (docs/bench.md).
 !>
 !> **Threads.** No SAVE'd, module or COMMON state is written but the table of the messages
@@ -98,8 +98,9 @@
 !> lock); the procedure is `recursive` so that every local lives on the stack: safe to call
 !> from many threads at once.
 module interlock_umat_body
-  use interlock_umat_support, only: umat_check_call, umat_update_failed, &
-      umat_symmetric_tangent_wanted, umat_energies, lower_pnewdt
+  use interlock_umat_support, only: umat_check_call, umat_symmetric_tangent_wanted, &
+      umat_energies
+  use interlock_umat_reports, only: umat_update_failed, lower_pnewdt
   use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_t, &
       interlock_info_t, interlock_update, umat_controls_t, status_ok
   use interlock_step_control, only: step_fraction
@@ -164,7 +165,7 @@ contains
     end associate
 
     ! --- Bad input and a diverged global iteration: the sequence both bodies run.
-    call umat_check_call(NTENS, NSTATV, NPROPS, STRESS, STATEV, STRAN, DSTRAN, PROPS, PNEWDT, &
+    call umat_check_call(2, NTENS, NSTATV, NPROPS, STRESS, STATEV, STRAN, DSTRAN, PROPS, PNEWDT, &
                          NOEL, NPT, KINC, CMNAME, mat, solver, controls, nsv, s, ok, &
                          layer_props_offset, layer_nstatv_extra)
     if (.not. ok) return

@@ -27,8 +27,9 @@
 !> **Threads.** No SAVE'd, module or COMMON state is written but the messages' table (under
 !> its lock); `recursive`: every local on the stack.
 module interlock_umat_body_3d
-  use interlock_umat_support, only: umat_check_call, umat_update_failed, &
-      umat_symmetric_tangent_wanted, umat_energies, lower_pnewdt
+  use interlock_umat_support, only: umat_check_call, umat_symmetric_tangent_wanted, &
+      umat_energies
+  use interlock_umat_reports, only: umat_update_failed, lower_pnewdt
   use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_3d_t, &
       interlock_info_t, interlock_update_3d, umat_controls_t, status_ok
   use interlock_step_control, only: step_fraction_3d
@@ -91,7 +92,7 @@ contains
 
     ! --- Bad input and a diverged global iteration: the sequence both bodies run (the
     ! NSTATV the RIA needs, nsv, is known once the PROPS are).
-    call umat_check_call(NTENS, NSTATV, NPROPS, STRESS, STATEV, STRAN, DSTRAN, PROPS, PNEWDT, &
+    call umat_check_call(3, NTENS, NSTATV, NPROPS, STRESS, STATEV, STRAN, DSTRAN, PROPS, PNEWDT, &
                          NOEL, NPT, KINC, CMNAME, mat, solver, controls, nsv, s, ok, &
                          layer_props_offset, layer_nstatv_extra)
     if (.not. ok) return

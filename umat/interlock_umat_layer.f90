@@ -81,7 +81,7 @@ module interlock_umat_layer
       umat_nstatv_3d, props_n_planes_3d
   use interlock_numbers, only: key_in_range
   use interlock_umat_body, only: interlock_umat_cohesive
-  use interlock_umat_support, only: diverged_iteration_message, say_at_point, lower_pnewdt
+  use interlock_umat_reports, only: diverged_iteration_message, say_at_point, lower_pnewdt
   use interlock_step_control, only: pnewdt_diverged, pnewdt_none, &
       separation_increment_bits => increment_bits
   use interlock_umat_body_3d, only: interlock_umat_cohesive_3d
