@@ -1,14 +1,14 @@
 #!/usr/bin/python3
 """Usage errors of the command-line programs.
 
-usage: test_cli_usage.py WORK_DIR NAME=PROGRAM...   (NAME: history, query, bench, fuzz)
+usage: test_cli_usage.py WORK_DIR NAME=PROGRAM...   (NAME: history, fit, query, bench, fuzz)
 
 A usage error (no argument where one is needed, an unknown option, an option without its
 value, a value that is not a number, a folder that does not exist) prints a message and the
 usage on stderr, nothing on stdout (every option is checked before any work: interlock-query
-prints nothing before a bad trailing option), and exits with status 2 (interlock-history: 1,
-its documented status for a wrong option) within seconds, without a Fortran "ERROR STOP" or a
-backtrace; --help prints the usage on stdout and --version the version, both with status 0.
+prints nothing before a bad trailing option), and exits with status 2 (interlock-history and
+interlock-fit: 1, their documented status for a wrong option) within seconds, without a
+Fortran "ERROR STOP" or a backtrace; --help prints the usage on stdout and --version the version, both with status 0.
 interlock-bench without --out writes nothing into the working folder.
 Every program runs in an empty folder, which must stay empty.
 """
@@ -19,6 +19,8 @@ import sys
 
 CASES = {
     "history": [([], 1), (["--bogus"], 1), (["--output-dir"], 1)],
+    "fit": [([], 1), (["--bogus"], 1), (["--output-dir"], 1), (["a.nml", "b.nml"], 1),
+            (["--quiet", "--output-dir"], 1)],
     "query": [([], 2), (["--bogus"], 2), (["--props", "--bogus"], 2),
               (["--markdown", "--properties", "--bogus"], 2)],
     "bench": [([], 2), (["--bogus"], 2), (["--quick"], 2), (["--out"], 2),

@@ -80,12 +80,13 @@ module interlock_umat_layer
       n_required_properties, n_properties, separation_bound, is_finite_bits, is_nan_value, &
       umat_nstatv_3d, props_n_planes_3d
   use interlock_numbers, only: key_in_range
-  use interlock_umat_body, only: interlock_umat_cohesive, diverged_iteration_message
+  use interlock_umat_body, only: interlock_umat_cohesive
+  use interlock_umat_reports, only: diverged_iteration_message, say_at_point, lower_pnewdt
   use interlock_step_control, only: pnewdt_diverged, pnewdt_none, &
       separation_increment_bits => increment_bits
   use interlock_umat_body_3d, only: interlock_umat_cohesive_3d
-  use interlock_umat_messages, only: umat_say, said_argument, said_start_strain, &
-      said_diverged, said_layer_axes
+  use interlock_umat_messages, only: said_argument, said_start_strain, said_diverged, &
+      said_layer_axes
   implicit none
   private
   public :: interlock_umat_layer_point, host_abaqus, host_calculix, layer_nprops_head, &
@@ -408,15 +409,14 @@ contains
         end if
       end do
       if (abs(strain(worst)) <= maxval(abs(strain(comp(1:m))))) return
-      call umat_say(CMNAME, said_layer_axes, 'interlock UMAT (layer): warning: element ' // &
-        format_integer(NOEL) // ', point ' // format_integer(NPT) // " (material '" // &
-        trim(CMNAME) // "', increment " // format_integer(KINC) // '): the strain of ' // &
+      call say_at_point('interlock UMAT (layer): warning: ', 'the strain of ' // &
         'component ' // format_integer(worst) // ' = ' // format_real(strain(worst)) // &
         ', which does not involve normal_axis = ' // format_integer(normal) // ', exceeds ' // &
         format_real(axes_suspect_strain) // ' and the interface strains (' // &
         format_reals(strain(comp(1:m))) // '): in a ' // &
         'thin layer only the components of its normal are large; is normal_axis the ' // &
-        "layer's thin direction in the element's local axes (*ORIENTATION)?")
+        "layer's thin direction in the element's local axes (*ORIENTATION)?", said_layer_axes, &
+        NOEL, NPT, KINC, CMNAME)
     end subroutine check_axes
 
     !> A diverged global iteration: component i of DSTRAN, or of the end strain, out of range.
@@ -437,12 +437,10 @@ contains
         call request(0.0_dp, .true.)
         return
       end if
-      call umat_say(CMNAME, said_diverged, 'interlock UMAT (layer): element ' // &
-        format_integer(NOEL) // ', point ' // format_integer(NPT) // " (material '" // &
-        trim(CMNAME) // "', increment " // format_integer(KINC) // '): ' // &
-        trim(diverged_iteration_message('DSTRAN(' // format_integer(i) // ') = ' // &
-        format_real(DSTRAN(i)), '|h strain| <= ' // format_real(separation_bound) // ' mm (h = ' &
-        // format_real(h) // ' mm)')))
+      call say_at_point('interlock UMAT (layer): ', diverged_iteration_message('DSTRAN(' // &
+        format_integer(i) // ') = ' // format_real(DSTRAN(i)), '|h strain| <= ' // &
+        format_real(separation_bound) // ' mm (h = ' // format_real(h) // ' mm)'), &
+        said_diverged, NOEL, NPT, KINC, CMNAME)
       call request(pnewdt_diverged, .false.)
     end subroutine diverged
 
@@ -486,9 +484,7 @@ contains
     subroutine fail(why, kind)
       character(len=*), intent(in) :: why
       integer, intent(in) :: kind
-      call umat_say(CMNAME, kind, 'interlock UMAT (layer): element ' // format_integer(NOEL) &
-        // ', point ' // format_integer(NPT) // " (material '" // trim(CMNAME) // &
-        "', increment " // format_integer(KINC) // '): ' // trim(why))
+      call say_at_point('interlock UMAT (layer): ', why, kind, NOEL, NPT, KINC, CMNAME)
       call request(-1.0_dp, .true.)
     end subroutine fail
 
@@ -508,12 +504,7 @@ contains
           PNEWDT = min(PNEWDT, wanted)
         end if
       case default
-        wanted = merge(-1.0_dp, factor, stop_analysis)
-        if (.not. is_finite_bits(PNEWDT)) then
-          PNEWDT = wanted
-        else if (wanted < PNEWDT) then
-          PNEWDT = wanted
-        end if
+        call lower_pnewdt(PNEWDT, merge(-1.0_dp, factor, stop_analysis))
       end select
     end subroutine request
 

@@ -4,7 +4,7 @@ module interlock_damage
   use interlock_kinds, only: dp
   implicit none
   private
-  public :: equivalent_displacement, damage_of_beta, damage_dissipation_increment, damage_growth
+  public :: equivalent_displacement, damage_of_beta, damage_growth
 
 contains
 
@@ -84,17 +84,5 @@ contains
       end if
     end if
   end subroutine damage_of_beta
-
-  !> Energy dissipated by damage while beta grows from beta_old to beta_new, per unit plane
-  !> area, for the elastic part: the integral of Y dD with Y = c beta^2 / 2 (c = K_n s_0n^2 =
-  !> K_t s_0t^2 = 2 Gc_bar (1 - eta)) is exactly c (beta_new - beta_old) / (2 eta) over the
-  !> range where D grows, whatever the step size. (The friction term of Y is added by the
-  !> caller at first order.)
-  pure real(dp) function damage_dissipation_increment(eta, beta_break, c, beta_old, beta_new) &
-      result(dw)
-    real(dp), intent(in) :: eta, beta_break, c, beta_old, beta_new
-    dw = 0.5_dp * c / eta * (min(max(beta_new, 1.0_dp), beta_break) - &
-                             min(max(beta_old, 1.0_dp), beta_break))
-  end function damage_dissipation_increment
 
 end module interlock_damage

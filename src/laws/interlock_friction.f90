@@ -4,71 +4,11 @@ module interlock_friction
   use interlock_kinds, only: dp
   implicit none
   private
-  public :: friction_return, friction_free, friction_stick, friction_slide, friction_step
-
-  integer, parameter :: friction_free = 0   !< mu p = 0: the damaged part carries no shear
-  integer, parameter :: friction_stick = 1
-  integer, parameter :: friction_slide = 2
+  public :: friction_step
 
 contains
 
-  !> Return mapping. Derivatives are with respect to (s_kn, s_kt, sf_old).
-  !> `slip` = |sf - sf_old| and its gradient are returned as the wear and dissipation drivers.
-  pure subroutine friction_return(kn, kt, mu, sl, sf_old, sf, tauf, dsf, dtauf, slip, dslip, &
-                                  branch)
-    real(dp), intent(in) :: kn, kt, mu, sl(2), sf_old
-    real(dp), intent(out) :: sf, tauf, dsf(3), dtauf(3), slip, dslip(3)
-    integer, intent(out) :: branch
-    real(dp) :: mu_p, tau_trial, sg
-
-    mu_p = -mu * kn * min(0.0_dp, sl(1))
-    if (.not. (mu_p > 0.0_dp)) then
-      ! Open plane or no friction: the damaged part follows freely (SPEC section 6: not a kink).
-      branch = friction_free
-      sf = sl(2)
-      tauf = 0.0_dp
-      dsf = [0.0_dp, 1.0_dp, 0.0_dp]
-      dtauf = 0.0_dp
-      slip = abs(sf - sf_old)
-      sg = sign(1.0_dp, sf - sf_old)
-      if (slip > 0.0_dp) then
-        dslip = sg * [0.0_dp, 1.0_dp, -1.0_dp]
-        if (.not. sl(1) > 0.0_dp) then
-          ! s_kn = 0 exactly: in contact for every derivative (SPEC D13), the slide's with
-          ! mu p = 0 (the values are the same on both sides); at the cone's apex (no slip) a
-          ! kink where they stay 0.
-          dtauf(1) = -sg * mu * kn
-          dsf(1) = sg * mu * kn / kt
-          dslip(1) = sg * dsf(1)
-        end if
-      else
-        dslip = 0.0_dp
-      end if
-      return
-    end if
-    tau_trial = kt * (sl(2) - sf_old)
-    if (abs(tau_trial) <= mu_p) then
-      branch = friction_stick
-      sf = sf_old
-      tauf = tau_trial
-      dsf = [0.0_dp, 0.0_dp, 1.0_dp]
-      dtauf = [0.0_dp, kt, -kt]
-      slip = 0.0_dp
-      dslip = 0.0_dp
-    else
-      branch = friction_slide
-      sg = sign(1.0_dp, tau_trial)
-      tauf = sg * mu_p
-      dtauf = [-sg * mu * kn, 0.0_dp, 0.0_dp]
-      sf = sl(2) - tauf / kt
-      dsf = [sg * mu * kn / kt, 1.0_dp, 0.0_dp]
-      slip = (abs(tau_trial) - mu_p) / kt
-      dslip = sg * (dsf - [0.0_dp, 0.0_dp, 1.0_dp])
-    end if
-  end subroutine friction_return
-
-  !> The return of friction_return in the fused kernels' form (scalars only, the material's
-  !> inverse 1/K_t): mu_p = mu K_n <-s_n>_- is the bound (0 on an open plane or with friction
+  !> The return mapping (scalars only, the material's inverse 1/K_t): mu_p = mu K_n <-s_n>_- is the bound (0 on an open plane or with friction
   !> off: the damaged part follows freely), mu_kn = mu K_n its derivative wrt -s_n, st the
   !> tangential separation, sf_old the slip at the start. `closed`: the plane is in contact
   !> for the derivatives (s_n <= 0 with friction on): at s_n = 0 exactly, where mu_p = 0, the

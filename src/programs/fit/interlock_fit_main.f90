@@ -5,18 +5,15 @@
 !> (max_iterations, or no step lowers the cost).
 program interlock_fit
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-  use interlock_cli, only: exit_program, command_argument, command_text, folder_writable, &
-      warn
-  use interlock, only: dp, interlock_version_string, format_integer, format_real, scheme_name, &
+  use interlock_cli, only: folder_writable, warn
+  use interlock_program_start, only: program_start_t, program_start, program_end, in_output_dir
+  use interlock, only: dp, format_integer, format_real, scheme_name, &
       scheme_trapezoidal
-  use interlock_h5, only: h5_open_library, h5_close_library
-  use interlock_files, only: is_folder
   use interlock_mixed_control, only: history_t
   use interlock_history_output, only: output_check_target
   use interlock_fit_deck, only: fit_t, read_fit_deck, join_selected, output_names, folder_of
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-  use interlock_files, only: remove_file, rename_file, unguard_file, guard_signals, &
-      hold_signals
+  use interlock_files, only: remove_file, rename_file, unguard_file, hold_signals
   use interlock_fit_model, only: fit_problem_t, fit_history, curve_model, history_output, &
       bound_state, abscissa_held, scheme_order
   use interlock_fit_output, only: stage_outcome_t, curve_outcome_t, discretization_t, &
@@ -25,81 +22,12 @@ program interlock_fit
       lm_least_squares, lm_statistics_unavailable
   implicit none
 
-  character(len=:), allocatable :: arg, deck_path, output_dir, command
-  integer :: nargs, i, stat, rc
-  logical :: quiet, options_done
+  type(program_start_t) :: start
+  integer :: rc
 
-  nargs = command_argument_count()
-  output_dir = ''
-  deck_path = ''
-  quiet = .false.
-  options_done = .false.
-  i = 0
-  do while (i < nargs)
-    i = i + 1
-    arg = command_argument(i)
-    if (.not. options_done .and. len(arg) > 0) then
-      if (arg(1:1) == '-') then
-        select case (arg)
-        case ('-h', '--help')
-          call usage(output_unit)
-          call exit_program(0)
-        case ('--version')
-          write (output_unit, '(a)') 'interlock-fit ' // interlock_version_string
-          call exit_program(0)
-        case ('-q', '--quiet')
-          quiet = .true.
-        case ('-d', '--output-dir')
-          if (i == nargs) then
-            write (error_unit, '(a)') 'interlock-fit: error: ' // arg // ' needs a folder'
-            call exit_program(1)
-          end if
-          i = i + 1
-          output_dir = command_argument(i)
-        case ('--')
-          options_done = .true.
-        case default
-          write (error_unit, '(a)') 'interlock-fit: error: unknown option ' // arg
-          call usage(error_unit)
-          call exit_program(1)
-        end select
-        cycle
-      end if
-    end if
-    if (len(deck_path) > 0) then
-      write (error_unit, '(a)') 'interlock-fit: error: one deck at a time (' // deck_path // &
-                                ', ' // arg // ')'
-      call exit_program(1)
-    end if
-    deck_path = arg
-  end do
-  if (len(deck_path) == 0) then
-    write (error_unit, '(a)') 'interlock-fit: error: no deck given'
-    call usage(error_unit)
-    call exit_program(1)
-  end if
-  if (len(output_dir) > 0) then
-    if (.not. is_folder(output_dir)) then
-      write (error_unit, '(a)') 'interlock-fit: error: --output-dir ' // output_dir // &
-        ': no such folder (it must exist)'
-      call exit_program(1)
-    end if
-  end if
-  command = command_text()
-  ! the guard's handlers before the fit: a signal ends it as it ends interlock-history
-  call guard_signals(stat)
-  if (stat /= 0) then
-    write (error_unit, '(a)') 'interlock-fit: error: cannot install the signal handlers'
-    call exit_program(1)
-  end if
-  call h5_open_library(stat)
-  if (stat /= 0) then
-    write (error_unit, '(a)') 'interlock-fit: error: cannot initialise the HDF5 library'
-    call exit_program(1)
-  end if
-  call run_fit(deck_path, rc)
-  call h5_close_library(stat)
-  call exit_program(rc)
+  call program_start('interlock-fit', usage, .true., .true., start)
+  call run_fit(start%decks(1)%path, rc)
+  call program_end(rc)
 
 contains
 
@@ -128,15 +56,12 @@ contains
       write (error_unit, '(a)') 'interlock-fit: error: ' // trim(message)
       return
     end if
+    ! (the deck's path without its extension, in --output-dir if given)
     slash = index(path, '/', back=.true.)
-    base = path(slash + 1:)
-    dot = index(base, '.', back=.true.)
-    if (dot > 1) base = base(1:dot - 1)
-    if (len(output_dir) > 0) then
-      base = output_dir // '/' // base
-    else
-      base = path(1:slash) // base
-    end if
+    dot = index(path(slash + 1:), '.', back=.true.)
+    base = path
+    if (dot > 1) base = path(1:slash + dot - 1)
+    base = in_output_dir(start%output_dir, base)
     h5_name = base // '_fit.h5'
     deck_name = base // '_fitted.nml'
     call output_check_target(h5_name, path, message, 'interlock-fit', 'curves')
@@ -169,7 +94,7 @@ contains
              format_integer(size(fit%stages)) // ' stage(s)')
     allocate (stages(size(fit%stages)))
     problem%fit = fit
-    problem%verbose = .not. quiet
+    problem%verbose = .not. start%quiet
     call cpu_time(problem%clock_start)
     do k = 1, size(fit%stages)
       call cpu_time(t0)
@@ -259,7 +184,7 @@ contains
     ! new (exit 1), and the two files there always belong together
     call write_fitted_deck(deck_name, fit, values, deck_temp, stat, message)
     if (stat == 0) then
-      call write_fit_file(h5_name, fit, command, values, stats, stages, curves, deck_name, &
+      call write_fit_file(h5_name, fit, start%command, values, stats, stages, curves, deck_name, &
                           at_bound, statistics, disc, h5_temp, stat, message)
       if (stat /= 0) call remove_file(deck_temp)
     end if
@@ -541,7 +466,7 @@ contains
 
   subroutine say(text)
     character(len=*), intent(in) :: text
-    if (quiet) return
+    if (start%quiet) return
     write (output_unit, '(a)') text
     flush (output_unit)
   end subroutine say

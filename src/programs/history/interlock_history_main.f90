@@ -7,93 +7,26 @@
 !> (interlock_posix.c).
 program interlock_history
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-  use interlock_cli, only: exit_program, command_argument, command_text
-  use interlock, only: interlock_material_t, interlock_solver_t, interlock_state_3d_t, &
-      interlock_version_string, status_ok
+  use interlock_program_start, only: program_start_t, program_start, program_end, in_output_dir
+  use interlock, only: interlock_material_t, interlock_solver_t, interlock_state_3d_t, status_ok
   use interlock, only: dp
   use interlock_deck, only: deck_t, read_deck, deck_case, deck_n_cases, deck_loading
   use interlock_mixed_control, only: arc_t
   use interlock_mixed_control, only: run_history, run_history_extrapolated
   use interlock_history_output, only: output_t, case_writer_t, output_check_target, output_open, &
       output_begin_case, output_end_case, output_close, output_abort
-  use interlock_h5, only: h5_open_library, h5_close_library
   use interlock_files, only: is_folder
   implicit none
 
-
-  character(len=:), allocatable :: arg, command, output_dir
-  character(len=4096), allocatable :: decks(:)
-  integer :: nargs, i, n_decks, rc, stat
-  logical :: options_done
+  type(program_start_t) :: start
+  integer :: i, rc
 
   rc = 0
-  nargs = command_argument_count()
-  allocate (decks(max(nargs, 1)))
-  n_decks = 0
-  output_dir = ''
-  options_done = .false.
-  i = 0
-  do while (i < nargs)
-    i = i + 1
-    arg = command_argument(i)
-    if (.not. options_done .and. len(arg) > 0) then
-      if (arg(1:1) == '-') then
-        select case (arg)
-        case ('-h', '--help')
-          call usage(output_unit)
-          call exit_program(0)
-        case ('--version')
-          write (output_unit, '(a)') 'interlock-history ' // interlock_version_string
-          call exit_program(0)
-        case ('-d', '--output-dir')
-          if (i == nargs) then
-            write (error_unit, '(a)') 'interlock-history: error: ' // arg // ' needs a folder'
-            call usage(error_unit)
-            call exit_program(1)
-          end if
-          i = i + 1
-          output_dir = command_argument(i)
-        case ('--')
-          options_done = .true.
-        case default
-          write (error_unit, '(a)') 'interlock-history: error: unknown option ' // arg
-          call usage(error_unit)
-          call exit_program(1)
-        end select
-        cycle
-      end if
-    end if
-    if (len(arg) > len(decks)) then
-      write (error_unit, '(a)') 'interlock-history: error: a deck path is longer than 4096 characters'
-      call exit_program(1)
-    end if
-    n_decks = n_decks + 1
-    decks(n_decks) = arg
+  call program_start('interlock-history', usage, .false., .false., start)
+  do i = 1, size(start%decks)
+    call run_deck(start%decks(i)%path, rc)
   end do
-  if (n_decks == 0) then
-    write (error_unit, '(a)') 'interlock-history: error: no deck given'
-    call usage(error_unit)
-    call exit_program(1)
-  end if
-  if (len(output_dir) > 0) then
-    if (.not. is_folder(output_dir)) then
-      write (error_unit, '(a)') 'interlock-history: error: --output-dir ' // output_dir // &
-        ': no such folder (it must exist)'
-      call exit_program(1)
-    end if
-  end if
-  command = command_text()
-
-  call h5_open_library(stat)
-  if (stat /= 0) then
-    write (error_unit, '(a)') 'interlock-history: error: cannot initialise the HDF5 library'
-    call exit_program(1)
-  end if
-  do i = 1, n_decks
-    call run_deck(trim(decks(i)), rc)
-  end do
-  call h5_close_library(stat)
-  call exit_program(rc)
+  call program_end(rc)
 
 contains
 
@@ -121,17 +54,13 @@ contains
       rc = max(rc, 1)
       return
     end if
-    final_name = deck%output_file
-    if (len(output_dir) > 0) then
-      slash = index(final_name, '/', back=.true.)
-      final_name = output_dir // '/' // final_name(slash + 1:)
-    end if
+    final_name = in_output_dir(start%output_dir, deck%output_file)
     ! Where the file goes: the &output file (or --output-dir) must name a file in an
     ! existing folder; checked before anything is computed.
     origin = ' (the deck''s name with .h5'
     if (deck%output_given) origin = ' (&output: file = ''' // deck%output_file // ''''
-    if (len(output_dir) > 0) then
-      origin = origin // ' in --output-dir ' // output_dir // ')'
+    if (len(start%output_dir) > 0) then
+      origin = origin // ' in --output-dir ' // start%output_dir // ')'
     else
       origin = origin // ')'
     end if
@@ -147,7 +76,7 @@ contains
       message = 'the output folder ' // folder // ' does not exist' // origin
     end if
     if (len_trim(message) == 0) then
-      call output_open(final_name, deck, command, out, stat, message)
+      call output_open(final_name, deck, start%command, out, stat, message)
       if (stat /= 0) message = trim(message) // origin
     end if
     if (len_trim(message) > 0) then
