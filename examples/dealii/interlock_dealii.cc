@@ -124,7 +124,7 @@ namespace interlock_dealii
     if (scene == "shear")
       {
         // The joint alone between rigid platens: every point of the layer has the platen's
-        // separation, so the layer is interlock-history's point (tests/test_dealii.py).
+        // separation, so the layer is interlock-history's point (tests/mpi/test_dealii.py).
         n_xy          = 2;
         n_block       = 0;
         accuracy_cuts = false;

@@ -20,7 +20,7 @@
 !>    spectral radius when the host's own stiffness K_host is not negligible.
 !> The choice is measured against the plain symmetric part, dropping the coupling in
 !> compression, the clipped symmetric part and a similarity transform of D (which keeps D's
-!> eigenvalues exactly): tests/tangent_newton.f90, docs/calculix.md.
+!> eigenvalues exactly): tests/api/tangent_newton.f90, docs/calculix.md.
 !> A three-dimensional tangent (normal, shear 1, shear 2) is treated pair by pair, in the order
 !> (N, T1), (N, T2), (T1, T2), each 2 x 2 block by the rule above: with no T2 coupling (a point
 !> in the (n, t1) plane of the paper's RIA) the (N, T1) block is the 2D one to the bit. The pairs
