@@ -19,7 +19,8 @@ set_tests_properties(stability_matrix PROPERTIES
 # The fuzzer: CTest runs 1e5 updates with a fixed seed; a long run is
 # `interlock-fuzz --seed 7 --updates 10000000`. Failing inputs are written as replay decks in
 # the build tree.
-add_executable(interlock-fuzz test_umat_interface.f90 fuzz/fuzz_3d.f90 fuzz/interlock_fuzz.f90)
+add_executable(interlock-fuzz test_umat_interface.f90 fuzz/fuzz_fd_check.f90 fuzz/fuzz_3d.f90
+  fuzz/interlock_fuzz.f90)
 target_link_libraries(interlock-fuzz PRIVATE interlock_stability_tools interlock::interlock
   interlock_umat interlock_cli)
 target_compile_options(interlock-fuzz PRIVATE ${INTERLOCK_FFLAGS})
