@@ -74,6 +74,14 @@ set_tests_properties(stability_fuzz_3d_beyond_bound PROPERTIES TIMEOUT 600 LABEL
   PASS_REGULAR_EXPRESSION "--3d: seed 6, [0-9]+ materials .*failures 0;"
   FAIL_REGULAR_EXPRESSION "FAIL|ERROR STOP|Floating-point exception")
 
+# Updates the fuzzers found with a tangent that matched no finite difference, replayed from
+# their exact inputs and checked as the fuzzer checks them (tests/fuzz/fuzz_fd_check.f90).
+# Disabled while its one case, a path in a wearing plane's surface (s_kn round-off about 0 on
+# the last 260 sub-increments), fails: the 3D plane law's tangent there is open (docs/tests.md,
+# the fuzzers).
+interlock_add_suite(stability_fuzz_cases stability fuzz/fuzz_fd_check.f90 fuzz/test_fuzz_cases.f90)
+set_tests_properties(stability_fuzz_cases PROPERTIES DISABLED TRUE)
+
 # Replay decks: write one for a failing update, read it back, re-run it.
 interlock_add_suite(stability_replay stability test_stability_replay.f90)
 set_tests_properties(stability_replay PROPERTIES
