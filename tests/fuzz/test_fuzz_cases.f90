@@ -10,6 +10,7 @@ program test_fuzz_cases
   implicit none
 
   call run_case('beyond_bound_seed2_surface_path', beyond_bound_seed2_surface_path)
+  call run_case('beyond_bound_seed2_tiny_zeta0', beyond_bound_seed2_tiny_zeta0)
   if (suite_summary('stability_fuzz_cases') /= 0) error stop 1
 
 contains
@@ -89,5 +90,59 @@ contains
     call check_tangent_3d(mat, solver, old, s, sigma, tangent, what, n_checks, n_skipped)
     call assert_true(len_trim(what) == 0, 'tangent: ' // trim(what))
   end subroutine beyond_bound_seed2_surface_path
+
+  !> `interlock-fuzz --3d 3000000 --beyond-bound --seed 2`, update 443070: the azimuthal RIA
+  !> (N_a = 3, theta_0 = 42.6 deg, theta_f = 3.3 deg) from the virgin state, the trapezoidal
+  !> scheme, plane 6 with zeta_0 = 1e-64 N/mm (an admissible garbled value). Plane 6 slides at
+  !> its initial angle and sticks at its final one, so the wear equation's root lies where it
+  !> switches, within zeta ~ 1e-64 of zeta_o = 0. The update returned the plane unworn and
+  !> sliding (a wear residual of -4.8e-4 N/mm), its tangent the implicit derivative of a root
+  !> (F' = 2.8e59): column 1 was (-8.9e6, -8.5e6, 2.3e7) MPa/mm against differences (3.67e6,
+  !> -1.41e5, -1.02e6) that agree to 6 digits from steps 3.5e-10 down to 3.5e-15.
+  subroutine beyond_bound_seed2_tiny_zeta0()
+    type(interlock_material_t) :: mat
+    type(interlock_solver_t) :: solver
+    type(interlock_state_3d_t) :: old, new
+    type(interlock_info_t) :: info
+    real(dp) :: s(3), sigma(3), tangent(3, 3), th0, thf
+    integer :: stat
+    integer(int64) :: n_checks, n_skipped
+    character(len=message_len) :: msg
+    character(len=200) :: what
+
+    mat%sigma0_n = 1.1708404583598458e+02_dp
+    mat%sigma0_t = 3.5753043048694514e+02_dp
+    mat%gc = 5.0295909149133833e-01_dp
+    mat%eta = 9.9635940735553274e-01_dp
+    mat%mu = 7.0014950610357707e-01_dp
+    mat%h_n = huge(1.0_dp)
+    mat%prefractured = .false.
+    mat%n_planes = 7
+    th0 = 7.4369934885196320e-01_dp
+    thf = 5.7776904599958184e-02_dp
+    mat%gamma_hat(1:7) = [1.1111111111111110e-01_dp, 3.3333333333333331e-01_dp, &
+      1.1111111111111110e-01_dp, 1.1111111111111110e-01_dp, 1.1111111111111110e-01_dp, &
+      1.1111111111111110e-01_dp, 1.1111111111111110e-01_dp]
+    mat%theta0(1:7) = [-th0, 0.0_dp, th0, -th0, th0, -th0, th0]
+    mat%thetaf(1:7) = [-thf, 0.0_dp, thf, -thf, thf, -thf, thf]
+    mat%zeta0(1:7) = huge(1.0_dp)
+    mat%zeta0(6) = 1.0038848328181973e-64_dp
+    mat%phi(1:7) = [0.0_dp, 0.0_dp, 0.0_dp, 1.0471975511965976e+00_dp, &
+      1.0471975511965976e+00_dp, 2.0943951023931953e+00_dp, 2.0943951023931953e+00_dp]
+    mat%effect = .true.
+    call interlock_material_prepare(mat, stat, msg)
+    call assert_true(stat == status_ok, 'material: ' // trim(msg))
+    solver%scheme = scheme_trapezoidal
+    solver%substep_tol = 1.0637710449713071e-03_dp
+    call interlock_state_3d_init(mat, old)
+    s = [-3.5097549731983784e-05_dp, -1.0471795598336267e-06_dp, -7.2492041785926331e-06_dp]
+
+    call interlock_update_3d(mat, solver, s, old, new, sigma, tangent, info)
+    call assert_true(info%status == status_ok, 'update: ' // trim(info%message))
+    n_checks = 0
+    n_skipped = 0
+    call check_tangent_3d(mat, solver, old, s, sigma, tangent, what, n_checks, n_skipped)
+    call assert_true(len_trim(what) == 0, 'tangent: ' // trim(what))
+  end subroutine beyond_bound_seed2_tiny_zeta0
 
 end program test_fuzz_cases
