@@ -15,6 +15,42 @@ program test_fuzz_cases
 
 contains
 
+  !> Every effect on, the material prepared; the trapezoidal scheme with error control to
+  !> substep_tol; the initial state.
+  subroutine prepare_trapezoidal(mat, substep_tol, solver, old)
+    type(interlock_material_t), intent(inout) :: mat
+    real(dp), intent(in) :: substep_tol
+    type(interlock_solver_t), intent(out) :: solver
+    type(interlock_state_3d_t), intent(out) :: old
+    integer :: stat
+    character(len=message_len) :: msg
+    mat%effect = .true.
+    call interlock_material_prepare(mat, stat, msg)
+    call assert_true(stat == status_ok, 'material: ' // trim(msg))
+    solver%scheme = scheme_trapezoidal
+    solver%substep_tol = substep_tol
+    call interlock_state_3d_init(mat, old)
+  end subroutine prepare_trapezoidal
+
+  !> The update from `old` to s is accepted and its tangent passes the fuzzers' check.
+  subroutine replay_3d(mat, solver, old, s)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    type(interlock_state_3d_t), intent(in) :: old
+    real(dp), intent(in) :: s(3)
+    type(interlock_state_3d_t) :: new
+    type(interlock_info_t) :: info
+    real(dp) :: sigma(3), tangent(3, 3)
+    integer(int64) :: n_checks, n_skipped
+    character(len=200) :: what
+    call interlock_update_3d(mat, solver, s, old, new, sigma, tangent, info)
+    call assert_true(info%status == status_ok, 'update: ' // trim(info%message))
+    n_checks = 0
+    n_skipped = 0
+    call check_tangent_3d(mat, solver, old, s, sigma, tangent, what, n_checks, n_skipped)
+    call assert_true(len_trim(what) == 0, 'tangent: ' // trim(what))
+  end subroutine replay_3d
+
   !> `interlock-fuzz --3d 300000 --beyond-bound --seed 2`, update 214540: six planes with
   !> azimuths, pre-fractured, fast wear (zeta_0 = 7.8 N/mm), trapezoidal with error control
   !> (582 sub-increments), a separation path through the origin (the end separation is 47.6
@@ -25,13 +61,8 @@ contains
   subroutine beyond_bound_seed2_surface_path()
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver
-    type(interlock_state_3d_t) :: old, new
-    type(interlock_info_t) :: info
-    real(dp) :: s(3), sigma(3), tangent(3, 3)
-    integer :: stat
-    integer(int64) :: n_checks, n_skipped
-    character(len=message_len) :: msg
-    character(len=200) :: what
+    type(interlock_state_3d_t) :: old
+    real(dp) :: s(3)
 
     mat%sigma0_n = 4.0223326531577435e+01_dp
     mat%sigma0_t = 3.9662514326172889e+01_dp
@@ -54,12 +85,7 @@ contains
     mat%phi(1:6) = [-1.5041904254583807e+00_dp, 3.9355884750202144e+00_dp, &
       -3.2984527093520466e+00_dp, 4.4449701218400879e+00_dp, -3.1631336213787170e-01_dp, &
       -1.5172545536002575e+00_dp]
-    mat%effect = .true.
-    call interlock_material_prepare(mat, stat, msg)
-    call assert_true(stat == status_ok, 'material: ' // trim(msg))
-    solver%scheme = scheme_trapezoidal
-    solver%substep_tol = 6.0100113849687975e-05_dp
-    call interlock_state_3d_init(mat, old)
+    call prepare_trapezoidal(mat, 6.0100113849687975e-05_dp, solver, old)
     old%damage(1:6) = 1.0_dp
     old%beta(1:6) = 3.05192449214850740e+03_dp
     old%sf(1:6) = [3.50300908360978713e-03_dp, -4.88046027065697566e-04_dp, &
@@ -83,12 +109,7 @@ contains
     old%sigma_t2 = -3.60080912187136519e+01_dp
     s = [1.78545962955315135e-01_dp, -2.08869180071087207e-01_dp, -6.42151486680701405e-02_dp]
 
-    call interlock_update_3d(mat, solver, s, old, new, sigma, tangent, info)
-    call assert_true(info%status == status_ok, 'update: ' // trim(info%message))
-    n_checks = 0
-    n_skipped = 0
-    call check_tangent_3d(mat, solver, old, s, sigma, tangent, what, n_checks, n_skipped)
-    call assert_true(len_trim(what) == 0, 'tangent: ' // trim(what))
+    call replay_3d(mat, solver, old, s)
   end subroutine beyond_bound_seed2_surface_path
 
   !> `interlock-fuzz --3d 3000000 --beyond-bound --seed 2`, update 443070: the azimuthal RIA
@@ -102,13 +123,8 @@ contains
   subroutine beyond_bound_seed2_tiny_zeta0()
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver
-    type(interlock_state_3d_t) :: old, new
-    type(interlock_info_t) :: info
-    real(dp) :: s(3), sigma(3), tangent(3, 3), th0, thf
-    integer :: stat
-    integer(int64) :: n_checks, n_skipped
-    character(len=message_len) :: msg
-    character(len=200) :: what
+    type(interlock_state_3d_t) :: old
+    real(dp) :: s(3), th0, thf
 
     mat%sigma0_n = 1.1708404583598458e+02_dp
     mat%sigma0_t = 3.5753043048694514e+02_dp
@@ -129,20 +145,10 @@ contains
     mat%zeta0(6) = 1.0038848328181973e-64_dp
     mat%phi(1:7) = [0.0_dp, 0.0_dp, 0.0_dp, 1.0471975511965976e+00_dp, &
       1.0471975511965976e+00_dp, 2.0943951023931953e+00_dp, 2.0943951023931953e+00_dp]
-    mat%effect = .true.
-    call interlock_material_prepare(mat, stat, msg)
-    call assert_true(stat == status_ok, 'material: ' // trim(msg))
-    solver%scheme = scheme_trapezoidal
-    solver%substep_tol = 1.0637710449713071e-03_dp
-    call interlock_state_3d_init(mat, old)
+    call prepare_trapezoidal(mat, 1.0637710449713071e-03_dp, solver, old)
     s = [-3.5097549731983784e-05_dp, -1.0471795598336267e-06_dp, -7.2492041785926331e-06_dp]
 
-    call interlock_update_3d(mat, solver, s, old, new, sigma, tangent, info)
-    call assert_true(info%status == status_ok, 'update: ' // trim(info%message))
-    n_checks = 0
-    n_skipped = 0
-    call check_tangent_3d(mat, solver, old, s, sigma, tangent, what, n_checks, n_skipped)
-    call assert_true(len_trim(what) == 0, 'tangent: ' // trim(what))
+    call replay_3d(mat, solver, old, s)
   end subroutine beyond_bound_seed2_tiny_zeta0
 
 end program test_fuzz_cases
