@@ -20,9 +20,10 @@ module interlock_integrate_3d
   use interlock_geometry, only: contact_area
   use interlock_wear, only: wear_root_t, wear_root_begin, wear_root_update, worn_angle_slope
   use interlock_plane_law, only: plane_frame, wear_angle_error, add_wear_error, wear_error_of
-  use interlock_plane_law_3d, only: plane_dual_t, plane_response_3d_t, plane_law_3d, &
-      plane_angle_frame, worn_angle_3d, start_pressure_3d, azimuths_t, azimuths_of, &
-      slides_at_start
+  use interlock_plane_law_3d, only: slides_at_start
+  use interlock_plane_law_3d_dual, only: plane_dual_t, plane_response_3d_t, plane_law_3d, &
+      plane_angle_frame, worn_angle_3d, start_pressure_3d
+  use interlock_step_3d, only: one_step_3d
   use interlock_integrate, only: interlock_update
   use interlock_general_update, only: largest_increments
   use interlock_substep_control, only: next_sub_increment, count_attempt, after_failure, &
@@ -91,9 +92,7 @@ contains
     type(interlock_state_3d_t), intent(in) :: old
     integer :: k
     in_dip_planes = .false.
-    do k = 1, mat%n_planes
-      if (.not. zero_bits(mat%phi(k))) return
-    end do
+    if (.not. mat%azimuths_zero) return
     if (.not. (zero_bits(s(3)) .and. zero_bits(old%s_t2))) return
     do k = 1, mat%n_planes
       if (.not. (zero_bits(old%sf_strike(k)) .and. zero_bits(old%tauf_strike(k)))) return
@@ -182,7 +181,6 @@ contains
     type(interlock_state_3d_t), intent(inout) :: new
     real(dp), intent(out) :: sigma(3), tangent(3, 3)
     type(interlock_info_t), intent(inout) :: info
-    type(azimuths_t) :: az
 
     if (.not. mat%prepared) then
       call fail(old, new, sigma, tangent, info, status_bad_input, &
@@ -204,15 +202,14 @@ contains
       return
     end if
 
-    call azimuths_of(mat, az)
     if (solver%substep_tol > 0.0_dp) then
-      call substep(mat, az, solver, s, old, new, tangent, info, solver%substep_tol, 1.0_dp)
+      call substep(mat, solver, s, old, new, tangent, info, solver%substep_tol, 1.0_dp)
     else
-      call substep(mat, az, solver, s, old, new, tangent, info, -1.0_dp, 1.0_dp)
+      call single_step(mat, solver, s, old, new, tangent, info)
       if (info%status == status_local_failure) then
         ! The one-step solve failed: retry on sub-increments, split only as failures require.
         info%status = status_ok
-        call substep(mat, az, solver, s, old, new, tangent, info, huge(1.0_dp), 0.5_dp)
+        call substep(mat, solver, s, old, new, tangent, info, huge(1.0_dp), 0.5_dp)
       end if
     end if
     if (info%status /= status_ok) then
@@ -251,9 +248,8 @@ contains
   !> control on the embedded wear estimate; tol = huge, sizes split only as failures require.
   !> The planes' state carries its derivative with respect to the end of the increment from
   !> one sub-increment to the next, so that the tangent is the exact one of the chain.
-  pure subroutine substep(mat, az, solver, s, old, new, tangent, info, tol, h_first)
+  pure subroutine substep(mat, solver, s, old, new, tangent, info, tol, h_first)
     type(interlock_material_t), intent(in) :: mat
-    type(azimuths_t), intent(in) :: az
     type(interlock_solver_t), intent(in) :: solver
     real(dp), intent(in) :: s(3), tol, h_first
     type(interlock_state_3d_t), intent(in) :: old
@@ -292,7 +288,7 @@ contains
       end do
       call count_attempt(info, solver%max_substeps, allowed)
       if (.not. allowed) return
-      call ria_step(mat, az, solver, s_end, s_start, cur, planes, trial, planes_trial, sig, it, &
+      call ria_step(mat, solver, s_end, s_start, cur, planes, trial, planes_trial, sig, it, &
                     solved, .not. single, err)
       info%newton_iterations = max(info%newton_iterations, it)
       if (single .and. .not. solved) then
@@ -325,6 +321,37 @@ contains
     new = cur
     info%substeps = n_accepted
   end subroutine substep
+
+  !> The whole increment as one step, in plain reals (interlock_step_3d); a wear equation
+  !> without solution, or a derivative beyond the stable bound, is reported as
+  !> status_local_failure (for the caller to retry on sub-increments).
+  pure subroutine single_step(mat, solver, s, old, new, tangent, info)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    real(dp), intent(in) :: s(3)
+    type(interlock_state_3d_t), intent(in) :: old
+    type(interlock_state_3d_t), intent(inout) :: new
+    real(dp), intent(out) :: tangent(3, 3)
+    type(interlock_info_t), intent(inout) :: info
+    type(interlock_state_3d_t) :: trial
+    integer :: it
+    logical :: solved, allowed
+    info%attempts = 0
+    call count_attempt(info, solver%max_substeps, allowed)
+    if (.not. allowed) return
+    call one_step_3d(mat, solver, s, old, trial, tangent, it, solved)
+    info%newton_iterations = max(info%newton_iterations, it)
+    if (.not. solved) then
+      info%status = status_local_failure
+      info%message = 'the local wear equation has no solution'
+      tangent = 0.0_dp
+      return
+    end if
+    call check_chain(mat, maxval(abs(tangent)), info, allowed)
+    if (.not. allowed) return
+    new = trial
+    info%substeps = 1
+  end subroutine single_step
 
   !> Component i of the separation of a state.
   pure real(dp) function cur_separation(state, i) result(x)
@@ -382,10 +409,9 @@ contains
   !> Every plane of the RIA over one (sub-)increment from the state `old` (its planes `o`, with
   !> their derivatives) at separation s_start to s_end: the traction with its derivatives, the
   !> end state and its planes; `estimate`: the embedded error estimate of the wear (`err`).
-  pure subroutine ria_step(mat, az, solver, s_end, s_start, old, o, new, q, sig, iterations, ok, &
+  pure subroutine ria_step(mat, solver, s_end, s_start, old, o, new, q, sig, iterations, ok, &
                            estimate, err)
     type(interlock_material_t), intent(in) :: mat
-    type(azimuths_t), intent(in) :: az
     type(interlock_solver_t), intent(in) :: solver
     type(dual_t), intent(in) :: s_end(3), s_start(3)
     type(interlock_state_3d_t), intent(in) :: old
@@ -436,13 +462,13 @@ contains
         call store_plane(q(k), k, new)
       end do
     else
-      n_eval = merge(1, mat%n_planes, mat%flat .and. az%all_zero)
+      n_eval = merge(1, mat%n_planes, mat%flat .and. mat%azimuths_zero)
       do k = 1, n_eval
-        call plane_step(mat, az%c(k), az%s(k), solver, k, s_end, s_start, o(k), estimate, q(k), &
+        call plane_step(mat, mat%cos_phi(k), mat%sin_phi(k), solver, k, s_end, s_start, o(k), estimate, q(k), &
                         p, it, ok, e, dsig_dtheta)
         if (.not. ok) return
         iterations = max(iterations, it)
-        gam = merge(1.0_dp, mat%gamma_hat(k), mat%flat .and. az%all_zero)
+        gam = merge(1.0_dp, mat%gamma_hat(k), mat%flat .and. mat%azimuths_zero)
         w = gam * area
         if (estimate) call add_wear_error(e, w%v, [dsig_dtheta(1), max(abs(dsig_dtheta(2)), &
                                           abs(dsig_dtheta(3)))], err_angle, err_traction)
