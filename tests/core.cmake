@@ -17,7 +17,7 @@ function(interlock_add_core_suite stem)
 endfunction()
 
 foreach(stem tangent closed_forms limits invariants kinematics damage friction wear geometry
-        reduction3d isotropy3d closed_forms3d tangent3d order3d
+        reduction3d isotropy3d closed_forms3d tangent3d order3d oracle3d
         kernels update_input state_frame numbers)
   interlock_add_core_suite(${stem})
 endforeach()

@@ -30,7 +30,7 @@ module interlock_integrate_3d
       keep_trial, next_size, check_chain
   implicit none
   private
-  public :: interlock_update_3d, general_update_3d
+  public :: interlock_update_3d, general_update_3d, dual_step_3d
 
 
 contains
@@ -224,6 +224,23 @@ contains
     end if
     call largest_increments(mat%n_planes, old%interlock_state_t, new%interlock_state_t, info)
   end subroutine general_update_3d
+
+  !> The increment as one step in dual numbers: the same law as single_step, its derivatives
+  !> carried by the numbers (tests hold the plain path to it). `new`, the traction and tangent
+  !> are set only where info%status = status_ok.
+  pure subroutine dual_step_3d(mat, solver, s, old, new, sigma, tangent, info)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    real(dp), intent(in) :: s(3)
+    type(interlock_state_3d_t), intent(in) :: old
+    type(interlock_state_3d_t), intent(inout) :: new
+    real(dp), intent(out) :: sigma(3), tangent(3, 3)
+    type(interlock_info_t), intent(inout) :: info
+    info%status = status_ok
+    info%newton_iterations = 0
+    call substep(mat, solver, s, old, new, tangent, info, -1.0_dp, 1.0_dp)
+    sigma = [new%sigma(1), new%sigma(2), new%sigma_t2]
+  end subroutine dual_step_3d
 
   !> Report a failure: `new` = `old`, the traction at the start, no tangent.
   pure subroutine fail(old, new, sigma, tangent, info, code, message)
