@@ -30,7 +30,7 @@ module interlock_plane_law_3d
   type :: plane_law_3d_t
     real(dp) :: sl(3)                     !< the local separation [mm]
     real(dp) :: beta, dmg, sf(2), tauf(2) !< the end state
-    real(dp) :: g_dmg(3), g_sf(3, 2), g_tauf(3, 2)
+    real(dp) :: g_dmg(3), g_tauf(3, 2)
     real(dp) :: sig_loc(3)   !< the traction (sigma_kn, sigma_kt1, sigma_kt2) [MPa]
     real(dp) :: k_loc(3, 3)  !< k_loc(i, j) = d sig_loc(i) / d sl(j) [MPa/mm]
     real(dp) :: slip_dip     !< |sf_1 - sf_o,1|, the slip of the step along the dip [mm]
@@ -40,13 +40,13 @@ module interlock_plane_law_3d
     !> direction n at the end. Along a straight local path (radial return) |d sf_1| times the
     !> direction's dip share and wfric_dip.
     real(dp) :: wear_start, wear_end
+    !> their derivatives, where the caller asks for them (`drivers`)
     real(dp) :: g_slip_dip(3), g_wfric_dip(3), g_wear_start(3), g_wear_end(3)
     real(dp) :: wfric   !< frictional work on the damaged part, D |tau_f| |d sf| [N/mm]
     real(dp) :: wdmg    !< energy dissipated by damage in the step [N/mm]
     real(dp) :: psi     !< stored energy at the end of the step [N/mm]
   end type plane_law_3d_t
 
-  real(dp), parameter :: e_n(3) = [1.0_dp, 0.0_dp, 0.0_dp]
   real(dp), parameter :: e_t(3, 2) = reshape([0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], &
                                              [3, 2])
 
@@ -94,17 +94,19 @@ contains
   !> A plane at the local separation sl from the start state o (SPEC section 9, one step,
   !> points 3-5 and the energies). mu_p_o: the start state's mu p (start_pressure_3d) where the
   !> slip direction follows D14's mean-direction rule (the trapezoidal scheme), 0 for radial
-  !> return alone.
-  pure subroutine plane_law_3d(mat, sl, o, mu_p_o, p)
+  !> return alone. `drivers`: the derivatives of the wear drivers are wanted (a scheme whose
+  !> angle is coupled to the end of the step, on a plane that wears).
+  pure subroutine plane_law_3d(mat, sl, o, mu_p_o, drivers, p)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: sl(3), mu_p_o
     type(plane_start_3d_t), intent(in) :: o
+    logical, intent(in) :: drivers
     type(plane_law_3d_t), intent(out) :: p
     real(dp) :: pos, dpos, tn, gd_n, gd_t, mu_p, g_mu(3), tr(2), trn, nv(2), g_nv(3, 2), &
                 n_o(2), n_new(2), g_nn(3, 2), dsf(2), g_dsf(3, 2), slip_norm, g_slip_norm(3), &
                 atau, g_atau(3), share, g_share(3), x, g_x(3), kpos, kts, tauf_norm, work
     integer :: i
-    logical :: closed_at_zero, mean_direction
+    logical :: closed_at_zero, mean_direction, grows
 
     p%sl = sl
 
@@ -113,16 +115,21 @@ contains
     dpos = merge(1.0_dp, 0.0_dp, sl(1) > 0.0_dp)
     p%beta = o%beta
     p%g_dmg = 0.0_dp
+    grows = .false.
     if (mat%use_damage) then
       p%dmg = o%dmg
       tn = sqrt(sl(2) * sl(2) + sl(3) * sl(3))
       call damage_growth(pos * mat%inv_s0n, tn * mat%inv_s0t, o%beta, o%dmg, mat%eta, &
                          mat%inv_eta, mat%beta_break, mat%inv_s0n, mat%inv_s0t, p%beta, p%dmg, &
                          gd_n, gd_t)
-      p%g_dmg(1) = gd_n * dpos
-      if (tn > 0.0_dp) then
-        p%g_dmg(2) = gd_t * (sl(2) / tn)
-        p%g_dmg(3) = gd_t * (sl(3) / tn)
+      ! (gd_n, gd_t = 0 unless D grows below 1)
+      grows = gd_n > 0.0_dp .or. gd_t > 0.0_dp
+      if (grows) then
+        p%g_dmg(1) = gd_n * dpos
+        if (tn > 0.0_dp) then
+          p%g_dmg(2) = gd_t * (sl(2) / tn)
+          p%g_dmg(3) = gd_t * (sl(3) / tn)
+        end if
       end if
     else
       p%dmg = mat%d_frozen
@@ -146,7 +153,6 @@ contains
       if (trn <= mu_p) then
         ! stick
         p%sf = o%sf
-        p%g_sf = 0.0_dp
         p%tauf = tr
         p%g_tauf = mat%kt * e_t
         p%slip_dip = 0.0_dp
@@ -163,24 +169,27 @@ contains
             p%tauf(i) = mu_p * n_new(i)
             p%g_tauf(:, i) = n_new(i) * g_mu + mu_p * g_nn(:, i)
             dsf(i) = (tr(i) - p%tauf(i)) * mat%inv_kt
-            g_dsf(:, i) = (mat%kt * e_t(:, i) - p%g_tauf(:, i)) * mat%inv_kt
             p%sf(i) = sl(1 + i) - p%tauf(i) * mat%inv_kt
-            p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
           end do
           slip_norm = vector_norm(dsf)
-          g_slip_norm = norm_gradient(dsf, slip_norm, g_dsf)
           p%slip_dip = abs(dsf(1))
-          p%g_slip_dip = sign_of(dsf(1)) * g_dsf(:, 1)
           ! the flow is along the friction traction: the wear rate D mu p n_1^2 |d sf| / dt
           ! at the start and at the end of the step, for the trapezoidal rule
           p%wear_start = slip_norm * (n_o(1) * n_o(1))
-          p%g_wear_start = g_slip_norm * (n_o(1) * n_o(1))
           x = slip_norm * abs(n_new(1))
-          g_x = g_slip_norm * abs(n_new(1)) + slip_norm * sign_of(n_new(1)) * g_nn(:, 1)
           atau = p%dmg * abs(p%tauf(1))
-          g_atau = p%g_dmg * abs(p%tauf(1)) + p%dmg * sign_of(p%tauf(1)) * p%g_tauf(:, 1)
           p%wear_end = atau * x
-          p%g_wear_end = g_atau * x + atau * g_x
+          if (drivers) then
+            do i = 1, 2
+              g_dsf(:, i) = (mat%kt * e_t(:, i) - p%g_tauf(:, i)) * mat%inv_kt
+            end do
+            g_slip_norm = norm_gradient(dsf, slip_norm, g_dsf)
+            p%g_slip_dip = sign_of(dsf(1)) * g_dsf(:, 1)
+            p%g_wear_start = g_slip_norm * (n_o(1) * n_o(1))
+            g_x = g_slip_norm * abs(n_new(1)) + slip_norm * sign_of(n_new(1)) * g_nn(:, 1)
+            g_atau = p%g_dmg * abs(p%tauf(1)) + p%dmg * sign_of(p%tauf(1)) * p%g_tauf(:, 1)
+            p%g_wear_end = g_atau * x + atau * g_x
+          end if
         else
           ! radial return: sf - sf_o = n (|tau_tr| - mu p) / K_t along n = tau_tr / |tau_tr|
           do i = 1, 2
@@ -192,26 +201,28 @@ contains
             p%tauf(i) = mu_p * nv(i)
             p%g_tauf(:, i) = nv(i) * g_mu + mu_p * g_nv(:, i)
             p%sf(i) = sl(1 + i) - p%tauf(i) * mat%inv_kt
-            p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
           end do
           slip_norm = (trn - mu_p) * mat%inv_kt
-          g_slip_norm = (nv(1) * e_t(:, 1) + nv(2) * e_t(:, 2) - g_mu * mat%inv_kt)
           p%slip_dip = abs(nv(1)) * slip_norm
-          p%g_slip_dip = sign_of(nv(1)) * g_nv(:, 1) * slip_norm + abs(nv(1)) * g_slip_norm
+          if (drivers) then
+            g_slip_norm = (nv(1) * e_t(:, 1) + nv(2) * e_t(:, 2) - g_mu * mat%inv_kt)
+            p%g_slip_dip = sign_of(nv(1)) * g_nv(:, 1) * slip_norm + abs(nv(1)) * g_slip_norm
+          end if
         end if
       end if
     else
       p%sf(1) = sl(2)
       p%sf(2) = sl(3)
-      p%g_sf = e_t
       p%tauf = 0.0_dp
       p%g_tauf = 0.0_dp
       dsf(1) = p%sf(1) - o%sf(1)
       dsf(2) = p%sf(2) - o%sf(2)
       p%slip_dip = abs(dsf(1))
-      p%g_slip_dip = sign_of(dsf(1)) * e_t(:, 1)
       slip_norm = vector_norm(dsf)
-      g_slip_norm = norm_gradient(dsf, slip_norm, e_t)
+      if (drivers) then
+        p%g_slip_dip = sign_of(dsf(1)) * e_t(:, 1)
+        g_slip_norm = norm_gradient(dsf, slip_norm, e_t)
+      end if
       if (mat%use_friction .and. .not. sl(1) > 0.0_dp) then
         ! s_kn = 0 exactly: in contact for every derivative (SPEC D13). The values are the
         ! free plane's, the same as the slide's with mu p = 0 (tau_f = 0, sf = s_kt); the
@@ -228,63 +239,74 @@ contains
           ! the slip (tau_tr - mu p n_new) / K_t, its values the free plane's
           do i = 1, 2
             p%g_tauf(:, i) = n_new(i) * g_mu
-            p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
-            dsf(i) = tr(i) * mat%inv_kt
-            g_dsf(:, i) = (mat%kt * e_t(:, i) - p%g_tauf(:, i)) * mat%inv_kt
           end do
-          g_slip_norm = norm_gradient(dsf, vector_norm(dsf), g_dsf)
-          p%g_slip_dip = sign_of(dsf(1)) * g_dsf(:, 1)
           atau = 0.0_dp
-          g_atau = abs(n_new(1)) * g_mu
           p%wear_start = slip_norm * (n_o(1) * n_o(1))
-          p%g_wear_start = g_slip_norm * (n_o(1) * n_o(1))
           p%wear_end = 0.0_dp
-          p%g_wear_end = p%dmg * g_atau * (slip_norm * abs(n_new(1)))
+          if (drivers) then
+            do i = 1, 2
+              dsf(i) = tr(i) * mat%inv_kt
+              g_dsf(:, i) = (mat%kt * e_t(:, i) - p%g_tauf(:, i)) * mat%inv_kt
+            end do
+            g_slip_norm = norm_gradient(dsf, vector_norm(dsf), g_dsf)
+            p%g_slip_dip = sign_of(dsf(1)) * g_dsf(:, 1)
+            g_atau = abs(n_new(1)) * g_mu
+            p%g_wear_start = g_slip_norm * (n_o(1) * n_o(1))
+            p%g_wear_end = p%dmg * g_atau * (slip_norm * abs(n_new(1)))
+          end if
           closed_at_zero = .true.
         else if (trn > 0.0_dp) then
           do i = 1, 2
             nv(i) = tr(i) / trn
             p%g_tauf(:, i) = nv(i) * g_mu
-            p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
           end do
           atau = 0.0_dp
-          g_atau = abs(nv(1)) * g_mu
-          g_slip_norm = g_slip_norm - g_mu * mat%inv_kt
-          p%g_slip_dip = p%g_slip_dip - g_atau * mat%inv_kt
+          if (drivers) then
+            g_atau = abs(nv(1)) * g_mu
+            g_slip_norm = g_slip_norm - g_mu * mat%inv_kt
+            p%g_slip_dip = p%g_slip_dip - g_atau * mat%inv_kt
+          end if
           closed_at_zero = .true.
         end if
       end if
     end if
     if (.not. closed_at_zero) then
       atau = abs(p%tauf(1))
-      g_atau = sign_of(p%tauf(1)) * p%g_tauf(:, 1)
+      if (drivers) g_atau = sign_of(p%tauf(1)) * p%g_tauf(:, 1)
     end if
 
-    ! The traction (eq. 6) in the plane's frame.
+    ! The traction (eq. 6) in the plane's frame: d sigma_kn = K_n (1 - D <s_kn>_+') ds_kn -
+    ! K_n <s_kn>_+ dD, d sigma_kt = (1 - D) K_t ds_kt + D d tau_f + (tau_f - K_t s_kt) dD.
     kpos = mat%kn * pos
     p%sig_loc(1) = mat%kn * sl(1) - p%dmg * kpos
-    p%k_loc(1, :) = mat%kn * e_n - kpos * p%g_dmg - (p%dmg * mat%kn * dpos) * e_n
+    p%k_loc(1, :) = 0.0_dp
+    p%k_loc(1, 1) = mat%kn - (p%dmg * mat%kn) * dpos
     do i = 1, 2
       kts = mat%kt * sl(1 + i)
       p%sig_loc(1 + i) = (1.0_dp - p%dmg) * kts + p%dmg * p%tauf(i)
-      p%k_loc(1 + i, :) = ((1.0_dp - p%dmg) * mat%kt) * e_t(:, i) + &
-                          (p%tauf(i) - kts) * p%g_dmg + p%dmg * p%g_tauf(:, i)
+      p%k_loc(1 + i, :) = p%dmg * p%g_tauf(:, i)
+      p%k_loc(1 + i, 1 + i) = p%k_loc(1 + i, 1 + i) + (1.0_dp - p%dmg) * mat%kt
+      if (grows) p%k_loc(1 + i, :) = p%k_loc(1 + i, :) + (p%tauf(i) - kts) * p%g_dmg
     end do
+    if (grows) p%k_loc(1, :) = p%k_loc(1, :) - kpos * p%g_dmg
 
     ! The wear drivers in the dip direction.
     p%wfric_dip = p%dmg * atau * p%slip_dip
-    p%g_wfric_dip = (p%g_dmg * atau + p%dmg * g_atau) * p%slip_dip + (p%dmg * atau) * p%g_slip_dip
     if (.not. mean_direction) then
       share = 1.0_dp
-      g_share = 0.0_dp
-      if (slip_norm > 0.0_dp) then
-        share = p%slip_dip / slip_norm
-        g_share = (p%g_slip_dip - share * g_slip_norm) / slip_norm
-      end if
+      if (slip_norm > 0.0_dp) share = p%slip_dip / slip_norm
       p%wear_start = p%slip_dip * share
-      p%g_wear_start = p%g_slip_dip * share + p%slip_dip * g_share
       p%wear_end = p%wfric_dip
-      p%g_wear_end = p%g_wfric_dip
+    end if
+    if (drivers) then
+      p%g_wfric_dip = (p%g_dmg * atau + p%dmg * g_atau) * p%slip_dip + &
+                      (p%dmg * atau) * p%g_slip_dip
+      if (.not. mean_direction) then
+        g_share = 0.0_dp
+        if (slip_norm > 0.0_dp) g_share = (p%g_slip_dip - share * g_slip_norm) / slip_norm
+        p%g_wear_start = p%g_slip_dip * share + p%slip_dip * g_share
+        p%g_wear_end = p%g_wfric_dip
+      end if
     end if
 
     ! Energies, as the 2D law's (interlock_plane_law) with vectors: the frictional work on the

@@ -341,7 +341,8 @@ contains
 
   !> The whole increment as one step, in plain reals (interlock_step_3d); a wear equation
   !> without solution, or a derivative beyond the stable bound, is reported as
-  !> status_local_failure (for the caller to retry on sub-increments).
+  !> status_local_failure (for the caller to retry on sub-increments; `new` is then written
+  !> again or set to `old`).
   pure subroutine single_step(mat, solver, s, old, new, tangent, info)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
@@ -350,13 +351,12 @@ contains
     type(interlock_state_3d_t), intent(inout) :: new
     real(dp), intent(out) :: tangent(3, 3)
     type(interlock_info_t), intent(inout) :: info
-    type(interlock_state_3d_t) :: trial
     integer :: it
     logical :: solved, allowed
     info%attempts = 0
     call count_attempt(info, solver%max_substeps, allowed)
     if (.not. allowed) return
-    call one_step_3d(mat, solver, s, old, trial, tangent, it, solved)
+    call one_step_3d(mat, solver, s, old, new, tangent, it, solved)
     info%newton_iterations = max(info%newton_iterations, it)
     if (.not. solved) then
       info%status = status_local_failure
@@ -366,7 +366,6 @@ contains
     end if
     call check_chain(mat, maxval(abs(tangent)), info, allowed)
     if (.not. allowed) return
-    new = trial
     info%substeps = 1
   end subroutine single_step
 

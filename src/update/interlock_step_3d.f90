@@ -22,8 +22,9 @@ module interlock_step_3d
 contains
 
   !> The increment from `old` to s as one step: the end state `new` (its traction and energies
-  !> included), the traction's derivative d sigma / d s in `tangent`, the largest number of
-  !> Newton iterations of a wear equation; `ok` false when a wear equation has no solution.
+  !> included; the planes beyond n_planes untouched), the traction's derivative d sigma / d s
+  !> in `tangent`, the largest number of Newton iterations of a wear equation; `ok` false when
+  !> a wear equation has no solution (then `new` is partly written).
   pure subroutine one_step_3d(mat, solver, s, old, new, tangent, iterations, ok)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
@@ -40,11 +41,12 @@ contains
     integer :: k, n_eval, it
     logical :: shared
 
-    new = old
     ok = .true.
     iterations = 0
     sig = 0.0_dp
     tangent = 0.0_dp
+    new%diss_damage = old%diss_damage
+    new%diss_friction = old%diss_friction
     new%stored = 0.0_dp
     s_o = [old%s(1), old%s(2), old%s_t2]
 
@@ -55,10 +57,16 @@ contains
     if (area <= 0.0_dp) then
       ! Separated (decision D7): nothing transmitted, no bond survives, nothing slides.
       do k = 1, mat%n_planes
+        new%beta(k) = old%beta(k)
+        new%damage(k) = old%damage(k)
         if (mat%use_damage) then
           new%beta(k) = max(old%beta(k), mat%beta_break)
           new%damage(k) = 1.0_dp
         end if
+        new%sf(k) = old%sf(k)
+        new%sf_strike(k) = old%sf_strike(k)
+        new%zeta(k) = old%zeta(k)
+        new%theta(k) = old%theta(k)
         new%tauf(k) = 0.0_dp
         new%tauf_strike(k) = 0.0_dp
       end do
@@ -173,8 +181,8 @@ contains
 
     theta = o%theta
     zeta = o%zeta
-    call evaluate(mat, k, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, theta, c, sn, p, &
-                  drv, g_drv)
+    call evaluate(mat, k, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, coupled .and. wears, &
+                  theta, c, sn, p, drv, g_drv)
     if (coupled .and. wears) then
       ! F(zeta) = zeta - zeta_o - G(theta(zeta)); at zeta_o the stored angle and its slope, no
       ! exponential.
@@ -185,8 +193,8 @@ contains
         do
           call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, &
                           thp)
-          call evaluate(mat, k, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, theta, c, sn, &
-                        p, drv, g_drv)
+          call evaluate(mat, k, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, .true., theta, &
+                        c, sn, p, drv, g_drv)
           fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
           call wear_root_update(rt, rt%x - o%zeta - drv, fp, solver%newton_tol, &
                                 solver%newton_max_iterations)
@@ -204,13 +212,16 @@ contains
           rt%x = rt%lo
           call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, &
                           thp)
-          call evaluate(mat, k, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, theta, c, sn, &
-                        p, drv, g_drv)
+          call evaluate(mat, k, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, .true., theta, &
+                        c, sn, p, drv, g_drv)
           fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
         end if
         zeta = rt%x
       end if
-      call rotated(cp, sp, c, sn, p, sig_k, k_k, rot)
+      call rotated(cp, sp, c, sn, p, sig_k, k_k)
+      rot(1, :) = [c, sn * cp, sn * sp]
+      rot(2, :) = [-sn, c * cp, c * sp]
+      rot(3, :) = [0.0_dp, -sp, cp]
       ! d zeta / d s = (dG / d s) / F' at the root, d theta / d s = theta' d zeta / d s;
       ! d sig_k / d theta at fixed s = sigma_kn e - sigma_kt1 m + R^T K_loc d sl / d theta
       dzeta = matmul(g_drv, rot) * (thp / fp)
@@ -220,7 +231,7 @@ contains
         k_k(:, j) = k_k(:, j) + dsig_dtheta * dzeta(j)
       end do
     else
-      call rotated(cp, sp, c, sn, p, sig_k, k_k, rot)
+      call rotated(cp, sp, c, sn, p, sig_k, k_k)
       zeta = o%zeta + drv
       if (.not. coupled .and. wears) then
         ! explicit (eq. 25): the angle of the worn zeta for the next step
@@ -232,24 +243,26 @@ contains
 
   !> The plane law at angle theta (its frame c, sn) and the scheme's wear driver G with
   !> d G / d sl: a_end D |tau_f,1| |d sf_1| + g_slip |d sf_1| (explicit, implicit), a_end
-  !> wear_end + g_slip wear_start (trapezoidal: the dip component of D_o mu p_o n at the start).
-  pure subroutine evaluate(mat, k, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, theta, c, &
-                           sn, p, drv, g_drv)
+  !> wear_end + g_slip wear_start (trapezoidal: the dip component of D_o mu p_o n at the start);
+  !> d G / d sl only with `drivers` (else 0).
+  pure subroutine evaluate(mat, k, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, drivers, &
+                           theta, c, sn, p, drv, g_drv)
     type(interlock_material_t), intent(in) :: mat
     integer, intent(in) :: k
     real(dp), intent(in) :: cp, sp, s(3), mu_p_o, a_end, g_slip, theta
     type(plane_start_3d_t), intent(in) :: o
-    logical, intent(in) :: trapezoidal
+    logical, intent(in) :: trapezoidal, drivers
     real(dp), intent(out) :: c, sn, drv, g_drv(3)
     type(plane_law_3d_t), intent(out) :: p
     call plane_frame(mat, k, theta, c, sn)
-    call plane_law_3d(mat, local_separation(cp, sp, c, sn, s), o, mu_p_o, p)
+    call plane_law_3d(mat, local_separation(cp, sp, c, sn, s), o, mu_p_o, drivers, p)
+    g_drv = 0.0_dp
     if (trapezoidal) then
       drv = a_end * p%wear_end + g_slip * p%wear_start
-      g_drv = a_end * p%g_wear_end + g_slip * p%g_wear_start
+      if (drivers) g_drv = a_end * p%g_wear_end + g_slip * p%g_wear_start
     else
       drv = a_end * p%wfric_dip + g_slip * p%slip_dip
-      g_drv = a_end * p%g_wfric_dip + g_slip * p%g_slip_dip
+      if (drivers) g_drv = a_end * p%g_wfric_dip + g_slip * p%g_slip_dip
     end if
   end subroutine evaluate
 
@@ -261,18 +274,20 @@ contains
   end function angle_slope
 
   !> The plane's traction in the macro frame and its derivative at fixed angle, R^T K_loc R,
-  !> with R = d sl / d s (rows m, e, q).
-  pure subroutine rotated(cp, sp, c, sn, p, sig_k, k_k, rot)
+  !> with R = d sl / d s (rows m, e, q): each row of K_loc R is R^T times K_loc's row, and each
+  !> column of R^T (K_loc R) R^T times that column, both by to_macro.
+  pure subroutine rotated(cp, sp, c, sn, p, sig_k, k_k)
     real(dp), intent(in) :: cp, sp, c, sn
     type(plane_law_3d_t), intent(in) :: p
-    real(dp), intent(out) :: sig_k(3), k_k(3, 3), rot(3, 3)
+    real(dp), intent(out) :: sig_k(3), k_k(3, 3)
+    real(dp) :: a(3, 3)
     integer :: i
-    rot(1, :) = [c, sn * cp, sn * sp]
-    rot(2, :) = [-sn, c * cp, c * sp]
-    rot(3, :) = [0.0_dp, -sp, cp]
     sig_k = to_macro(cp, sp, c, sn, p%sig_loc)
     do i = 1, 3
-      k_k(:, i) = to_macro(cp, sp, c, sn, matmul(p%k_loc, rot(:, i)))
+      a(i, :) = to_macro(cp, sp, c, sn, p%k_loc(i, :))
+    end do
+    do i = 1, 3
+      k_k(:, i) = to_macro(cp, sp, c, sn, a(:, i))
     end do
   end subroutine rotated
 
