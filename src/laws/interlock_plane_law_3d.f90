@@ -16,7 +16,7 @@ module interlock_plane_law_3d
   use interlock_damage, only: damage_growth
   implicit none
   private
-  public :: plane_start_3d_t, plane_law_3d_t, plane_law_3d, start_pressure_3d, slides_at_start, &
+  public :: plane_start_3d_t, plane_law_3d_t, plane_law_3d, slides_at_start, &
             local_separation, to_macro
 
   !> One plane's state at the start of a step (SPEC section 9: D, beta, sf(2), zeta, theta,
@@ -27,10 +27,24 @@ module interlock_plane_law_3d
 
   !> One plane at the end of the step from its start state, with the derivatives of each
   !> quantity x as g_x(j) = d x / d sl(j), sl = (s_kn, s_kt1, s_kt2) the local separation.
+  !> With `chain` (substepping chains the steps) also g_beta, g_sf and the derivatives with
+  !> respect to the start state that the values of sl do not carry: the start slip sf_o
+  !> enters friction only through sl_t - sf_o (so d / d sf_o of a friction quantity is minus
+  !> its d / d sl_t at fixed D, and D-weighted quantities name their d / d D), the start
+  !> damage and history where the step keeps them, and the angle phi_o of the start direction
+  !> of slip tauf_o / |tauf_o| where D14's mean-direction rule applied.
   type :: plane_law_3d_t
     real(dp) :: sl(3)                     !< the local separation [mm]
     real(dp) :: beta, dmg, sf(2), tauf(2) !< the end state
     real(dp) :: g_dmg(3), g_tauf(3, 2)
+    real(dp) :: g_beta(3), g_sf(3, 2)     !< (chain)
+    logical :: beta_kept   !< beta = beta_o (no growth of the equivalent displacement)
+    logical :: dmg_kept    !< D = D_o (damage on and beta kept)
+    logical :: mean        !< D14's mean direction was taken (the phi_ derivatives apply)
+    !> d / d phi_o (chain, mean): of tau_f, sf, wear_start, wear_end
+    real(dp) :: phi_tauf(2), phi_sf(2), phi_wear_start, phi_wear_end
+    !> d / d D at fixed friction (chain): of sig_loc, wfric_dip, wear_end
+    real(dp) :: dmg_sig(3), dmg_wfric_dip, dmg_wear_end
     real(dp) :: sig_loc(3)   !< the traction (sigma_kn, sigma_kt1, sigma_kt2) [MPa]
     real(dp) :: k_loc(3, 3)  !< k_loc(i, j) = d sig_loc(i) / d sl(j) [MPa/mm]
     real(dp) :: slip_dip     !< |sf_1 - sf_o,1|, the slip of the step along the dip [mm]
@@ -77,34 +91,22 @@ contains
     w(3) = sp * dip + cp * v(3)
   end function to_macro
 
-  !> mu p of the start state on a plane of azimuth frame (cp, sp) at its start angle (frame c,
-  !> sn), s_o the start separation; 0 when the start state is separated (decision D7): the
-  !> trapezoidal scheme's start value.
-  pure real(dp) function start_pressure_3d(mat, cp, sp, c, sn, s_o) result(mu_p)
-    type(interlock_material_t), intent(in) :: mat
-    real(dp), intent(in) :: cp, sp, c, sn, s_o(3)
-    real(dp) :: dip
-    mu_p = 0.0_dp
-    if (s_o(1) * mat%inv_h_n < 1.0_dp) then
-      dip = cp * s_o(2) + sp * s_o(3)
-      mu_p = mat%mu_eff * mat%kn * max(-(c * s_o(1) + sn * dip), 0.0_dp)
-    end if
-  end function start_pressure_3d
-
   !> A plane at the local separation sl from the start state o (SPEC section 9, one step,
-  !> points 3-5 and the energies). mu_p_o: the start state's mu p (start_pressure_3d) where the
+  !> points 3-5 and the energies). mu_p_o: the start state's mu p (interlock_plane_law's
+  !> start_yield with the start separation's dip component) where the
   !> slip direction follows D14's mean-direction rule (the trapezoidal scheme), 0 for radial
   !> return alone. `drivers`: the derivatives of the wear drivers are wanted (a scheme whose
   !> angle is coupled to the end of the step, on a plane that wears).
-  pure subroutine plane_law_3d(mat, sl, o, mu_p_o, drivers, p)
+  pure subroutine plane_law_3d(mat, sl, o, mu_p_o, drivers, chain, p)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: sl(3), mu_p_o
     type(plane_start_3d_t), intent(in) :: o
-    logical, intent(in) :: drivers
+    logical, intent(in) :: drivers, chain
     type(plane_law_3d_t), intent(out) :: p
     real(dp) :: pos, dpos, tn, gd_n, gd_t, mu_p, g_mu(3), tr(2), trn, nv(2), g_nv(3, 2), &
                 n_o(2), n_new(2), g_nn(3, 2), dsf(2), g_dsf(3, 2), slip_norm, g_slip_norm(3), &
-                atau, g_atau(3), share, g_share(3), x, g_x(3), kpos, kts, tauf_norm, work
+                atau, g_atau(3), share, g_share(3), x, g_x(3), kpos, kts, tauf_norm, work, &
+                phi_nn(2), phi_slip_norm, phi_x
     integer :: i
     logical :: closed_at_zero, mean_direction, grows
 
@@ -115,6 +117,12 @@ contains
     dpos = merge(1.0_dp, 0.0_dp, sl(1) > 0.0_dp)
     p%beta = o%beta
     p%g_dmg = 0.0_dp
+    p%g_beta = 0.0_dp
+    p%mean = .false.
+    p%phi_tauf = 0.0_dp
+    p%phi_sf = 0.0_dp
+    p%phi_wear_start = 0.0_dp
+    p%phi_wear_end = 0.0_dp
     grows = .false.
     if (mat%use_damage) then
       p%dmg = o%dmg
@@ -124,6 +132,16 @@ contains
                          gd_n, gd_t)
       ! (gd_n, gd_t = 0 unless D grows below 1)
       grows = gd_n > 0.0_dp .or. gd_t > 0.0_dp
+      if (chain .and. p%beta > o%beta) then
+        ! beta = beta_eq = sqrt(an^2 + at^2)
+        p%g_beta(1) = (pos * mat%inv_s0n) * mat%inv_s0n * dpos / p%beta
+        if (tn > 0.0_dp) then
+          p%g_beta(2) = (tn * mat%inv_s0t) * mat%inv_s0t * (sl(2) / tn) / p%beta
+          p%g_beta(3) = (tn * mat%inv_s0t) * mat%inv_s0t * (sl(3) / tn) / p%beta
+        else
+          p%g_beta(2:3) = 0.0_dp
+        end if
+      end if
       if (grows) then
         p%g_dmg(1) = gd_n * dpos
         if (tn > 0.0_dp) then
@@ -134,6 +152,8 @@ contains
     else
       p%dmg = mat%d_frozen
     end if
+    p%beta_kept = .not. p%beta > o%beta
+    p%dmg_kept = mat%use_damage .and. p%beta_kept
 
     ! Friction on the damaged part, to |tau_f| = mu p (p = K_n <-s_kn>_+); free (sf = s_kt,
     ! tau_f = 0) on an open plane or without friction. At s_kn = 0 exactly mu p has the closed
@@ -153,6 +173,7 @@ contains
       if (trn <= mu_p) then
         ! stick
         p%sf = o%sf
+        if (chain) p%g_sf = 0.0_dp
         p%tauf = tr
         p%g_tauf = mat%kt * e_t
         p%slip_dip = 0.0_dp
@@ -161,7 +182,7 @@ contains
         g_slip_norm = 0.0_dp
       else
         if (mu_p_o > 0.0_dp) call mean_direction_return(mat, o%tauf, mu_p_o, tr, mu_p, g_mu, &
-                                                        mean_direction, n_o, n_new, g_nn)
+                                                        mean_direction, n_o, n_new, g_nn, phi_nn)
         if (mean_direction) then
           ! D14: the slip increment along the mean of the start and end directions, |tau_f| =
           ! mu p along n_new; the slip of the step is what the trial traction exceeds it by.
@@ -170,6 +191,7 @@ contains
             p%g_tauf(:, i) = n_new(i) * g_mu + mu_p * g_nn(:, i)
             dsf(i) = (tr(i) - p%tauf(i)) * mat%inv_kt
             p%sf(i) = sl(1 + i) - p%tauf(i) * mat%inv_kt
+            if (chain) p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
           end do
           slip_norm = vector_norm(dsf)
           p%slip_dip = abs(dsf(1))
@@ -190,6 +212,19 @@ contains
             g_atau = p%g_dmg * abs(p%tauf(1)) + p%dmg * sign_of(p%tauf(1)) * p%g_tauf(:, 1)
             p%g_wear_end = g_atau * x + atau * g_x
           end if
+          if (chain) then
+            ! d / d phi_o: n_new turns with n_o (phi_nn), the slip dsf = (tau_tr - tau_f) / K_t
+            p%mean = .true.
+            p%phi_tauf = mu_p * phi_nn
+            p%phi_sf = -p%phi_tauf * mat%inv_kt
+            phi_slip_norm = 0.0_dp
+            if (slip_norm > 0.0_dp) phi_slip_norm = dot_product(dsf, p%phi_sf) / slip_norm
+            p%phi_wear_start = phi_slip_norm * (n_o(1) * n_o(1)) - &
+                               2.0_dp * slip_norm * n_o(1) * n_o(2)
+            phi_x = phi_slip_norm * abs(n_new(1)) + slip_norm * sign_of(n_new(1)) * phi_nn(1)
+            p%phi_wear_end = (p%dmg * sign_of(p%tauf(1)) * p%phi_tauf(1)) * x + atau * phi_x
+            p%dmg_wear_end = abs(p%tauf(1)) * x
+          end if
         else
           ! radial return: sf - sf_o = n (|tau_tr| - mu p) / K_t along n = tau_tr / |tau_tr|
           do i = 1, 2
@@ -201,6 +236,7 @@ contains
             p%tauf(i) = mu_p * nv(i)
             p%g_tauf(:, i) = nv(i) * g_mu + mu_p * g_nv(:, i)
             p%sf(i) = sl(1 + i) - p%tauf(i) * mat%inv_kt
+            if (chain) p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
           end do
           slip_norm = (trn - mu_p) * mat%inv_kt
           p%slip_dip = abs(nv(1)) * slip_norm
@@ -213,6 +249,7 @@ contains
     else
       p%sf(1) = sl(2)
       p%sf(2) = sl(3)
+      if (chain) p%g_sf = e_t
       p%tauf = 0.0_dp
       p%g_tauf = 0.0_dp
       dsf(1) = p%sf(1) - o%sf(1)
@@ -233,14 +270,21 @@ contains
         trn = vector_norm(tr)
         if (trn > 0.0_dp .and. mu_p_o > 0.0_dp) &
           call mean_direction_return(mat, o%tauf, mu_p_o, tr, mu_p, g_mu, mean_direction, n_o, &
-                                     n_new, g_nn)
+                                     n_new, g_nn, phi_nn)
         if (mean_direction) then
           ! and D14's direction where the plane slid at the start (the trapezoidal scheme):
           ! the slip (tau_tr - mu p n_new) / K_t, its values the free plane's
           do i = 1, 2
             p%g_tauf(:, i) = n_new(i) * g_mu
+            if (chain) p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
           end do
           atau = 0.0_dp
+          if (chain) then
+            ! (the slide's derivatives with mu p = 0: tau_f and the slip do not turn with n_o)
+            p%mean = .true.
+            p%phi_wear_start = -2.0_dp * slip_norm * n_o(1) * n_o(2)
+            p%dmg_wear_end = 0.0_dp
+          end if
           p%wear_start = slip_norm * (n_o(1) * n_o(1))
           p%wear_end = 0.0_dp
           if (drivers) then
@@ -259,6 +303,7 @@ contains
           do i = 1, 2
             nv(i) = tr(i) / trn
             p%g_tauf(:, i) = nv(i) * g_mu
+            if (chain) p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
           end do
           atau = 0.0_dp
           if (drivers) then
@@ -289,6 +334,13 @@ contains
       if (grows) p%k_loc(1 + i, :) = p%k_loc(1 + i, :) + (p%tauf(i) - kts) * p%g_dmg
     end do
     if (grows) p%k_loc(1, :) = p%k_loc(1, :) - kpos * p%g_dmg
+    if (chain) then
+      p%dmg_sig(1) = -kpos
+      p%dmg_sig(2) = p%tauf(1) - mat%kt * sl(2)
+      p%dmg_sig(3) = p%tauf(2) - mat%kt * sl(3)
+      p%dmg_wfric_dip = atau * p%slip_dip
+      if (.not. p%mean) p%dmg_wear_end = p%dmg_wfric_dip
+    end if
 
     ! The wear drivers in the dip direction.
     p%wfric_dip = p%dmg * atau * p%slip_dip
@@ -338,11 +390,11 @@ contains
   !> 2 psi is at most 90 deg (a >= |b|); else radial return (a reversal turns by 180 deg).
   !> The caller has |tau_tr| > mu p (sliding at the end).
   pure subroutine mean_direction_return(mat, tauf_o, mu_p_o, tr, mu_p, g_mu, ok, n_o, n_new, &
-                                        g_nn)
+                                        g_nn, phi_nn)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: tauf_o(2), mu_p_o, tr(2), mu_p, g_mu(3)
     logical, intent(out) :: ok
-    real(dp), intent(out) :: n_o(2), n_new(2), g_nn(3, 2)
+    real(dp), intent(out) :: n_o(2), n_new(2), g_nn(3, 2), phi_nn(2)
     real(dp) :: t_norm, a, b, a2, b2, v2, m, scale_ab, g_a(3), g_b(3), g_psi(3)
     ok = .false.
     t_norm = vector_norm(tauf_o)
@@ -372,6 +424,10 @@ contains
     g_psi = (a * g_b - b * g_a) / (v2 * scale_ab)
     g_nn(:, 1) = -2.0_dp * n_new(2) * g_psi
     g_nn(:, 2) = 2.0_dp * n_new(1) * g_psi
+    ! turning n_o by d phi_o: da = b d phi_o, db = -(a - mu p) d phi_o, so n_new's angle
+    ! phi_o + 2 psi turns by (2 a mu p / (a^2 + b^2) - 1) d phi_o
+    phi_nn(1) = -n_new(2) * (2.0_dp * a * (mu_p / scale_ab) / v2 - 1.0_dp)
+    phi_nn(2) = n_new(1) * (2.0_dp * a * (mu_p / scale_ab) / v2 - 1.0_dp)
   end subroutine mean_direction_return
 
   !> A plane slides at the start of a step: its friction traction's magnitude |tauf_o| is
