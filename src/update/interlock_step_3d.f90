@@ -287,22 +287,18 @@ contains
       end if
     end if
     call rotated(cp, sp, c, sn, p, sig_k, k_k)
-    if (wears .or. chain) then
-      rot(1, :) = [c, sn * cp, sn * sp]
-      rot(2, :) = [-sn, c * cp, c * sp]
-      rot(3, :) = [0.0_dp, -sp, cp]
-    end if
-    if (wears) then
+    if (wears .and. (coupled .or. chain .or. estimate)) then
       ! d sig_k / d theta at fixed s = sigma_kn e - sigma_kt1 m + R^T K_loc d sl / d theta
-      dsig_dtheta = to_macro(cp, sp, c, sn, matmul(p%k_loc, [p%sl(2), -p%sl(1), 0.0_dp])) + &
-                    (p%sig_loc(1) * rot(2, :) - p%sig_loc(2) * rot(1, :))
+      dsig_dtheta = to_macro(cp, sp, c, sn, matmul(p%k_loc, [p%sl(2), -p%sl(1), 0.0_dp]) + &
+                             [-p%sig_loc(2), p%sig_loc(1), 0.0_dp])
     end if
     if (chain) then
-      call chain_plane(mat, cp, sp, c, sn, c_o, sn_o, rot, s_o, o, jo, p, coupled .and. wears, &
+      call chain_plane(mat, cp, sp, c, sn, c_o, sn_o, s_o, o, jo, p, coupled .and. wears, &
                        wears .and. .not. coupled, trapezoidal, a_w, g_slip, mu_p_o, g_drv, &
                        thp, fp, h_start, h_end, zeta, k_k, jn)
     else if (coupled .and. wears) then
       ! d zeta / d s = (dG / d s) / F' at the root, d theta / d s = theta' d zeta / d s
+      rot = frame_rows(cp, sp, c, sn)
       dzeta = matmul(g_drv, rot) * (thp / fp)
       do j = 1, 3
         k_k(:, j) = k_k(:, j) + dsig_dtheta * dzeta(j)
@@ -328,11 +324,11 @@ contains
   !> the start weight g_slip's own derivative (explicit D_o |tauf_o,1|, trapezoidal
   !> D_o mu p_o / 2 with mu p_o from the start separation, ds_o = h_start dS, at theta_o).
   !> Returns d sig_k / dS in k_k and the end state's derivatives jn.
-  pure subroutine chain_plane(mat, cp, sp, c, sn, c_o, sn_o, rot, s_o, o, jo, p, coupled_wear, &
+  pure subroutine chain_plane(mat, cp, sp, c, sn, c_o, sn_o, s_o, o, jo, p, coupled_wear, &
                               explicit_wear, trapezoidal, a_w, g_slip, mu_p_o, g_drv, thp, fp, &
                               h_start, h_end, zeta, k_k, jn)
     type(interlock_material_t), intent(in) :: mat
-    real(dp), intent(in) :: cp, sp, c, sn, c_o, sn_o, rot(3, 3), s_o(3), a_w, g_slip, mu_p_o, &
+    real(dp), intent(in) :: cp, sp, c, sn, c_o, sn_o, s_o(3), a_w, g_slip, mu_p_o, &
                             g_drv(3), thp, fp, h_start, h_end, zeta
     type(plane_start_3d_t), intent(in) :: o
     type(plane_chain_t), intent(in) :: jo
@@ -340,7 +336,7 @@ contains
     logical, intent(in) :: coupled_wear, explicit_wear, trapezoidal
     real(dp), intent(out) :: k_k(3, 3)
     type(plane_chain_t), intent(inout) :: jn
-    real(dp) :: dsl(3, 3), jphi(3), dg(3), d_drv(3), dtheta(3), dsig_loc(3, 3), tn2, &
+    real(dp) :: rot(3, 3), dsl(3, 3), jphi(3), dg(3), d_drv(3), dtheta(3), dsig_loc(3, 3), tn2, &
                 dsn_o(3), x_o, q2, h1(2), h2(2), hdmg1, phi1, phi2
     integer :: i, j
 
@@ -384,6 +380,7 @@ contains
       d_drv = a_w * (h1(1) * jo%sf(:, 1) + h1(2) * jo%sf(:, 2) + phi1 * jphi + hdmg1 * jo%dmg) + &
               g_slip * (h2(1) * jo%sf(:, 1) + h2(2) * jo%sf(:, 2) + phi2 * jphi) + dg * q2
     ! d sl at fixed angle, then the angle the traction is taken at
+    rot = frame_rows(cp, sp, c, sn)
     do j = 1, 3
       dsl(:, j) = h_end * rot(:, j)
     end do
@@ -457,6 +454,16 @@ contains
     real(dp), intent(in) :: g_drv(3), sl(3)
     angle_slope = g_drv(1) * sl(2) - g_drv(2) * sl(1)
   end function angle_slope
+
+  !> R = d sl / d s: the rows m, e, q of a plane of azimuth frame (cp, sp) at angle theta (frame
+  !> c, sn).
+  pure function frame_rows(cp, sp, c, sn) result(rot)
+    real(dp), intent(in) :: cp, sp, c, sn
+    real(dp) :: rot(3, 3)
+    rot(1, :) = [c, sn * cp, sn * sp]
+    rot(2, :) = [-sn, c * cp, c * sp]
+    rot(3, :) = [0.0_dp, -sp, cp]
+  end function frame_rows
 
   !> The plane's traction in the macro frame and its derivative at fixed angle, R^T K_loc R,
   !> with R = d sl / d s (rows m, e, q): each row of K_loc R is R^T times K_loc's row, and each
