@@ -359,26 +359,28 @@ contains
                  (-sn_o * s_o(1) + c_o * (cp * s_o(2) + sp * s_o(3))) * jo%theta)
       dg = 0.5_dp * (jo%dmg * mu_p_o + o%dmg * dsn_o)
     end if
-    ! the wear driver's derivatives through the start state: G = a_w Q1 + g_slip Q2
-    if (trapezoidal) then
-      h1 = -(p%g_wear_end(2:3) - p%dmg_wear_end * p%g_dmg(2:3))
-      hdmg1 = merge(p%dmg_wear_end, 0.0_dp, p%dmg_kept)
-      phi1 = p%phi_wear_end
-      h2 = -p%g_wear_start(2:3)
-      phi2 = p%phi_wear_start
-      q2 = p%wear_start
-    else
-      h1 = -(p%g_wfric_dip(2:3) - p%dmg_wfric_dip * p%g_dmg(2:3))
-      hdmg1 = merge(p%dmg_wfric_dip, 0.0_dp, p%dmg_kept)
-      phi1 = 0.0_dp
-      h2 = -p%g_slip_dip(2:3)
-      phi2 = 0.0_dp
-      q2 = p%slip_dip
-    end if
+    ! the wear driver's derivatives through the start state: G = a_w Q1 + g_slip Q2 (a plane
+    ! that wears; the law gives the drivers' derivatives only there)
     d_drv = 0.0_dp
-    if (coupled_wear .or. explicit_wear) &
+    if (coupled_wear .or. explicit_wear) then
+      if (trapezoidal) then
+        h1 = -(p%g_wear_end(2:3) - p%dmg_wear_end * p%g_dmg(2:3))
+        hdmg1 = merge(p%dmg_wear_end, 0.0_dp, p%dmg_kept)
+        phi1 = p%phi_wear_end
+        h2 = -p%g_wear_start(2:3)
+        phi2 = p%phi_wear_start
+        q2 = p%wear_start
+      else
+        h1 = -(p%g_wfric_dip(2:3) - p%dmg_wfric_dip * p%g_dmg(2:3))
+        hdmg1 = merge(p%dmg_wfric_dip, 0.0_dp, p%dmg_kept)
+        phi1 = 0.0_dp
+        h2 = -p%g_slip_dip(2:3)
+        phi2 = 0.0_dp
+        q2 = p%slip_dip
+      end if
       d_drv = a_w * (h1(1) * jo%sf(:, 1) + h1(2) * jo%sf(:, 2) + phi1 * jphi + hdmg1 * jo%dmg) + &
               g_slip * (h2(1) * jo%sf(:, 1) + h2(2) * jo%sf(:, 2) + phi2 * jphi) + dg * q2
+    end if
     ! d sl at fixed angle, then the angle the traction is taken at
     rot = frame_rows(cp, sp, c, sn)
     do j = 1, 3
@@ -476,7 +478,7 @@ contains
     integer :: i
     sig_k = to_macro(cp, sp, c, sn, p%sig_loc)
     do i = 1, 3
-      a(i, :) = to_macro(cp, sp, c, sn, p%k_loc(i, :))
+      a(i, :) = to_macro(cp, sp, c, sn, [p%k_loc(i, 1), p%k_loc(i, 2), p%k_loc(i, 3)])
     end do
     do i = 1, 3
       k_k(:, i) = to_macro(cp, sp, c, sn, a(:, i))
