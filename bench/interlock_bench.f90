@@ -35,7 +35,9 @@ program interlock_bench
   real(dp) :: dump_tol
   integer :: dump_steps, profile_set, profile_scheme, profile_passes
   logical :: profile_umat
-  integer :: profile_3d   !< 0: the 2D update; 1: the 3D one on the histories turned by 30 deg; 2: azimuthal N_a = 3 on them
+  !> 0: the 2D update; 1: the 3D one on the histories turned by 30 deg; 2: azimuthal N_a = 3 on
+  !> them; 3: the 3D one on the histories in the (n, t1) plane
+  integer :: profile_3d
   real(dp) :: profile_tol
   character(len=512) :: out_dir
   real(dp) :: target_error
@@ -163,6 +165,8 @@ contains
         profile_3d = 1
       case ('--azimuthal')
         profile_3d = 2
+      case ('--in-plane')
+        profile_3d = 3
       case ('--umat-floor')
         profile_umat = .true.
         profile_tol = -1.0_dp
@@ -200,7 +204,8 @@ contains
       'SCHEME 1 explicit, 2 implicit, 3 trapezoidal; TOL substepping tolerance, default 0; 3 x 4000-point ' // &
       'histories; see bench/profile_updates.py); with --umat: through the UMAT, ' // &
       'with --umat-floor: the floor of the UMAT''s overhead; with --turned or --azimuthal: ' // &
-      'the 3D update on the histories turned by 30 deg (the full model''s RIA, or azimuthal N_a = 3)'
+      'the 3D update on the histories turned by 30 deg (the full model''s RIA, or azimuthal N_a = 3), ' // &
+      'with --in-plane: on the histories in the (n, t1) plane'
     write (unit, '(a)') '       interlock-bench --history SCENE SCHEME TOL N  ' // &
       '(one run of a scene as CSV on stdout; SCENE fig11|fig12|granite, ' // &
       'SCHEME explicit|implicit|trapezoidal)'
@@ -308,6 +313,10 @@ contains
       h3(1, :, :) = h(1, :, :)
       h3(2, :, :) = cos(30.0_dp * deg_to_rad) * h(2, :, :)
       h3(3, :, :) = sin(30.0_dp * deg_to_rad) * h(2, :, :)
+      if (profile_3d == 3) then
+        h3(2, :, :) = h(2, :, :)
+        h3(3, :, :) = 0.0_dp
+      end if
       if (profile_3d == 2) then
         call interlock_azimuthal_ria(mat, 3, 30.0_dp * deg_to_rad, 7.0_dp * deg_to_rad, 1.0_dp)
         call interlock_material_prepare(mat, stat, message)

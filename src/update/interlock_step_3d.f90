@@ -37,10 +37,10 @@ contains
   !> energies included; the planes beyond n_planes untouched), the traction's derivative in
   !> `tangent`, the largest number of Newton iterations of a wear equation; `ok` false when a
   !> wear equation has no solution (then `new` is partly written). Without `chain`, tangent =
-  !> d sigma / d s at the fixed start state. With `chain`, s = s_o + ... is the point h_end of an
-  !> increment with end S (ds / dS = h_end, ds_o / dS = h_start), jo(k) the start planes'
-  !> derivatives d/dS, and `tangent` = d sigma / dS, jn(k) the end planes'. `estimate`: the
-  !> embedded error estimate of the wear in err.
+  !> d sigma / d s at the fixed start state. With `chain`, the step is a sub-increment of an
+  !> increment with end separation S, from its fraction h_start to h_end (ds_o / dS = h_start,
+  !> ds / dS = h_end); jo(k) are the start planes' derivatives d / dS, and `tangent` = d sigma /
+  !> dS, jn(k) the end planes'. `estimate`: the embedded error estimate of the wear in err.
   pure subroutine step_3d(mat, solver, s, old, new, tangent, iterations, ok, chain, h_start, &
                           h_end, jo, jn, estimate, err)
     type(interlock_material_t), intent(in) :: mat
