@@ -10,6 +10,16 @@ set_target_properties(interlock_core_testlib PROPERTIES
   Fortran_MODULE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/mod_core_testlib)
 target_include_directories(interlock_core_testlib PUBLIC ${CMAKE_CURRENT_BINARY_DIR}/mod_core_testlib)
 
+# The 3D law in dual numbers (tests/oracle3d): an independent oracle of the derivatives the
+# library writes out by hand (core_oracle3d).
+add_library(interlock_oracle3d STATIC oracle3d/interlock_dual.f90
+  oracle3d/interlock_plane_law_3d_dual.f90 oracle3d/interlock_update_3d_dual.f90)
+target_link_libraries(interlock_oracle3d PUBLIC interlock::interlock)
+target_compile_options(interlock_oracle3d PRIVATE ${INTERLOCK_FFLAGS})
+set_target_properties(interlock_oracle3d PROPERTIES
+  Fortran_MODULE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/mod_oracle3d)
+target_include_directories(interlock_oracle3d PUBLIC ${CMAKE_CURRENT_BINARY_DIR}/mod_oracle3d)
+
 # interlock_add_core_suite(stem): tests/test_<stem>.pf as the CTest core_<stem>.
 function(interlock_add_core_suite stem)
   interlock_add_pfunit_suite(core_${stem} LABEL core TEST_SOURCES test_${stem}.pf
@@ -21,6 +31,8 @@ foreach(stem tangent closed_forms limits invariants kinematics damage friction w
         kernels update_input state_frame numbers)
   interlock_add_core_suite(${stem})
 endforeach()
+interlock_add_pfunit_suite(core_oracle3d LABEL core TEST_SOURCES test_oracle3d.pf
+  LINK_LIBRARIES interlock_core_testlib interlock_oracle3d)
 
 # The layer check: every module uses only its own folder's and lower layers' modules, the
 # general update path not the kernels, and every source file is built (docs/architecture.md).
