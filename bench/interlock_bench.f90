@@ -35,6 +35,9 @@ program interlock_bench
   real(dp) :: dump_tol
   integer :: dump_steps, profile_set, profile_scheme, profile_passes
   logical :: profile_umat
+  !> 0: the 2D update; 1: the 3D one on the histories turned by 30 deg; 2: azimuthal N_a = 3 on
+  !> them; 3: the 3D one on the histories in the (n, t1) plane
+  integer :: profile_3d
   real(dp) :: profile_tol
   character(len=512) :: out_dir
   real(dp) :: target_error
@@ -92,6 +95,7 @@ contains
     profile_set = -1
     profile_tol = 0.0_dp
     profile_umat = .false.
+    profile_3d = 0
     n = command_argument_count()
     if (n == 0) call usage('no arguments: --out DIR is required')
     i = 1
@@ -157,6 +161,12 @@ contains
         end if
       case ('--umat')
         profile_umat = .true.
+      case ('--turned')
+        profile_3d = 1
+      case ('--azimuthal')
+        profile_3d = 2
+      case ('--in-plane')
+        profile_3d = 3
       case ('--umat-floor')
         profile_umat = .true.
         profile_tol = -1.0_dp
@@ -193,7 +203,9 @@ contains
       '(one cost configuration only, for valgrind/gprof: SET 0 bilinear, 1..5 effect sets; ' // &
       'SCHEME 1 explicit, 2 implicit, 3 trapezoidal; TOL substepping tolerance, default 0; 3 x 4000-point ' // &
       'histories; see bench/profile_updates.py); with --umat: through the UMAT, ' // &
-      'with --umat-floor: the floor of the UMAT''s overhead'
+      'with --umat-floor: the floor of the UMAT''s overhead; with --turned or --azimuthal: ' // &
+      'the 3D update on the histories turned by 30 deg (the full model''s RIA, or azimuthal N_a = 3), ' // &
+      'with --in-plane: on the histories in the (n, t1) plane'
     write (unit, '(a)') '       interlock-bench --history SCENE SCHEME TOL N  ' // &
       '(one run of a scene as CSV on stdout; SCENE fig11|fig12|granite, ' // &
       'SCHEME explicit|implicit|trapezoidal)'
@@ -282,7 +294,7 @@ contains
   subroutine profile_run()
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver
-    real(dp), allocatable :: h(:, :, :)
+    real(dp), allocatable :: h(:, :, :), h3(:, :, :)
     real(dp) :: chk, props(n_properties_2d)
     integer :: k, stat, fails, nsub, cuts
     character(len=256) :: message
@@ -296,8 +308,25 @@ contains
     fails = 0
     cuts = 0
     if (profile_umat) call umat_props(max(1, profile_set), profile_scheme, props)
+    if (profile_3d > 0) then
+      allocate (h3(3, 4000, 3))
+      h3(1, :, :) = h(1, :, :)
+      h3(2, :, :) = cos(30.0_dp * deg_to_rad) * h(2, :, :)
+      h3(3, :, :) = sin(30.0_dp * deg_to_rad) * h(2, :, :)
+      if (profile_3d == 3) then
+        h3(2, :, :) = h(2, :, :)
+        h3(3, :, :) = 0.0_dp
+      end if
+      if (profile_3d == 2) then
+        call interlock_azimuthal_ria(mat, 3, 30.0_dp * deg_to_rad, 7.0_dp * deg_to_rad, 1.0_dp)
+        call interlock_material_prepare(mat, stat, message)
+        if (stat /= status_ok) call usage(trim(message))
+      end if
+    end if
     do k = 1, profile_passes
-      if (profile_umat .and. profile_tol < 0.0_dp) then
+      if (profile_3d > 0) then
+        call time_interlock_3d(mat, solver, h3, chk, fails)
+      else if (profile_umat .and. profile_tol < 0.0_dp) then
         call time_umat_floor(props, h, chk)
       else if (profile_umat) then
         call time_umat(props, h, chk, fails, cuts)

@@ -1,302 +1,379 @@
-!> The law of one microplane of a three-dimensional interface over one step (SPEC section 9):
-!> the plane's frame (m, e, q) from its inclination theta and azimuth phi, the local separation
-!> (s_kn, s_kt1, s_kt2), isotropic damage in the microplane (eq. 9-11 with |s_kt|), Coulomb
-!> friction on the damaged part by radial return (or D14's mean-direction rule), the traction of eq. 6 with a tangential
+!> The law of one microplane of a three-dimensional interface over one step (SPEC section 9),
+!> in plain reals with its exact derivatives written out: the plane's frame (m, e, q) from its
+!> inclination theta and azimuth phi, the local separation (s_kn, s_kt1, s_kt2), isotropic
+!> damage in the microplane (interlock_damage with |s_kt|), Coulomb friction on the damaged part
+!> by radial return or D14's mean-direction rule, the traction of eq. 6 with a tangential
 !> 2-vector, rotated back to the macro frame (n, t1, t2), and what the schemes' wear drivers and
 !> the energy bookkeeping need (the slip in the dip direction, the frictional work, the damage
-!> dissipation, the stored energy). In numbers that carry their derivatives (interlock_dual), so
-!> that the update returns the exact derivative of what it computes. Every operation is the one
-!> of the 2D law (interlock_plane_law) in the same order where the strike components vanish: with
-!> phi = 0 and s_T2 = 0 both give the same values.
+!> dissipation, the stored energy). Every derivative is with respect to the local separation
+!> at a fixed start state (the caller chains the frame and the angle); at a kink the side SPEC
+!> section 6 and D13 name: s_kn = 0 is closed for every derivative of friction and wear, and
+!> open for damage (<s_kn>_+ has slope 0 there). Every operation on a value is the one of the
+!> 2D law (interlock_plane_law) in the same order where the strike components vanish.
 module interlock_plane_law_3d
   use interlock_kinds, only: dp
-  use interlock_dual, only: dual_t, constant, operator(+), operator(-), operator(*), &
-      operator(/), sqrt, exp, cos, sin, abs, max, min
-  use interlock_material, only: interlock_material_t, max_planes
+  use interlock_material, only: interlock_material_t
+  use interlock_damage, only: damage_growth
   implicit none
   private
-  public :: plane_dual_t, plane_response_3d_t, plane_law_3d, plane_angle_frame, worn_angle_3d, &
-            start_pressure_3d, azimuths_t, azimuths_of, slides_at_start
+  public :: plane_start_3d_t, plane_law_3d_t, plane_law_3d, slides_at_start, &
+            local_separation, to_macro
 
-  !> One plane's state (SPEC section 9: D, beta, sf(2), zeta, theta, tauf(2); vectors in the
-  !> plane's (e, q) frame), with its derivatives.
-  type :: plane_dual_t
-    type(dual_t) :: beta, dmg, sf(2), zeta, theta, tauf(2)
-  end type plane_dual_t
+  !> One plane's state at the start of a step (SPEC section 9: D, beta, sf(2), zeta, theta,
+  !> tauf(2); vectors in the plane's (e, q) frame).
+  type :: plane_start_3d_t
+    real(dp) :: beta, dmg, sf(2), zeta, theta, tauf(2)
+  end type plane_start_3d_t
 
-  !> One plane at the end of the step, from its start state: the end state's damage, history,
-  !> slip and friction traction, the traction in the macro frame (n, t1, t2), unweighted, and
-  !> the wear drivers in the dip direction.
-  type :: plane_response_3d_t
-    type(dual_t) :: beta, dmg, sf(2), tauf(2)
-    type(dual_t) :: sig(3)        !< the plane's traction in the macro frame [MPa]
-    type(dual_t) :: slip_dip      !< |sf_1 - sf_o,1|, the slip of the step along the dip [mm]
-    !> |sf_1 - sf_o,1| / |sf - sf_o|: the dip share of the step's slip direction (1 without slip)
-    type(dual_t) :: dip_share
-    type(dual_t) :: wfric_dip     !< D |tau_f,1| |d sf_1|, the work that wears [N/mm]
-    !> The trapezoidal scheme's wear terms (SPEC section 9 with D14): the slip of the step
-    !> |d sf| times the squared dip component of the slip direction at the start, and
-    !> D |tau_f,1| |d sf| |n_1| with the direction n at the end. Along a straight local path
-    !> (radial return: one direction for the step) |d sf_1| times the direction's dip share
-    !> and wfric_dip.
-    type(dual_t) :: wear_start, wear_end
+  !> One plane at the end of the step from its start state, with the derivatives of each
+  !> quantity x as g_x(j) = d x / d sl(j), sl = (s_kn, s_kt1, s_kt2) the local separation.
+  !> With `chain` (substepping chains the steps) also g_beta, g_sf and the derivatives with
+  !> respect to the start state that the values of sl do not carry: the start slip sf_o
+  !> enters friction only through sl_t - sf_o (so d / d sf_o of a friction quantity is minus
+  !> its d / d sl_t at fixed D, and D-weighted quantities name their d / d D), the start
+  !> damage and history where the step keeps them, and the angle phi_o of the start direction
+  !> of slip tauf_o / |tauf_o| where D14's mean-direction rule applied.
+  type :: plane_law_3d_t
+    real(dp) :: sl(3)                     !< the local separation [mm]
+    real(dp) :: beta, dmg, sf(2), tauf(2) !< the end state
+    real(dp) :: g_dmg(3), g_tauf(3, 2)
+    real(dp) :: g_beta(3), g_sf(3, 2)     !< (chain)
+    logical :: beta_kept   !< beta = beta_o (no growth of the equivalent displacement)
+    logical :: dmg_kept    !< D = D_o (damage on and beta kept)
+    logical :: mean        !< D14's mean direction was taken (the phi_ derivatives apply)
+    !> d / d phi_o (chain, mean): of tau_f, sf, wear_start, wear_end
+    real(dp) :: phi_tauf(2), phi_sf(2), phi_wear_start, phi_wear_end
+    !> d / d D at fixed friction (chain): of sig_loc, wfric_dip, wear_end
+    real(dp) :: dmg_sig(3), dmg_wfric_dip, dmg_wear_end
+    real(dp) :: sig_loc(3)   !< the traction (sigma_kn, sigma_kt1, sigma_kt2) [MPa]
+    real(dp) :: k_loc(3, 3)  !< k_loc(i, j) = d sig_loc(i) / d sl(j) [MPa/mm]
+    real(dp) :: slip_dip     !< |sf_1 - sf_o,1|, the slip of the step along the dip [mm]
+    real(dp) :: wfric_dip    !< D |tau_f,1| |d sf_1|, the work that wears [N/mm]
+    !> The trapezoidal scheme's wear terms (D14): the slip of the step |d sf| times the squared
+    !> dip component of the slip direction at the start, and D |tau_f,1| |d sf| |n_1| with the
+    !> direction n at the end. Along a straight local path (radial return) |d sf_1| times the
+    !> direction's dip share and wfric_dip.
+    real(dp) :: wear_start, wear_end
+    !> their derivatives, where the caller asks for them (`drivers`)
+    real(dp) :: g_slip_dip(3), g_wfric_dip(3), g_wear_start(3), g_wear_end(3)
     real(dp) :: wfric   !< frictional work on the damaged part, D |tau_f| |d sf| [N/mm]
     real(dp) :: wdmg    !< energy dissipated by damage in the step [N/mm]
     real(dp) :: psi     !< stored energy at the end of the step [N/mm]
-  end type plane_response_3d_t
+  end type plane_law_3d_t
 
-  !> The dip directions of the planes: cos and sin of each azimuth (1 and 0 to the bit for
-  !> phi = 0), computed once per update.
-  type :: azimuths_t
-    real(dp) :: c(max_planes), s(max_planes)
-    logical :: all_zero   !< every plane's azimuth is 0
-  end type azimuths_t
+  real(dp), parameter :: e_t(3, 2) = reshape([0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], &
+                                             [3, 2])
 
 contains
 
-  pure subroutine azimuths_of(mat, az)
-    type(interlock_material_t), intent(in) :: mat
-    type(azimuths_t), intent(out) :: az
-    integer :: k
-    az%all_zero = .true.
-    do k = 1, mat%n_planes
-      if (mat%phi(k) < 0.0_dp .or. mat%phi(k) > 0.0_dp) then
-        az%c(k) = cos(mat%phi(k))
-        az%s(k) = sin(mat%phi(k))
-        az%all_zero = .false.
-      else
-        az%c(k) = 1.0_dp
-        az%s(k) = 0.0_dp
-      end if
-    end do
-  end subroutine azimuths_of
-
-  !> cos and sin of plane k's inclination theta: while unworn (theta = theta_0 to the bit) the
-  !> material's values, as the 2D law takes them.
-  pure subroutine plane_angle_frame(mat, k, theta, c, sn)
-    type(interlock_material_t), intent(in) :: mat
-    integer, intent(in) :: k
-    type(dual_t), intent(in) :: theta
-    type(dual_t), intent(out) :: c, sn
-    if (theta%v >= mat%theta_init(k) .and. theta%v <= mat%theta_init(k)) then
-      c%v = mat%cos0(k)
-      c%d = -mat%sin0(k) * theta%d
-      sn%v = mat%sin0(k)
-      sn%d = mat%cos0(k) * theta%d
-    else
-      c = cos(theta)
-      sn = sin(theta)
-    end if
-  end subroutine plane_angle_frame
-
-  !> theta(zeta) of a wearing plane k (eq. 22).
-  elemental type(dual_t) function worn_angle_3d(mat, k, zeta) result(theta)
-    type(interlock_material_t), intent(in) :: mat
-    integer, intent(in) :: k
-    type(dual_t), intent(in) :: zeta
-    theta = (mat%theta_init(k) - mat%thetaf_eff(k)) * exp((-zeta) * mat%inv_zeta0(k)) + &
-            mat%thetaf_eff(k)
-  end function worn_angle_3d
-
-  !> mu p of the start state on a plane of azimuth frame (cp, sp) at its start angle (frame c,
-  !> sn), s_o the start
-  !> separation; 0 when the start state is separated (decision D7): the trapezoidal scheme's
-  !> start value.
-  pure type(dual_t) function start_pressure_3d(mat, cp, sp, c, sn, s_o) result(mu_p)
-    type(interlock_material_t), intent(in) :: mat
-    real(dp), intent(in) :: cp, sp
-    type(dual_t), intent(in) :: c, sn, s_o(3)
-    type(dual_t) :: dip
-    mu_p = constant(0.0_dp)
-    if (s_o(1)%v * mat%inv_h_n < 1.0_dp) then
-      dip = cp * s_o(2) + sp * s_o(3)
-      ! (max takes its first argument at a tie: at s_kn = 0 the closed side's derivative,
-      ! SPEC D13)
-      mu_p = mat%mu_eff * mat%kn * max(-(c * s_o(1) + sn * dip), 0.0_dp)
-    end if
-  end function start_pressure_3d
-
-  !> A plane of azimuth frame (cp, sp) = (cos, sin)(phi) at angle theta (frame c, sn) from the
-  !> start state o to the macro separation s (SPEC section 9, one step, points 2-6 and the
-  !> energies).
-  !> mu_p_o: the start state's mu p (start_pressure_3d) where the slip direction follows D14's
-  !> mean-direction rule (the trapezoidal scheme), 0 for radial return alone.
-  pure subroutine plane_law_3d(mat, cp, sp, c, sn, s, o, mu_p_o, p)
-    type(interlock_material_t), intent(in) :: mat
-    real(dp), intent(in) :: cp, sp
-    type(dual_t), intent(in) :: c, sn, s(3), mu_p_o
-    type(plane_dual_t), intent(in) :: o
-    type(plane_response_3d_t), intent(out) :: p
-    type(dual_t) :: dip, sl_n, sl_t(2), pos, an, at, beq2, beq, mu_p, tr(2), tr_norm, dsf(2), &
-                    slip_norm, kpos, sig_n, sig_t(2), sig_dip, atau_dip, n_new(2), n_o(2)
-    real(dp) :: work, tauf_norm
-    logical :: closed_at_zero, mean_direction
-
-    ! Kinematics: the separation's component along the dip direction d = cos(phi) t1 +
-    ! sin(phi) t2, then m = cos(theta) n + sin(theta) d, e = -sin(theta) n + cos(theta) d and
-    ! the strike q = -sin(phi) t1 + cos(phi) t2.
+  !> sl = (m . s, e . s, q . s) of a plane of azimuth frame (cp, sp) = (cos, sin)(phi) at
+  !> angle theta (frame c, sn): m = cos(theta) n + sin(theta) d, e = -sin(theta) n +
+  !> cos(theta) d, q = -sin(phi) t1 + cos(phi) t2, with the dip direction d = cos(phi) t1 +
+  !> sin(phi) t2.
+  pure function local_separation(cp, sp, c, sn, s) result(sl)
+    real(dp), intent(in) :: cp, sp, c, sn, s(3)
+    real(dp) :: sl(3)
+    real(dp) :: dip
     dip = cp * s(2) + sp * s(3)
-    sl_n = c * s(1) + sn * dip
-    sl_t(1) = -(sn * s(1)) + c * dip
-    sl_t(2) = -(sp * s(2)) + cp * s(3)
+    sl(1) = c * s(1) + sn * dip
+    sl(2) = -(sn * s(1)) + c * dip
+    sl(3) = -(sp * s(2)) + cp * s(3)
+  end function local_separation
 
-    ! Damage, isotropic in the microplane: beta_eq from <s_kn>_+ and |s_kt|.
-    pos = max(0.0_dp, sl_n)
+  !> A local vector v (components along m, e, q) in the macro frame (n, t1, t2).
+  pure function to_macro(cp, sp, c, sn, v) result(w)
+    real(dp), intent(in) :: cp, sp, c, sn, v(3)
+    real(dp) :: w(3)
+    real(dp) :: dip
+    dip = sn * v(1) + c * v(2)
+    w(1) = c * v(1) - sn * v(2)
+    w(2) = cp * dip - sp * v(3)
+    w(3) = sp * dip + cp * v(3)
+  end function to_macro
+
+  !> A plane at the local separation sl from the start state o (SPEC section 9, one step,
+  !> points 3-5 and the energies). mu_p_o: the start state's mu p (interlock_plane_law's
+  !> start_yield with the start separation's dip component) where the
+  !> slip direction follows D14's mean-direction rule (the trapezoidal scheme), 0 for radial
+  !> return alone. `drivers`: the derivatives of the wear drivers are wanted (a scheme whose
+  !> angle is coupled to the end of the step, on a plane that wears).
+  pure subroutine plane_law_3d(mat, sl, o, mu_p_o, drivers, chain, p)
+    type(interlock_material_t), intent(in) :: mat
+    real(dp), intent(in) :: sl(3), mu_p_o
+    type(plane_start_3d_t), intent(in) :: o
+    logical, intent(in) :: drivers, chain
+    type(plane_law_3d_t), intent(out) :: p
+    real(dp) :: pos, dpos, tn, gd_n, gd_t, mu_p, g_mu(3), tr(2), trn, nv(2), g_nv(3, 2), &
+                n_o(2), n_new(2), g_nn(3, 2), dsf(2), g_dsf(3, 2), slip_norm, g_slip_norm(3), &
+                atau, g_atau(3), share, g_share(3), x, g_x(3), kpos, kts, tauf_norm, work, &
+                phi_nn(2), phi_slip_norm, phi_x
+    integer :: i
+    logical :: closed_at_zero, mean_direction, grows
+
+    p%sl = sl
+
+    ! Damage, isotropic in the microplane: beta_eq from <s_kn>_+ and |s_kt| (interlock_damage).
+    pos = max(0.0_dp, sl(1))
+    dpos = merge(1.0_dp, 0.0_dp, sl(1) > 0.0_dp)
     p%beta = o%beta
+    p%g_dmg = 0.0_dp
+    p%g_beta = 0.0_dp
+    p%mean = .false.
+    p%phi_tauf = 0.0_dp
+    p%phi_sf = 0.0_dp
+    p%phi_wear_start = 0.0_dp
+    p%phi_wear_end = 0.0_dp
+    grows = .false.
     if (mat%use_damage) then
       p%dmg = o%dmg
-      an = pos * mat%inv_s0n
-      at = sqrt(sl_t(1) * sl_t(1) + sl_t(2) * sl_t(2)) * mat%inv_s0t
-      beq2 = an * an + at * at
-      if (beq2%v > o%beta%v * o%beta%v) then
-        beq = sqrt(beq2)
-        if (beq%v > o%beta%v) then
-          p%beta = beq
-          if (beq%v >= mat%beta_break) then
-            p%dmg = constant(1.0_dp)
-          else if (beq%v > 1.0_dp) then
-            p%dmg = (beq - 1.0_dp) / (mat%eta * beq)
-          else
-            p%dmg = constant(0.0_dp)
-          end if
+      tn = sqrt(sl(2) * sl(2) + sl(3) * sl(3))
+      call damage_growth(pos * mat%inv_s0n, tn * mat%inv_s0t, o%beta, o%dmg, mat%eta, &
+                         mat%inv_eta, mat%beta_break, mat%inv_s0n, mat%inv_s0t, p%beta, p%dmg, &
+                         gd_n, gd_t)
+      ! (gd_n, gd_t = 0 unless D grows below 1)
+      grows = gd_n > 0.0_dp .or. gd_t > 0.0_dp
+      if (chain .and. p%beta > o%beta) then
+        ! beta = beta_eq = sqrt(an^2 + at^2)
+        p%g_beta(1) = (pos * mat%inv_s0n) * mat%inv_s0n * dpos / p%beta
+        if (tn > 0.0_dp) then
+          p%g_beta(2) = (tn * mat%inv_s0t) * mat%inv_s0t * (sl(2) / tn) / p%beta
+          p%g_beta(3) = (tn * mat%inv_s0t) * mat%inv_s0t * (sl(3) / tn) / p%beta
+        else
+          p%g_beta(2:3) = 0.0_dp
+        end if
+      end if
+      if (grows) then
+        p%g_dmg(1) = gd_n * dpos
+        if (tn > 0.0_dp) then
+          p%g_dmg(2) = gd_t * (sl(2) / tn)
+          p%g_dmg(3) = gd_t * (sl(3) / tn)
         end if
       end if
     else
-      p%dmg = constant(mat%d_frozen)
+      p%dmg = mat%d_frozen
     end if
+    p%beta_kept = .not. p%beta > o%beta
+    p%dmg_kept = mat%use_damage .and. p%beta_kept
 
-    ! Friction on the damaged part, radial return to |tau_f| = mu p (p = K_n <-s_kn>_+);
-    ! free (sf = s_kt, tau_f = 0) on an open plane or without friction. At s_kn = 0 exactly
-    ! mu p carries the closed side's derivative (SPEC D13: min takes its first argument at a
-    ! tie).
-    mu_p = constant(0.0_dp)
-    if (mat%use_friction) mu_p = -mat%mu_eff * mat%kn * min(sl_n, 0.0_dp)
-    p%dip_share = constant(1.0_dp)
+    ! Friction on the damaged part, to |tau_f| = mu p (p = K_n <-s_kn>_+); free (sf = s_kt,
+    ! tau_f = 0) on an open plane or without friction. At s_kn = 0 exactly mu p has the closed
+    ! side's derivative (SPEC D13).
+    mu_p = 0.0_dp
+    g_mu = 0.0_dp
+    if (mat%use_friction) then
+      mu_p = -mat%mu_eff * mat%kn * min(sl(1), 0.0_dp)
+      if (.not. sl(1) > 0.0_dp) g_mu(1) = -mat%mu_eff * mat%kn
+    end if
     closed_at_zero = .false.
     mean_direction = .false.
-    if (mu_p%v > 0.0_dp) then
-      tr(1) = mat%kt * (sl_t(1) - o%sf(1))
-      tr(2) = mat%kt * (sl_t(2) - o%sf(2))
-      tr_norm = vector_norm(tr)
-      if (tr_norm%v <= mu_p%v) then
+    if (mu_p > 0.0_dp) then
+      tr(1) = mat%kt * (sl(2) - o%sf(1))
+      tr(2) = mat%kt * (sl(3) - o%sf(2))
+      trn = vector_norm(tr)
+      if (trn <= mu_p) then
+        ! stick
         p%sf = o%sf
+        if (chain) p%g_sf = 0.0_dp
         p%tauf = tr
-        p%slip_dip = constant(0.0_dp)
-        slip_norm = constant(0.0_dp)
+        p%g_tauf = mat%kt * e_t
+        p%slip_dip = 0.0_dp
+        p%g_slip_dip = 0.0_dp
+        slip_norm = 0.0_dp
+        g_slip_norm = 0.0_dp
       else
-        if (mu_p_o%v > 0.0_dp) call mean_direction_return(o%tauf, mu_p_o%v, tr, mu_p, &
-                                                          mean_direction, n_o, n_new)
+        if (mu_p_o > 0.0_dp) call mean_direction_return(mat, o%tauf, mu_p_o, tr, mu_p, g_mu, &
+                                                        mean_direction, n_o, n_new, g_nn, phi_nn)
         if (mean_direction) then
           ! D14: the slip increment along the mean of the start and end directions, |tau_f| =
           ! mu p along n_new; the slip of the step is what the trial traction exceeds it by.
-          p%tauf(1) = mu_p * n_new(1)
-          p%tauf(2) = mu_p * n_new(2)
-          dsf(1) = (tr(1) - p%tauf(1)) * mat%inv_kt
-          dsf(2) = (tr(2) - p%tauf(2)) * mat%inv_kt
-          p%sf(1) = sl_t(1) - p%tauf(1) * mat%inv_kt
-          p%sf(2) = sl_t(2) - p%tauf(2) * mat%inv_kt
+          do i = 1, 2
+            p%tauf(i) = mu_p * n_new(i)
+            p%g_tauf(:, i) = n_new(i) * g_mu + mu_p * g_nn(:, i)
+            dsf(i) = (tr(i) - p%tauf(i)) * mat%inv_kt
+            p%sf(i) = sl(1 + i) - p%tauf(i) * mat%inv_kt
+            if (chain) p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
+          end do
           slip_norm = vector_norm(dsf)
           p%slip_dip = abs(dsf(1))
           ! the flow is along the friction traction: the wear rate D mu p n_1^2 |d sf| / dt
           ! at the start and at the end of the step, for the trapezoidal rule
           p%wear_start = slip_norm * (n_o(1) * n_o(1))
-          p%wear_end = p%dmg * abs(p%tauf(1)) * (slip_norm * abs(n_new(1)))
+          x = slip_norm * abs(n_new(1))
+          atau = p%dmg * abs(p%tauf(1))
+          p%wear_end = atau * x
+          if (drivers) then
+            do i = 1, 2
+              g_dsf(:, i) = (mat%kt * e_t(:, i) - p%g_tauf(:, i)) * mat%inv_kt
+            end do
+            g_slip_norm = norm_gradient(dsf, slip_norm, g_dsf)
+            p%g_slip_dip = sign_of(dsf(1)) * g_dsf(:, 1)
+            p%g_wear_start = g_slip_norm * (n_o(1) * n_o(1))
+            g_x = g_slip_norm * abs(n_new(1)) + slip_norm * sign_of(n_new(1)) * g_nn(:, 1)
+            g_atau = p%g_dmg * abs(p%tauf(1)) + p%dmg * sign_of(p%tauf(1)) * p%g_tauf(:, 1)
+            p%g_wear_end = g_atau * x + atau * g_x
+          end if
+          if (chain) then
+            ! d / d phi_o: n_new turns with n_o (phi_nn), the slip dsf = (tau_tr - tau_f) / K_t
+            p%mean = .true.
+            p%phi_tauf = mu_p * phi_nn
+            p%phi_sf = -p%phi_tauf * mat%inv_kt
+            phi_slip_norm = 0.0_dp
+            if (slip_norm > 0.0_dp) phi_slip_norm = dot_product(dsf, p%phi_sf) / slip_norm
+            p%phi_wear_start = phi_slip_norm * (n_o(1) * n_o(1)) - &
+                               2.0_dp * slip_norm * n_o(1) * n_o(2)
+            phi_x = phi_slip_norm * abs(n_new(1)) + slip_norm * sign_of(n_new(1)) * phi_nn(1)
+            p%phi_wear_end = (p%dmg * sign_of(p%tauf(1)) * p%phi_tauf(1)) * x + atau * phi_x
+            p%dmg_wear_end = abs(p%tauf(1)) * x
+          end if
         else
-          ! sf - sf_o = n (|tau_tr| - mu p) / K_t along n = tau_tr / |tau_tr|
-          p%tauf(1) = mu_p * (tr(1) / tr_norm)
-          p%tauf(2) = mu_p * (tr(2) / tr_norm)
-          p%sf(1) = sl_t(1) - p%tauf(1) * mat%inv_kt
-          p%sf(2) = sl_t(2) - p%tauf(2) * mat%inv_kt
-          slip_norm = (tr_norm - mu_p) * mat%inv_kt
-          p%slip_dip = abs(tr(1) / tr_norm) * slip_norm
+          ! radial return: sf - sf_o = n (|tau_tr| - mu p) / K_t along n = tau_tr / |tau_tr|
+          do i = 1, 2
+            nv(i) = tr(i) / trn
+          end do
+          do i = 1, 2
+            g_nv(:, i) = (mat%kt / trn) * (e_t(:, i) - nv(i) * (nv(1) * e_t(:, 1) + &
+                                                                 nv(2) * e_t(:, 2)))
+            p%tauf(i) = mu_p * nv(i)
+            p%g_tauf(:, i) = nv(i) * g_mu + mu_p * g_nv(:, i)
+            p%sf(i) = sl(1 + i) - p%tauf(i) * mat%inv_kt
+            if (chain) p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
+          end do
+          slip_norm = (trn - mu_p) * mat%inv_kt
+          p%slip_dip = abs(nv(1)) * slip_norm
+          if (drivers) then
+            g_slip_norm = (nv(1) * e_t(:, 1) + nv(2) * e_t(:, 2) - g_mu * mat%inv_kt)
+            p%g_slip_dip = sign_of(nv(1)) * g_nv(:, 1) * slip_norm + abs(nv(1)) * g_slip_norm
+          end if
         end if
       end if
     else
-      p%sf = sl_t
-      p%tauf(1) = constant(0.0_dp)
-      p%tauf(2) = constant(0.0_dp)
+      p%sf(1) = sl(2)
+      p%sf(2) = sl(3)
+      if (chain) p%g_sf = e_t
+      p%tauf = 0.0_dp
+      p%g_tauf = 0.0_dp
       dsf(1) = p%sf(1) - o%sf(1)
       dsf(2) = p%sf(2) - o%sf(2)
       p%slip_dip = abs(dsf(1))
       slip_norm = vector_norm(dsf)
-      if (mat%use_friction .and. .not. sl_n%v > 0.0_dp) then
+      if (drivers) then
+        p%g_slip_dip = sign_of(dsf(1)) * e_t(:, 1)
+        g_slip_norm = norm_gradient(dsf, slip_norm, e_t)
+      end if
+      if (mat%use_friction .and. .not. sl(1) > 0.0_dp) then
         ! s_kn = 0 exactly: in contact for every derivative (SPEC D13). The values are the
         ! free plane's, the same as the slide's with mu p = 0 (tau_f = 0, sf = s_kt); the
         ! derivatives are the slide's: d tau_f = d(mu p) n, the slip shortened by d(mu p) / K_t
         ! along n. At the cone's apex (|tau_tr| = 0) a kink where they stay 0.
-        tr(1) = mat%kt * (sl_t(1) - o%sf(1))
-        tr(2) = mat%kt * (sl_t(2) - o%sf(2))
-        tr_norm = vector_norm(tr)
-        if (tr_norm%v > 0.0_dp .and. mu_p_o%v > 0.0_dp) &
-          call mean_direction_return(o%tauf, mu_p_o%v, tr, mu_p, mean_direction, n_o, n_new)
+        tr(1) = mat%kt * (sl(2) - o%sf(1))
+        tr(2) = mat%kt * (sl(3) - o%sf(2))
+        trn = vector_norm(tr)
+        if (trn > 0.0_dp .and. mu_p_o > 0.0_dp) &
+          call mean_direction_return(mat, o%tauf, mu_p_o, tr, mu_p, g_mu, mean_direction, n_o, &
+                                     n_new, g_nn, phi_nn)
         if (mean_direction) then
           ! and D14's direction where the plane slid at the start (the trapezoidal scheme):
           ! the slip (tau_tr - mu p n_new) / K_t, its values the free plane's
-          p%tauf(1) = mu_p * n_new(1)
-          p%tauf(2) = mu_p * n_new(2)
-          p%tauf(1)%v = 0.0_dp
-          p%tauf(2)%v = 0.0_dp
-          p%sf(1) = sl_t(1) - p%tauf(1) * mat%inv_kt
-          p%sf(2) = sl_t(2) - p%tauf(2) * mat%inv_kt
-          dsf(1) = (tr(1) - p%tauf(1)) * mat%inv_kt
-          dsf(2) = (tr(2) - p%tauf(2)) * mat%inv_kt
-          tr_norm = slip_norm
-          slip_norm = vector_norm(dsf)
-          slip_norm%v = tr_norm%v
-          tr_norm = p%slip_dip
-          p%slip_dip = abs(dsf(1))
-          p%slip_dip%v = tr_norm%v
-          atau_dip = mu_p * abs(n_new(1))
-          atau_dip%v = 0.0_dp
+          do i = 1, 2
+            p%g_tauf(:, i) = n_new(i) * g_mu
+            if (chain) p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
+          end do
+          atau = 0.0_dp
+          if (chain) then
+            ! (the slide's derivatives with mu p = 0: tau_f and the slip do not turn with n_o)
+            p%mean = .true.
+            p%phi_wear_start = -2.0_dp * slip_norm * n_o(1) * n_o(2)
+            p%dmg_wear_end = 0.0_dp
+          end if
           p%wear_start = slip_norm * (n_o(1) * n_o(1))
-          p%wear_end = p%dmg * atau_dip * (slip_norm * abs(n_new(1)))
+          p%wear_end = 0.0_dp
+          if (drivers) then
+            do i = 1, 2
+              dsf(i) = tr(i) * mat%inv_kt
+              g_dsf(:, i) = (mat%kt * e_t(:, i) - p%g_tauf(:, i)) * mat%inv_kt
+            end do
+            g_slip_norm = norm_gradient(dsf, vector_norm(dsf), g_dsf)
+            p%g_slip_dip = sign_of(dsf(1)) * g_dsf(:, 1)
+            g_atau = abs(n_new(1)) * g_mu
+            p%g_wear_start = g_slip_norm * (n_o(1) * n_o(1))
+            p%g_wear_end = p%dmg * g_atau * (slip_norm * abs(n_new(1)))
+          end if
           closed_at_zero = .true.
-        else if (tr_norm%v > 0.0_dp) then
-          atau_dip = mu_p * abs(tr(1) / tr_norm)
-          p%tauf(1) = mu_p * (tr(1) / tr_norm)
-          p%tauf(2) = mu_p * (tr(2) / tr_norm)
-          p%tauf(1)%v = 0.0_dp
-          p%tauf(2)%v = 0.0_dp
-          p%sf(1) = sl_t(1) - p%tauf(1) * mat%inv_kt
-          p%sf(2) = sl_t(2) - p%tauf(2) * mat%inv_kt
-          slip_norm = slip_norm - mu_p * mat%inv_kt
-          p%slip_dip = p%slip_dip - atau_dip * mat%inv_kt
-          atau_dip%v = 0.0_dp
+        else if (trn > 0.0_dp) then
+          do i = 1, 2
+            nv(i) = tr(i) / trn
+            p%g_tauf(:, i) = nv(i) * g_mu
+            if (chain) p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
+          end do
+          atau = 0.0_dp
+          if (drivers) then
+            g_atau = abs(nv(1)) * g_mu
+            g_slip_norm = g_slip_norm - g_mu * mat%inv_kt
+            p%g_slip_dip = p%g_slip_dip - g_atau * mat%inv_kt
+          end if
           closed_at_zero = .true.
         end if
       end if
     end if
-    if (slip_norm%v > 0.0_dp) p%dip_share = p%slip_dip / slip_norm
-    if (.not. closed_at_zero) atau_dip = abs(p%tauf(1))
+    if (.not. closed_at_zero) then
+      atau = abs(p%tauf(1))
+      if (drivers) g_atau = sign_of(p%tauf(1)) * p%g_tauf(:, 1)
+    end if
 
-    ! The traction (eq. 6) in the plane's frame and back in the macro one.
+    ! The traction (eq. 6) in the plane's frame: d sigma_kn = K_n (1 - D <s_kn>_+') ds_kn -
+    ! K_n <s_kn>_+ dD, d sigma_kt = (1 - D) K_t ds_kt + D d tau_f + (tau_f - K_t s_kt) dD.
     kpos = mat%kn * pos
-    sig_n = mat%kn * sl_n - p%dmg * kpos
-    sig_t(1) = (1.0_dp - p%dmg) * (mat%kt * sl_t(1)) + p%dmg * p%tauf(1)
-    sig_t(2) = (1.0_dp - p%dmg) * (mat%kt * sl_t(2)) + p%dmg * p%tauf(2)
-    sig_dip = sn * sig_n + c * sig_t(1)
-    p%sig(1) = c * sig_n - sn * sig_t(1)
-    p%sig(2) = cp * sig_dip - sp * sig_t(2)
-    p%sig(3) = sp * sig_dip + cp * sig_t(2)
+    p%sig_loc(1) = mat%kn * sl(1) - p%dmg * kpos
+    p%k_loc(1, :) = 0.0_dp
+    p%k_loc(1, 1) = mat%kn - (p%dmg * mat%kn) * dpos
+    do i = 1, 2
+      kts = mat%kt * sl(1 + i)
+      p%sig_loc(1 + i) = (1.0_dp - p%dmg) * kts + p%dmg * p%tauf(i)
+      p%k_loc(1 + i, :) = p%dmg * p%g_tauf(:, i)
+      p%k_loc(1 + i, 1 + i) = p%k_loc(1 + i, 1 + i) + (1.0_dp - p%dmg) * mat%kt
+      if (grows) p%k_loc(1 + i, :) = p%k_loc(1 + i, :) + (p%tauf(i) - kts) * p%g_dmg
+    end do
+    if (grows) p%k_loc(1, :) = p%k_loc(1, :) - kpos * p%g_dmg
+    if (chain) then
+      p%dmg_sig(1) = -kpos
+      p%dmg_sig(2) = p%tauf(1) - mat%kt * sl(2)
+      p%dmg_sig(3) = p%tauf(2) - mat%kt * sl(3)
+      p%dmg_wfric_dip = atau * p%slip_dip
+      if (.not. p%mean) p%dmg_wear_end = p%dmg_wfric_dip
+    end if
+
+    ! The wear drivers in the dip direction.
+    p%wfric_dip = p%dmg * atau * p%slip_dip
+    if (.not. mean_direction) then
+      share = 1.0_dp
+      if (slip_norm > 0.0_dp) share = p%slip_dip / slip_norm
+      p%wear_start = p%slip_dip * share
+      p%wear_end = p%wfric_dip
+    end if
+    if (drivers) then
+      p%g_wfric_dip = (p%g_dmg * atau + p%dmg * g_atau) * p%slip_dip + &
+                      (p%dmg * atau) * p%g_slip_dip
+      if (.not. mean_direction) then
+        g_share = 0.0_dp
+        if (slip_norm > 0.0_dp) g_share = (p%g_slip_dip - share * g_slip_norm) / slip_norm
+        p%g_wear_start = p%g_slip_dip * share + p%slip_dip * g_share
+        p%g_wear_end = p%g_wfric_dip
+      end if
+    end if
 
     ! Energies, as the 2D law's (interlock_plane_law) with vectors: the frictional work on the
     ! damaged part, the damage dissipation Y dD (the elastic part exact, the friction part at
     ! first order), the stored energy (sigma_k . s_k - D tau_f . sf) / 2.
-    p%wfric_dip = p%dmg * atau_dip * p%slip_dip
-    if (.not. mean_direction) then
-      p%wear_start = p%slip_dip * p%dip_share
-      p%wear_end = p%wfric_dip
-    end if
-    tauf_norm = sqrt(p%tauf(1)%v**2 + p%tauf(2)%v**2)
-    p%wfric = p%dmg%v * tauf_norm * slip_norm%v
+    tauf_norm = sqrt(p%tauf(1)**2 + p%tauf(2)**2)
+    p%wfric = p%dmg * tauf_norm * slip_norm
     p%wdmg = 0.0_dp
-    if (p%dmg%v > o%dmg%v) then
-      p%wdmg = mat%decohesion_energy_factor * (min(max(p%beta%v, 1.0_dp), mat%beta_break) - &
-                                               min(max(o%beta%v, 1.0_dp), mat%beta_break))
-      p%wdmg = p%wdmg - 0.5_dp * tauf_norm**2 * mat%inv_kt * (p%dmg%v - o%dmg%v)
+    if (p%dmg > o%dmg) then
+      p%wdmg = mat%decohesion_energy_factor * (min(max(p%beta, 1.0_dp), mat%beta_break) - &
+                                               min(max(o%beta, 1.0_dp), mat%beta_break))
+      p%wdmg = p%wdmg - 0.5_dp * tauf_norm**2 * mat%inv_kt * (p%dmg - o%dmg)
     end if
-    work = sig_n%v * sl_n%v + sig_t(1)%v * sl_t(1)%v + sig_t(2)%v * sl_t(2)%v - &
-           p%dmg%v * (p%tauf(1)%v * p%sf(1)%v + p%tauf(2)%v * p%sf(2)%v)
+    work = p%sig_loc(1) * sl(1) + p%sig_loc(2) * sl(2) + p%sig_loc(3) * sl(3) - &
+           p%dmg * (p%tauf(1) * p%sf(1) + p%tauf(2) * p%sf(2))
     p%psi = 0.5_dp * work
   end subroutine plane_law_3d
 
@@ -304,42 +381,53 @@ contains
   !> the start direction n_o = tauf_o / |tauf_o| and the trial traction tau_tr, the slip
   !> increment along the mean direction (n_o + n_new) / |n_o + n_new| and tau_f = mu p n_new
   !> make tau_tr - mu p n_new parallel to that mean, which is then the direction of
-  !> v = tau_tr + mu p n_o; n_new is n_o turned by twice v's angle from n_o. In n_o's frame,
-  !> v = (a, b) with a = tau_tr . n_o + mu p, b = n_o x tau_tr: n_new = ((a^2 - b^2) n_o +
-  !> 2 a b n_o') / (a^2 + b^2), n_o' = n_o turned by +90 deg; closed form, no iteration (with
-  !> b = 0, as in every 2D step, n_new = n_o to the bit), and the slip |tau_tr - mu p n_new| /
-  !> K_t = (|tau_tr|^2 - (mu p)^2) / (K_t |v|) >= 0 exactly where the plane slides at the end.
+  !> v = tau_tr + mu p n_o; n_new is n_o turned by twice v's angle psi from n_o. In n_o's
+  !> frame, v = (a, b) with a = tau_tr . n_o + mu p, b = n_o x tau_tr: n_new = ((a^2 - b^2)
+  !> n_o + 2 a b n_o') / (a^2 + b^2), n_o' = n_o turned by +90 deg; closed form, no iteration
+  !> (with b = 0, as in every 2D step, n_new = n_o to the bit). Its derivative: d n_new = 2
+  !> d psi n_new', d psi = (a db - b da) / (a^2 + b^2), through tau_tr (K_t d s_kt) and mu p.
   !> Applies (`ok`) where the plane slides at the start (slides_at_start) and the turn
-  !> 2 atan(b / a) is at most 90 deg (a >= |b|); else radial return (a reversal turns by
-  !> 180 deg). The caller has |tau_tr| > mu p > 0 (sliding at the end).
-  pure subroutine mean_direction_return(tauf_o, mu_p_o, tr, mu_p, ok, n_o, n_new)
-    type(dual_t), intent(in) :: tauf_o(2), tr(2), mu_p
-    real(dp), intent(in) :: mu_p_o
+  !> 2 psi is at most 90 deg (a >= |b|); else radial return (a reversal turns by 180 deg).
+  !> The caller has |tau_tr| > mu p (sliding at the end).
+  pure subroutine mean_direction_return(mat, tauf_o, mu_p_o, tr, mu_p, g_mu, ok, n_o, n_new, &
+                                        g_nn, phi_nn)
+    type(interlock_material_t), intent(in) :: mat
+    real(dp), intent(in) :: tauf_o(2), mu_p_o, tr(2), mu_p, g_mu(3)
     logical, intent(out) :: ok
-    type(dual_t), intent(out) :: n_o(2), n_new(2)
-    type(dual_t) :: t_norm, a, b, a2, b2, v2
-    real(dp) :: m
+    real(dp), intent(out) :: n_o(2), n_new(2), g_nn(3, 2), phi_nn(2)
+    real(dp) :: t_norm, a, b, a2, b2, v2, m, scale_ab, g_a(3), g_b(3), g_psi(3)
     ok = .false.
     t_norm = vector_norm(tauf_o)
-    if (.not. slides_at_start(t_norm%v, mu_p_o)) return
+    if (.not. slides_at_start(t_norm, mu_p_o)) return
     n_o(1) = tauf_o(1) / t_norm
     n_o(2) = tauf_o(2) / t_norm
     a = tr(1) * n_o(1) + tr(2) * n_o(2) + mu_p
     b = n_o(1) * tr(2) - n_o(2) * tr(1)
-    if (.not. (a%v > 0.0_dp .and. a%v >= abs(b%v))) return
+    if (.not. (a > 0.0_dp .and. a >= abs(b))) return
     ok = .true.
     ! n_new depends on the direction of (a, b) only: scaled where the squares would overflow
     ! (a trial traction from a huge admissible slip, as vector_norm)
-    m = max(abs(a%v), abs(b%v))
+    m = max(abs(a), abs(b))
+    scale_ab = 1.0_dp
     if (m >= 1.0e150_dp) then
       a = a / m
       b = b / m
+      scale_ab = m
     end if
     a2 = a * a
     b2 = b * b
     v2 = a2 + b2
     n_new(1) = ((a2 - b2) * n_o(1) - (2.0_dp * a * b) * n_o(2)) / v2
     n_new(2) = ((a2 - b2) * n_o(2) + (2.0_dp * a * b) * n_o(1)) / v2
+    g_a = mat%kt * (n_o(1) * e_t(:, 1) + n_o(2) * e_t(:, 2)) + g_mu
+    g_b = mat%kt * (n_o(1) * e_t(:, 2) - n_o(2) * e_t(:, 1))
+    g_psi = (a * g_b - b * g_a) / (v2 * scale_ab)
+    g_nn(:, 1) = -2.0_dp * n_new(2) * g_psi
+    g_nn(:, 2) = 2.0_dp * n_new(1) * g_psi
+    ! turning n_o by d phi_o: da = b d phi_o, db = -(a - mu p) d phi_o, so n_new's angle
+    ! phi_o + 2 psi turns by (2 a mu p / (a^2 + b^2) - 1) d phi_o
+    phi_nn(1) = -n_new(2) * (2.0_dp * a * (mu_p / scale_ab) / v2 - 1.0_dp)
+    phi_nn(2) = n_new(1) * (2.0_dp * a * (mu_p / scale_ab) / v2 - 1.0_dp)
   end subroutine mean_direction_return
 
   !> A plane slides at the start of a step: its friction traction's magnitude |tauf_o| is
@@ -355,11 +443,10 @@ contains
   !> overflow, else scaled by the larger component: an admissible state (a frictional slip of
   !> 1e150 mm) times a stiff interface's K_t gives a trial traction whose square is beyond the
   !> largest number.
-  pure type(dual_t) function vector_norm(a) result(r)
-    type(dual_t), intent(in) :: a(2)
-    type(dual_t) :: b(2)
-    real(dp) :: m
-    m = max(abs(a(1)%v), abs(a(2)%v))
+  pure real(dp) function vector_norm(a) result(r)
+    real(dp), intent(in) :: a(2)
+    real(dp) :: b(2), m
+    m = max(abs(a(1)), abs(a(2)))
     if (m < 1.0e150_dp) then
       r = sqrt(a(1) * a(1) + a(2) * a(2))
     else
@@ -368,5 +455,19 @@ contains
       r = m * sqrt(b(1) * b(1) + b(2) * b(2))
     end if
   end function vector_norm
+
+  !> d|a| = (a / |a|) . da for the gradients g_a(:, i) = d a(i); 0 at a = 0 (a kink).
+  pure function norm_gradient(a, a_norm, g_a) result(g)
+    real(dp), intent(in) :: a(2), a_norm, g_a(3, 2)
+    real(dp) :: g(3)
+    g = 0.0_dp
+    if (a_norm > 0.0_dp) g = (a(1) / a_norm) * g_a(:, 1) + (a(2) / a_norm) * g_a(:, 2)
+  end function norm_gradient
+
+  !> The slope of |x|: -1 below 0, else +1 (the right side at 0).
+  elemental real(dp) function sign_of(x)
+    real(dp), intent(in) :: x
+    sign_of = merge(-1.0_dp, 1.0_dp, x < 0.0_dp)
+  end function sign_of
 
 end module interlock_plane_law_3d

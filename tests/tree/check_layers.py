@@ -5,9 +5,9 @@ the general update path never uses the specialised kernels, and every source fil
 and umat/ is named by a CMakeLists.txt of its folder or of src/ (a file nobody builds is an
 error, not a silently missing feature). The tests mirror the layers (docs/tests.md): a Fortran
 test source under tests/<folder> of a layer uses no module above that layer (nor one of
-another folder of the same layer), and one that names its modules (not the library's public
-module `interlock`, which re-exports every layer below the API) lives in the folder of the
-highest of them.
+another folder of the same layer), and one directly in the folder that names its modules (not
+the library's public module `interlock`, which re-exports every layer below the API) lives in
+the folder of the highest of them.
 
     check_layers.py SOURCE_DIR
 
@@ -134,7 +134,9 @@ def check_tests(root, provider, problems):
                                 f"test of {folder} may use {own} (layer {LAYERS[own]}) and "
                                 "lower layers; it belongs in "
                                 f"{test_folder_of.get(where, 'a folder of ' + where)}")
-        if used and not facade and own not in used.values():
+        # (a subfolder holds a helper of its folder's suites, such as an oracle, whose parts go
+        # together)
+        if used and not facade and own not in used.values() and folder == folder_of(root, path):
             top = max(used.values(), key=lambda where: LAYERS[where])
             problems.append(f"{rel}: the highest layer it uses is {top}, not {own}: it belongs "
                             f"in {test_folder_of.get(top, 'a folder of ' + top)}")

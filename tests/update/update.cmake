@@ -8,6 +8,19 @@ foreach(stem tangent closed_forms limits invariants
   interlock_add_core_suite(${stem})
 endforeach()
 
+# The 3D law in dual numbers (tests/update/oracle3d): an independent oracle of the derivatives
+# the library writes out by hand (core_oracle3d).
+add_library(interlock_oracle3d STATIC ${CMAKE_CURRENT_LIST_DIR}/oracle3d/interlock_dual.f90
+  ${CMAKE_CURRENT_LIST_DIR}/oracle3d/interlock_plane_law_3d_dual.f90
+  ${CMAKE_CURRENT_LIST_DIR}/oracle3d/interlock_update_3d_dual.f90)
+target_link_libraries(interlock_oracle3d PUBLIC interlock::interlock)
+target_compile_options(interlock_oracle3d PRIVATE ${INTERLOCK_FFLAGS})
+set_target_properties(interlock_oracle3d PROPERTIES
+  Fortran_MODULE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/mod_oracle3d)
+target_include_directories(interlock_oracle3d PUBLIC ${CMAKE_CURRENT_BINARY_DIR}/mod_oracle3d)
+interlock_add_pfunit_suite(core_oracle3d LABEL core TEST_SOURCES test_oracle3d.pf
+  LINK_LIBRARIES interlock_core_testlib interlock_oracle3d)
+
 # SPEC D13 (a plane at s_kn = 0 exactly is closed for every derivative) and the 3D tangents
 # the fuzzer found matching neither one-sided derivative (`interlock-fuzz --3d` at seeds 3 and
 # 12345, --beyond-bound at 2 and 99): against one-sided differences.

@@ -18,6 +18,7 @@ module fuzz_3d
   use interlock
   use interlock_material, only: n_schemes
   use test_stability_tools, only: rng_t, rng_uniform, rng_int, rng_log_uniform, check_update
+  use fuzz_fd_check, only: check_tangent_3d
   implicit none
   private
   public :: fuzz_3d_counts_t, fuzz_3d_run
@@ -28,9 +29,6 @@ module fuzz_3d
                       materials_refused = 0, fd_checks = 0, fd_skipped = 0, failures = 0, &
                       stated = 0
   end type fuzz_3d_counts_t
-
-  !> The outcomes of one column's finite-difference check.
-  integer, parameter :: fd_match = 0, fd_kink = 1, fd_mismatch = 2, fd_failed_eval = 3
 
 contains
 
@@ -262,7 +260,8 @@ contains
         return
       end if
       if (mod(c%updates, int(fd_every, int64)) == 0) then
-        call check_tangent(mat, solver, old, s, sigma, tangent, what, c)
+        call check_tangent_3d(mat, solver, old, s, sigma, tangent, what, c%fd_checks, &
+                              c%fd_skipped)
         if (len_trim(what) > 0) then
           call report(mat, solver, old, s, 'tangent: ' // trim(what), c)
           return
@@ -294,105 +293,6 @@ contains
     n2%s = [new%s(1), norm2([new%s(2), new%s_t2])]
     call check_update(mat, o2, n2, [sigma(1), norm2(sigma(2:3))], tangent(1:2, 1:2), what)
   end subroutine check_3d
-
-  !> The tangent against central differences (steps h and h/2) and the one-sided ones, column
-  !> by column; a column whose differences disagree among themselves straddles a kink
-  !> (skipped); otherwise the tangent must match one of them: the central difference, or the
-  !> central or a one-sided one Richardson-extrapolated from h and h/2 (fast wear curves the
-  !> traction so much within h that a plain difference is off by more than the tolerance, and
-  !> at a kink the tangent is one side's). A column that matches none is checked again with
-  !> steps 1e-2 and 1e-4 times as small before it fails: error-controlled substepping chooses
-  !> its partition of the increment from s, so the traction it computes jumps (by the
-  !> tolerance's order) wherever that choice switches, and with fast wear such switches can lie
-  !> closer together than the first step (differences over them are smooth-looking but off by
-  !> a percent; the tangent is the derivative between them).
-  subroutine check_tangent(mat, solver, old, s, sigma, tangent, what, c)
-    type(interlock_material_t), intent(in) :: mat
-    type(interlock_solver_t), intent(in) :: solver
-    type(interlock_state_3d_t), intent(in) :: old
-    real(dp), intent(in) :: s(3), sigma(3), tangent(3, 3)
-    character(len=*), intent(out) :: what
-    type(fuzz_3d_counts_t), intent(inout) :: c
-    real(dp) :: h
-    integer :: j, level, outcome
-    what = ''
-    do j = 1, 3
-      h = 1.0e-6_dp * max(abs(s(j)), min(mat%s0n, mat%s0t))
-      c%fd_checks = c%fd_checks + 1
-      do level = 0, 2
-        call check_column(mat, solver, old, s, sigma, tangent, j, h * 1.0e-2_dp**level, &
-                          outcome, what)
-        if (outcome == fd_failed_eval) return
-        if (outcome == fd_kink) c%fd_skipped = c%fd_skipped + 1
-        if (outcome /= fd_mismatch) exit
-      end do
-      if (outcome == fd_mismatch) return
-      what = ''
-    end do
-  end subroutine check_tangent
-
-  !> One column j of check_tangent with step h: outcome fd_match, fd_kink (the differences
-  !> disagree among themselves), fd_mismatch (`what` says how) or fd_failed_eval (an update
-  !> of the differences was refused: nothing to check).
-  subroutine check_column(mat, solver, old, s, sigma, tangent, j, h, outcome, what)
-    type(interlock_material_t), intent(in) :: mat
-    type(interlock_solver_t), intent(in) :: solver
-    type(interlock_state_3d_t), intent(in) :: old
-    real(dp), intent(in) :: s(3), sigma(3), tangent(3, 3), h
-    integer, intent(in) :: j
-    integer, intent(out) :: outcome
-    character(len=*), intent(out) :: what
-    real(dp) :: fp1(3), fm1(3), fp2(3), fm2(3), c1(3), c2(3), f2(3), b2(3), kref, tol, noise, &
-                richardson(3, 3), err
-    logical :: ok
-    what = ''
-    outcome = fd_failed_eval
-    call eval(mat, solver, old, s, j, h, fp1, ok); if (.not. ok) return
-    call eval(mat, solver, old, s, j, -h, fm1, ok); if (.not. ok) return
-    call eval(mat, solver, old, s, j, 0.5_dp * h, fp2, ok); if (.not. ok) return
-    call eval(mat, solver, old, s, j, -0.5_dp * h, fm2, ok); if (.not. ok) return
-    c1 = (fp1 - fm1) / (2.0_dp * h)
-    c2 = (fp2 - fm2) / h
-    f2 = (fp2 - sigma) / (0.5_dp * h)
-    b2 = (sigma - fm2) / (0.5_dp * h)
-    kref = max(maxval(abs(tangent(:, j))), maxval(abs(c2)), maxval(abs(f2)), &
-               maxval(abs(b2))) + tiny(1.0_dp)
-    noise = 1.0e3_dp * epsilon(1.0_dp) * (maxval(abs([sigma, fp1, fm1])) + &
-            mat%kn * norm2(s)) / h
-    tol = 1.0e-4_dp * kref + noise
-    outcome = fd_kink
-    if (.not. (maxval(abs(c1 - c2)) <= tol .and. maxval(abs(f2 - b2)) <= 20.0_dp * tol)) return
-    outcome = fd_match
-    if (maxval(abs(tangent(:, j) - c2)) <= 10.0_dp * tol) return
-    ! (central, forward, backward: 4 D(h/2) - D(h) / 3 and 2 D(h/2) - D(h))
-    richardson(:, 1) = (4.0_dp * c2 - c1) / 3.0_dp
-    richardson(:, 2) = 2.0_dp * f2 - (fp1 - sigma) / h
-    richardson(:, 3) = 2.0_dp * b2 - (sigma - fm1) / h
-    err = min(maxval(abs(tangent(:, j) - richardson(:, 1))), &
-              maxval(abs(tangent(:, j) - richardson(:, 2))), &
-              maxval(abs(tangent(:, j) - richardson(:, 3))))
-    if (err <= 10.0_dp * tol) return
-    outcome = fd_mismatch
-    write (what, '(a,i0,a,3es12.4,a,3es12.4,a,es8.1)') 'column ', j, ': tangent', &
-      tangent(:, j), ' central FD', c2, ' h', h
-  end subroutine check_column
-
-  subroutine eval(mat, solver, old, s, j, dh, f, ok)
-    type(interlock_material_t), intent(in) :: mat
-    type(interlock_solver_t), intent(in) :: solver
-    type(interlock_state_3d_t), intent(in) :: old
-    real(dp), intent(in) :: s(3), dh
-    integer, intent(in) :: j
-    real(dp), intent(out) :: f(3)
-    logical, intent(out) :: ok
-    type(interlock_state_3d_t) :: tmp
-    type(interlock_info_t) :: info
-    real(dp) :: sp(3), k(3, 3)
-    sp = s
-    sp(j) = sp(j) + dh
-    call interlock_update_3d(mat, solver, sp, old, tmp, f, k, info)
-    ok = info%status == status_ok
-  end subroutine eval
 
   !> Every value of two states has the same bits.
   logical function same_state(a, b)

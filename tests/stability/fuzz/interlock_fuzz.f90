@@ -2,8 +2,9 @@
 !> with reversals and jumps), checking after every update the invariants (D in [0,1] and
 !> non-decreasing, zeta non-decreasing, theta between theta_f and theta_0, dissipations,
 !> finite and bounded traction and tangent) and, every --fd-every updates, the tangent against
-!> central finite differences away from kinks (points where finite differences with two step
-!> sizes, or the one-sided ones, disagree are skipped as a branch switch within the stencil).
+!> finite differences away from kinks (fuzz_fd_check, shared with --3d: central and one-sided
+!> differences, Richardson-extrapolated, retried with smaller steps; columns whose differences
+!> disagree among themselves straddle a kink and are skipped).
 !> Every failing input is written and printed as a replay deck (docs/deck-format.md).
 !>
 !>   interlock-fuzz [--updates N] [--seed S] [--fd-every K] [--deck-dir DIR] [--max-decks M]
@@ -34,6 +35,7 @@ program interlock_fuzz
   use test_stability_tools
   use test_umat_interface, only: UMAT
   use fuzz_3d, only: fuzz_3d_counts_t, fuzz_3d_run
+  use fuzz_fd_check, only: check_tangent_2d
   use interlock_umat_layer, only: interlock_umat_layer_point, host_abaqus, host_calculix, &
       layer_nstatv_extra, layer_nstatv_extra_3d
   implicit none
@@ -639,7 +641,7 @@ contains
       end if
       if (fd_every > 0) then
         if (mod(done, int(fd_every, int64)) == 0) then
-          call check_tangent(mat, solver, old, s, sigma, tangent, what)
+          call check_tangent_2d(mat, solver, old, s, sigma, tangent, what, n_fd, n_fd_skip)
           if (len_trim(what) > 0) then
             call report(mat, solver, old, s, 'tangent: ' // trim(what))
             return
@@ -649,90 +651,6 @@ contains
       old = new
     end do
   end subroutine one_history
-
-  !> The tangent against finite differences of the traction (same start state), column by
-  !> column. Central differences with steps h and h/2, and the one-sided ones, must agree with
-  !> each other (else a kink lies within the stencil: skipped); the tangent must then match the
-  !> central or a one-sided difference (SPEC 6: any one-sided derivative at a kink).
-  subroutine check_tangent(mat, solver, old, s, sigma, tangent, what)
-    type(interlock_material_t), intent(in) :: mat
-    type(interlock_solver_t), intent(in) :: solver
-    type(interlock_state_t), intent(in) :: old
-    real(dp), intent(in) :: s(2), sigma(2), tangent(2, 2)
-    character(len=*), intent(out) :: what
-    real(dp) :: h, fp1(2), fm1(2), fp2(2), fm2(2), c1(2), c2(2), f1(2), f2(2), b1(2), b2(2)
-    real(dp) :: kref, tol, noise, hs
-    integer :: j, m
-    logical :: narrow
-    logical :: ok
-    what = ''
-    do j = 1, 2
-      h = 1.0e-6_dp * max(abs(s(j)), min(mat%s0n, mat%s0t))
-      call eval(mat, solver, old, s, j, h, fp1, ok); if (.not. ok) return
-      call eval(mat, solver, old, s, j, -h, fm1, ok); if (.not. ok) return
-      call eval(mat, solver, old, s, j, 0.5_dp * h, fp2, ok); if (.not. ok) return
-      call eval(mat, solver, old, s, j, -0.5_dp * h, fm2, ok); if (.not. ok) return
-      n_fd = n_fd + 1
-      c1 = (fp1 - fm1) / (2.0_dp * h)
-      c2 = (fp2 - fm2) / h
-      f1 = (fp1 - sigma) / h
-      f2 = (fp2 - sigma) / (0.5_dp * h)
-      b1 = (sigma - fm1) / h
-      b2 = (sigma - fm2) / (0.5_dp * h)
-      kref = max(maxval(abs(tangent(:, j))), maxval(abs(c2)), maxval(abs(f2)), &
-                 maxval(abs(b2))) + tiny(1.0_dp)
-      noise = 1.0e3_dp * epsilon(1.0_dp) * (maxval(abs([sigma, fp1, fm1])) + &
-              mat%kn * norm2(s)) / h
-      tol = 1.0e-4_dp * kref + noise
-      if (.not. (close(c1, c2, tol) .and. close(f1, f2, 20.0_dp * tol) .and. &
-                 close(b1, b2, 20.0_dp * tol))) then
-        n_fd_skip = n_fd_skip + 1
-        cycle
-      end if
-      if (close(tangent(:, j), c2, 10.0_dp * tol) .or. close(tangent(:, j), f2, 20.0_dp * tol) &
-          .or. close(tangent(:, j), b2, 20.0_dp * tol)) cycle
-      ! A kink closer than h (several planes switch branch within 1e-6 relative): the smooth
-      ! piece around s is narrower than the stencil. Retry with stencils 1e3 and 1e5 times
-      ! smaller (their round-off is larger in proportion).
-      narrow = .false.
-      do m = 3, 5, 2
-        hs = h * 10.0_dp**(-m)
-        call eval(mat, solver, old, s, j, hs, fp1, ok); if (.not. ok) return
-        call eval(mat, solver, old, s, j, -hs, fm1, ok); if (.not. ok) return
-        c1 = (fp1 - fm1) / (2.0_dp * hs)
-        if (close(tangent(:, j), c1, 10.0_dp * tol + 10.0_dp**m * noise)) narrow = .true.
-      end do
-      if (narrow) then
-        n_fd_skip = n_fd_skip + 1
-        cycle
-      end if
-      write (what, '(a,i0,a,2es12.4,a,2es12.4,a,2es12.4,a,2es12.4)') 'column ', j, ': tangent', &
-        tangent(:, j), ' central FD', c2, ' forward', f2, ' backward', b2
-      return
-    end do
-  end subroutine check_tangent
-
-  subroutine eval(mat, solver, old, s, jj, dh, f, okay)
-    type(interlock_material_t), intent(in) :: mat
-    type(interlock_solver_t), intent(in) :: solver
-    type(interlock_state_t), intent(in) :: old
-    real(dp), intent(in) :: s(2), dh
-    integer, intent(in) :: jj
-    real(dp), intent(out) :: f(2)
-    logical, intent(out) :: okay
-    type(interlock_state_t) :: tmp
-    type(interlock_info_t) :: inf
-    real(dp) :: sp(2), tg(2, 2)
-    sp = s
-    sp(jj) = sp(jj) + dh
-    call interlock_update(mat, solver, sp, old, tmp, f, tg, inf)
-    okay = inf%status == status_ok
-  end subroutine eval
-
-  pure logical function close(a, b, tol)
-    real(dp), intent(in) :: a(2), b(2), tol
-    close = maxval(abs(a - b)) <= tol
-  end function close
 
   !> Write the failing input as a replay deck and print it.
   subroutine report(mat, solver, old, s, why)

@@ -1,0 +1,488 @@
+!> One step of every plane of a three-dimensional interface (SPEC section 9) in the solver's
+!> scheme, in plain reals with the exact 3x3 tangent written out: the plane law
+!> (interlock_plane_law_3d) at the angle of the step, the wear equation of the coupled schemes
+!> solved by the safeguarded Newton iteration of interlock_wear and differentiated implicitly at
+!> its root, the frame's rotation and the angle's derivative chained by hand, the contact area
+!> and D7. The whole increment as one step (step_3d without `chain`), or one sub-increment of
+!> it whose start state carries its derivatives with respect to the increment's end separation
+!> S (`chain`: substepping), so that the tangent is the exact one of the chain: each plane's
+!> state derivatives d(state)/dS are carried from one sub-increment to the next
+!> (plane_chain_t), through the plane law's derivatives with respect to the local separation,
+!> the start slip, damage and history and the start direction of slip.
+module interlock_step_3d
+  use interlock_kinds, only: dp
+  use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_explicit, &
+      scheme_trapezoidal
+  use interlock_state, only: interlock_state_3d_t
+  use interlock_geometry, only: contact_area
+  use interlock_wear, only: worn_angle, worn_angle_slope, wear_root_t, wear_root_begin, &
+      wear_root_update
+  use interlock_plane_law, only: plane_frame, wear_weights, start_yield, trapezoidal_weight, &
+      wear_angle_error, add_wear_error, wear_error_of
+  use interlock_plane_law_3d, only: plane_start_3d_t, plane_law_3d_t, plane_law_3d, &
+      local_separation, to_macro
+  implicit none
+  private
+  public :: plane_chain_t, step_3d, chain_bounded
+
+  !> The derivatives of one plane's state with respect to the end separation S of the
+  !> increment (columns S_N, S_T1, S_T2).
+  type :: plane_chain_t
+    real(dp) :: beta(3), dmg(3), sf(3, 2), zeta(3), theta(3), tauf(3, 2)
+  end type plane_chain_t
+
+contains
+
+  !> The step from `old` (at its separation s_o) to s: the end state `new` (its traction and
+  !> energies included; the planes beyond n_planes untouched), the traction's derivative in
+  !> `tangent`, the largest number of Newton iterations of a wear equation; `ok` false when a
+  !> wear equation has no solution (then `new` is partly written). Without `chain`, tangent =
+  !> d sigma / d s at the fixed start state. With `chain`, the step is a sub-increment of an
+  !> increment with end separation S, from its fraction h_start to h_end (ds_o / dS = h_start,
+  !> ds / dS = h_end); jo(k) are the start planes' derivatives d / dS, and `tangent` = d sigma /
+  !> dS, jn(k) the end planes'. `estimate`: the embedded error estimate of the wear in err.
+  pure subroutine step_3d(mat, solver, s, old, new, tangent, iterations, ok, chain, h_start, &
+                          h_end, jo, jn, estimate, err)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    real(dp), intent(in) :: s(3), h_start, h_end
+    type(interlock_state_3d_t), intent(in) :: old
+    type(interlock_state_3d_t), intent(inout) :: new
+    real(dp), intent(out) :: tangent(3, 3), err
+    integer, intent(out) :: iterations
+    logical, intent(out) :: ok
+    logical, intent(in) :: chain, estimate
+    type(plane_chain_t), intent(in) :: jo(:)
+    type(plane_chain_t), intent(inout) :: jn(:)
+    type(plane_law_3d_t) :: p
+    type(plane_start_3d_t) :: o
+    real(dp) :: area, darea, gam, w, sig(3), sig_k(3), k_k(3, 3), s_o(3), old_sig(3), zeta, &
+                theta, e, dsig_dtheta(3), err_angle, err_traction
+    integer :: k, n_eval, it
+    logical :: shared
+
+    ok = .true.
+    iterations = 0
+    err = 0.0_dp
+    err_angle = 0.0_dp
+    err_traction = 0.0_dp
+    sig = 0.0_dp
+    tangent = 0.0_dp
+    new%diss_damage = old%diss_damage
+    new%diss_friction = old%diss_friction
+    new%stored = 0.0_dp
+    s_o = [old%s(1), old%s(2), old%s_t2]
+
+    area = 1.0_dp
+    darea = 0.0_dp
+    if (mat%use_depth) call contact_area(s(1), mat%inv_h_n, area, darea)
+
+    if (area <= 0.0_dp) then
+      ! Separated (decision D7): nothing transmitted, no bond survives, nothing slides.
+      do k = 1, mat%n_planes
+        new%beta(k) = old%beta(k)
+        new%damage(k) = old%damage(k)
+        if (chain) jn(k) = jo(k)
+        if (mat%use_damage) then
+          new%beta(k) = max(old%beta(k), mat%beta_break)
+          new%damage(k) = 1.0_dp
+          if (chain) then
+            if (mat%beta_break > old%beta(k)) jn(k)%beta = 0.0_dp
+            jn(k)%dmg = 0.0_dp
+          end if
+        end if
+        new%sf(k) = old%sf(k)
+        new%sf_strike(k) = old%sf_strike(k)
+        new%zeta(k) = old%zeta(k)
+        new%theta(k) = old%theta(k)
+        new%tauf(k) = 0.0_dp
+        new%tauf_strike(k) = 0.0_dp
+        if (chain) jn(k)%tauf = 0.0_dp
+      end do
+    else
+      ! Identical flat planes share one history: computed once, copied (SPEC section 7).
+      shared = mat%flat .and. mat%azimuths_zero
+      n_eval = merge(1, mat%n_planes, shared)
+      do k = 1, n_eval
+        o = plane_of(old, k)
+        call plane_step(mat, mat%cos_phi(k), mat%sin_phi(k), solver, k, s, s_o, o, estimate, &
+                        chain, h_start, h_end, jo(min(k, size(jo))), p, sig_k, k_k, zeta, &
+                        theta, jn(min(k, size(jn))), e, dsig_dtheta, it, ok)
+        if (.not. ok) return
+        iterations = max(iterations, it)
+        gam = merge(1.0_dp, mat%gamma_hat(k), shared)
+        w = gam * area
+        if (estimate) call add_wear_error(e, w, [dsig_dtheta(1), max(abs(dsig_dtheta(2)), &
+                                          abs(dsig_dtheta(3)))], err_angle, err_traction)
+        sig = sig + w * sig_k
+        tangent = tangent + w * k_k
+        tangent(:, 1) = tangent(:, 1) + (gam * darea * h_end) * sig_k
+        new%diss_damage = new%diss_damage + gam * area * p%wdmg
+        new%diss_friction = new%diss_friction + gam * area * p%wfric
+        new%stored = new%stored + gam * area * p%psi
+        call store_plane(p, zeta, theta, k, new)
+      end do
+      do k = n_eval + 1, mat%n_planes
+        call store_plane(p, zeta, theta, k, new)
+        if (chain) jn(k) = jn(1)
+      end do
+    end if
+    old_sig = [old%sigma(1), old%sigma(2), old%sigma_t2]
+    new%s = s(1:2)
+    new%s_t2 = s(3)
+    new%sigma = sig(1:2)
+    new%sigma_t2 = sig(3)
+    new%work = old%work + 0.5_dp * dot_product(old_sig + sig, s - s_o)
+    if (estimate) err = wear_error_of(mat, err_angle, err_traction, &
+                                      [sig(1), max(abs(sig(2)), abs(sig(3)))])
+  end subroutine step_3d
+
+  !> The chained derivatives of the planes in use stay far from overflow.
+  pure logical function chain_bounded(jn, n)
+    type(plane_chain_t), intent(in) :: jn(:)
+    integer, intent(in) :: n
+    integer :: k
+    real(dp), parameter :: bound = 1.0e100_dp
+    chain_bounded = .true.
+    do k = 1, n
+      if (any(abs(jn(k)%beta) > bound) .or. any(abs(jn(k)%dmg) > bound) .or. &
+          any(abs(jn(k)%sf) > bound) .or. any(abs(jn(k)%zeta) > bound) .or. &
+          any(abs(jn(k)%tauf) > bound)) chain_bounded = .false.
+    end do
+  end function chain_bounded
+
+  !> Plane k of a state.
+  pure type(plane_start_3d_t) function plane_of(state, k) result(o)
+    type(interlock_state_3d_t), intent(in) :: state
+    integer, intent(in) :: k
+    o%beta = state%beta(k)
+    o%dmg = state%damage(k)
+    o%sf = [state%sf(k), state%sf_strike(k)]
+    o%zeta = state%zeta(k)
+    o%theta = state%theta(k)
+    o%tauf = [state%tauf(k), state%tauf_strike(k)]
+  end function plane_of
+
+  !> Store plane k's end state (the response p, its frictional work zeta and angle theta).
+  pure subroutine store_plane(p, zeta, theta, k, state)
+    type(plane_law_3d_t), intent(in) :: p
+    real(dp), intent(in) :: zeta, theta
+    integer, intent(in) :: k
+    type(interlock_state_3d_t), intent(inout) :: state
+    state%beta(k) = p%beta
+    state%damage(k) = p%dmg
+    state%sf(k) = p%sf(1)
+    state%sf_strike(k) = p%sf(2)
+    state%zeta(k) = zeta
+    state%theta(k) = theta
+    state%tauf(k) = p%tauf(1)
+    state%tauf_strike(k) = p%tauf(2)
+  end subroutine store_plane
+
+  !> Plane k over the step in the solver's scheme (SPEC section 9, "Schemes"): the angle frozen
+  !> at its start value (explicit) or coupled to the end of the step by the wear equation,
+  !> zeta - zeta_o = G(theta(zeta)) with G = a_w D |tau_f,1| |d sf_1| + g_slip |d sf_1|
+  !> (explicit, implicit: wear_weights of the 2D law with the dip components) or D11's
+  !> trapezoidal rule with D14's terms, solved by the safeguarded Newton iteration of
+  !> interlock_wear. Returns the response p at the angle of the traction, the plane's traction
+  !> sig_k in the macro frame with its derivative k_k (through the angle: d sig_k / d theta
+  !> (x) d theta, by implicit differentiation at the root, d zeta = (dG) / F', F' = 1 -
+  !> theta' dG / d theta), the end values of zeta and theta, with `chain` the end state's
+  !> derivatives jn, with `estimate` the wear's embedded error estimate e [rad] and
+  !> dsig_dtheta = d sig_k / d theta at fixed s.
+  pure subroutine plane_step(mat, cp, sp, solver, k, s, s_o, o, estimate, chain, h_start, h_end, &
+                             jo, p, sig_k, k_k, zeta, theta, jn, e, dsig_dtheta, iterations, ok)
+    type(interlock_material_t), intent(in) :: mat
+    real(dp), intent(in) :: cp, sp   !< cos and sin of the plane's azimuth
+    type(interlock_solver_t), intent(in) :: solver
+    integer, intent(in) :: k
+    real(dp), intent(in) :: s(3), s_o(3), h_start, h_end
+    type(plane_start_3d_t), intent(in) :: o
+    logical, intent(in) :: estimate, chain
+    type(plane_chain_t), intent(in) :: jo
+    type(plane_law_3d_t), intent(out) :: p
+    real(dp), intent(out) :: sig_k(3), k_k(3, 3), zeta, theta, e, dsig_dtheta(3)
+    type(plane_chain_t), intent(inout) :: jn
+    integer, intent(out) :: iterations
+    logical, intent(out) :: ok
+    type(wear_root_t) :: rt
+    real(dp) :: c, sn, c_o, sn_o, dip_o, mu_p_o, mu_p_law, a_w, g_slip, g_trap, drv, g_drv(3), &
+                thp, fp, rot(3, 3), dzeta(3)
+    logical :: coupled, wears, trapezoidal, drivers
+    integer :: j
+
+    ok = .true.
+    iterations = 0
+    e = 0.0_dp
+    dsig_dtheta = 0.0_dp
+    coupled = solver%scheme /= scheme_explicit
+    trapezoidal = solver%scheme == scheme_trapezoidal
+    wears = mat%plane_wears(k)
+    drivers = wears .and. (coupled .or. chain)
+    ! The scheme's wear weights (wear_weights of the 2D law, with the dip component of the
+    ! start separation); mu p_o, the start state's friction bound, also decides whether the
+    ! plane slides at the start (D14's mean-direction rule), and the trapezoidal start weight
+    ! D_o mu p_o / 2 is the error estimate's reference.
+    dip_o = cp * s_o(2) + sp * s_o(3)
+    c_o = 1.0_dp
+    sn_o = 0.0_dp
+    if (trapezoidal .or. estimate) call plane_frame(mat, k, o%theta, c_o, sn_o)
+    call wear_weights(mat, solver%scheme, o%dmg, o%tauf(1), c_o, sn_o, s_o(1), dip_o, a_w, &
+                      g_slip)
+    mu_p_o = 0.0_dp
+    mu_p_law = 0.0_dp
+    g_trap = 0.0_dp
+    if (trapezoidal .or. estimate) then
+      mu_p_o = start_yield(mat, c_o, sn_o, s_o(1), dip_o)
+      g_trap = trapezoidal_weight(mat, o%dmg, c_o, sn_o, s_o(1), dip_o)
+    end if
+    if (trapezoidal) mu_p_law = mu_p_o
+
+    theta = o%theta
+    zeta = o%zeta
+    call evaluate(mat, k, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, drivers, chain, &
+                  theta, c, sn, p, drv, g_drv)
+    if (coupled .and. wears) then
+      ! F(zeta) = zeta - zeta_o - G(theta(zeta)); at zeta_o the stored angle and its slope, no
+      ! exponential.
+      thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), o%theta)
+      fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
+      if (drv > 0.0_dp) then
+        call wear_root_begin(rt, o%zeta, drv)
+        do
+          call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, &
+                          thp)
+          call evaluate(mat, k, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, .true., chain, &
+                        theta, c, sn, p, drv, g_drv)
+          fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
+          call wear_root_update(rt, rt%x - o%zeta - drv, fp, solver%newton_tol, &
+                                solver%newton_max_iterations)
+          if (rt%done) exit
+        end do
+        iterations = rt%iterations
+        ok = rt%ok
+        if (.not. ok) return
+        if (.not. drv > 0.0_dp) then
+          ! The root is where the plane just loses contact (very fast wear turns it until
+          ! then), within round-off of that kink, and the last point is on the open side: take
+          ! the closed side's last point, rt%lo (F < 0 there, so some work: the plane is in
+          ! contact), a few ulps from the root, so that the angle's derivative and the
+          ! traction's come from the same side (mixed, they are neither one-sided derivative).
+          rt%x = rt%lo
+          call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, &
+                          thp)
+          call evaluate(mat, k, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, .true., chain, &
+                        theta, c, sn, p, drv, g_drv)
+          fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
+        end if
+        zeta = rt%x
+      end if
+    else
+      zeta = o%zeta + drv
+      thp = 0.0_dp
+      if (.not. coupled .and. wears) then
+        ! explicit (eq. 25): the angle of the worn zeta for the next step
+        if (zeta > o%zeta) call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), &
+                                           mat%inv_zeta0(k), zeta, theta, thp)
+      end if
+    end if
+    call rotated(cp, sp, c, sn, p, sig_k, k_k)
+    if (wears .and. (coupled .or. chain .or. estimate)) then
+      ! d sig_k / d theta at fixed s = sigma_kn e - sigma_kt1 m + R^T K_loc d sl / d theta
+      dsig_dtheta = to_macro(cp, sp, c, sn, matmul(p%k_loc, [p%sl(2), -p%sl(1), 0.0_dp]) + &
+                             [-p%sig_loc(2), p%sig_loc(1), 0.0_dp])
+    end if
+    if (chain) then
+      call chain_plane(mat, cp, sp, c, sn, c_o, sn_o, s_o, o, jo, p, coupled .and. wears, &
+                       wears .and. .not. coupled, trapezoidal, a_w, g_slip, mu_p_o, g_drv, &
+                       thp, fp, h_start, h_end, zeta, k_k, jn)
+    else if (coupled .and. wears) then
+      ! d zeta / d s = (dG / d s) / F' at the root, d theta / d s = theta' d zeta / d s
+      rot = frame_rows(cp, sp, c, sn)
+      dzeta = matmul(g_drv, rot) * (thp / fp)
+      do j = 1, 3
+        k_k(:, j) = k_k(:, j) + dsig_dtheta * dzeta(j)
+      end do
+    end if
+
+    if (estimate .and. wears) then
+      if (coupled) then
+        e = wear_angle_error(mat, k, solver%scheme, theta, o%theta, zeta, o%zeta, p%wear_end, &
+                             p%wear_start, g_slip, g_trap)
+      else
+        e = wear_angle_error(mat, k, solver%scheme, theta, o%theta, zeta, o%zeta, p%wfric_dip, &
+                             p%slip_dip, g_slip, g_trap)
+      end if
+    end if
+  end subroutine plane_step
+
+  !> The derivatives with respect to the increment's end S of one plane's step (`chain`):
+  !> d sl = R ds + d sl / d theta d theta, ds = h_end dS; the start state's derivatives jo
+  !> through the plane law's derivatives with respect to the start slip, damage, history and
+  !> start direction of slip (plane_law_3d_t); the angle of the traction: theta_o (explicit,
+  !> jo%theta) or the root's, d zeta = (d zeta_o + dG at fixed theta) / F' (`coupled_wear`);
+  !> the start weight g_slip's own derivative (explicit D_o |tauf_o,1|, trapezoidal
+  !> D_o mu p_o / 2 with mu p_o from the start separation, ds_o = h_start dS, at theta_o).
+  !> Returns d sig_k / dS in k_k and the end state's derivatives jn.
+  pure subroutine chain_plane(mat, cp, sp, c, sn, c_o, sn_o, s_o, o, jo, p, coupled_wear, &
+                              explicit_wear, trapezoidal, a_w, g_slip, mu_p_o, g_drv, thp, fp, &
+                              h_start, h_end, zeta, k_k, jn)
+    type(interlock_material_t), intent(in) :: mat
+    real(dp), intent(in) :: cp, sp, c, sn, c_o, sn_o, s_o(3), a_w, g_slip, mu_p_o, &
+                            g_drv(3), thp, fp, h_start, h_end, zeta
+    type(plane_start_3d_t), intent(in) :: o
+    type(plane_chain_t), intent(in) :: jo
+    type(plane_law_3d_t), intent(in) :: p
+    logical, intent(in) :: coupled_wear, explicit_wear, trapezoidal
+    real(dp), intent(out) :: k_k(3, 3)
+    type(plane_chain_t), intent(inout) :: jn
+    real(dp) :: rot(3, 3), dsl(3, 3), jphi(3), dg(3), d_drv(3), dtheta(3), dsig_loc(3, 3), tn2, &
+                dsn_o(3), x_o, q2, h1(2), h2(2), hdmg1, phi1, phi2
+    integer :: i, j
+
+    ! the start direction of slip's angle: d phi_o = n_o' . dtauf_o / |tauf_o|
+    jphi = 0.0_dp
+    if (p%mean) then
+      tn2 = o%tauf(1) * o%tauf(1) + o%tauf(2) * o%tauf(2)
+      jphi = (o%tauf(1) * jo%tauf(:, 2) - o%tauf(2) * jo%tauf(:, 1)) / tn2
+    end if
+    ! the start weight's derivative
+    dg = 0.0_dp
+    if (explicit_wear) then
+      dg = jo%dmg * abs(o%tauf(1)) + (o%dmg * merge(-1.0_dp, 1.0_dp, o%tauf(1) < 0.0_dp)) * &
+           jo%tauf(:, 1)
+    else if (trapezoidal) then
+      dsn_o = 0.0_dp
+      x_o = -(c_o * s_o(1) + sn_o * (cp * s_o(2) + sp * s_o(3)))
+      if (s_o(1) * mat%inv_h_n < 1.0_dp .and. .not. 0.0_dp > x_o) &
+        dsn_o = -(mat%mu_eff * mat%kn) * (h_start * [c_o, sn_o * cp, sn_o * sp] + &
+                 (-sn_o * s_o(1) + c_o * (cp * s_o(2) + sp * s_o(3))) * jo%theta)
+      dg = 0.5_dp * (jo%dmg * mu_p_o + o%dmg * dsn_o)
+    end if
+    ! the wear driver's derivatives through the start state: G = a_w Q1 + g_slip Q2 (a plane
+    ! that wears; the law gives the drivers' derivatives only there)
+    d_drv = 0.0_dp
+    if (coupled_wear .or. explicit_wear) then
+      if (trapezoidal) then
+        h1 = -(p%g_wear_end(2:3) - p%dmg_wear_end * p%g_dmg(2:3))
+        hdmg1 = merge(p%dmg_wear_end, 0.0_dp, p%dmg_kept)
+        phi1 = p%phi_wear_end
+        h2 = -p%g_wear_start(2:3)
+        phi2 = p%phi_wear_start
+        q2 = p%wear_start
+      else
+        h1 = -(p%g_wfric_dip(2:3) - p%dmg_wfric_dip * p%g_dmg(2:3))
+        hdmg1 = merge(p%dmg_wfric_dip, 0.0_dp, p%dmg_kept)
+        phi1 = 0.0_dp
+        h2 = -p%g_slip_dip(2:3)
+        phi2 = 0.0_dp
+        q2 = p%slip_dip
+      end if
+      d_drv = a_w * (h1(1) * jo%sf(:, 1) + h1(2) * jo%sf(:, 2) + phi1 * jphi + hdmg1 * jo%dmg) + &
+              g_slip * (h2(1) * jo%sf(:, 1) + h2(2) * jo%sf(:, 2) + phi2 * jphi) + dg * q2
+    end if
+    ! d sl at fixed angle, then the angle the traction is taken at
+    rot = frame_rows(cp, sp, c, sn)
+    do j = 1, 3
+      dsl(:, j) = h_end * rot(:, j)
+    end do
+    if (coupled_wear) then
+      jn%zeta = (jo%zeta + matmul(g_drv, dsl) + d_drv) / fp
+      dtheta = thp * jn%zeta
+      jn%theta = dtheta
+    else
+      dtheta = jo%theta
+    end if
+    do j = 1, 3
+      dsl(:, j) = dsl(:, j) + [p%sl(2), -p%sl(1), 0.0_dp] * dtheta(j)
+    end do
+    if (.not. coupled_wear) then
+      jn%zeta = jo%zeta + matmul(g_drv, dsl) + d_drv
+      jn%theta = jo%theta
+      if (explicit_wear .and. zeta > o%zeta) jn%theta = thp * jn%zeta
+    end if
+    ! the end state
+    jn%dmg = matmul(p%g_dmg, dsl)
+    if (p%dmg_kept) jn%dmg = jn%dmg + jo%dmg
+    jn%beta = matmul(p%g_beta, dsl)
+    if (p%beta_kept) jn%beta = jn%beta + jo%beta
+    do i = 1, 2
+      jn%tauf(:, i) = matmul(p%g_tauf(:, i), dsl) - p%g_tauf(2, i) * jo%sf(:, 1) - &
+                      p%g_tauf(3, i) * jo%sf(:, 2) + p%phi_tauf(i) * jphi
+      jn%sf(:, i) = matmul(p%g_sf(:, i), dsl) - p%g_sf(2, i) * jo%sf(:, 1) - &
+                    p%g_sf(3, i) * jo%sf(:, 2) + jo%sf(:, i) + p%phi_sf(i) * jphi
+    end do
+    ! the traction: d sig_loc, then R^T d sig_loc + (d sig_k / d theta at fixed sl) d theta
+    do j = 1, 3
+      dsig_loc(:, j) = matmul(p%k_loc, dsl(:, j))
+      if (p%dmg_kept) dsig_loc(:, j) = dsig_loc(:, j) + p%dmg_sig * jo%dmg(j)
+      do i = 1, 2
+        dsig_loc(1 + i, j) = dsig_loc(1 + i, j) + p%dmg * (jn%tauf(j, i) - &
+                             dot_product(p%g_tauf(:, i), dsl(:, j)))
+      end do
+      k_k(:, j) = to_macro(cp, sp, c, sn, dsig_loc(:, j)) + &
+                  (p%sig_loc(1) * rot(2, :) - p%sig_loc(2) * rot(1, :)) * dtheta(j)
+    end do
+  end subroutine chain_plane
+
+  !> The plane law at angle theta (its frame c, sn) and the scheme's wear driver G with
+  !> d G / d sl: a_end D |tau_f,1| |d sf_1| + g_slip |d sf_1| (explicit, implicit), a_end
+  !> wear_end + g_slip wear_start (trapezoidal: the dip component of D_o mu p_o n at the start);
+  !> d G / d sl only with `drivers` (else 0).
+  pure subroutine evaluate(mat, k, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, drivers, &
+                           chain, theta, c, sn, p, drv, g_drv)
+    type(interlock_material_t), intent(in) :: mat
+    integer, intent(in) :: k
+    real(dp), intent(in) :: cp, sp, s(3), mu_p_o, a_end, g_slip, theta
+    type(plane_start_3d_t), intent(in) :: o
+    logical, intent(in) :: trapezoidal, drivers, chain
+    real(dp), intent(out) :: c, sn, drv, g_drv(3)
+    type(plane_law_3d_t), intent(out) :: p
+    call plane_frame(mat, k, theta, c, sn)
+    call plane_law_3d(mat, local_separation(cp, sp, c, sn, s), o, mu_p_o, drivers, chain, p)
+    g_drv = 0.0_dp
+    if (trapezoidal) then
+      drv = a_end * p%wear_end + g_slip * p%wear_start
+      if (drivers) g_drv = a_end * p%g_wear_end + g_slip * p%g_wear_start
+    else
+      drv = a_end * p%wfric_dip + g_slip * p%slip_dip
+      if (drivers) g_drv = a_end * p%g_wfric_dip + g_slip * p%g_slip_dip
+    end if
+  end subroutine evaluate
+
+  !> dG / d theta at fixed s of a driver with d G / d sl = g_drv: g_drv . d sl / d theta, d sl /
+  !> d theta = (s_kt1, -s_kn, 0).
+  pure real(dp) function angle_slope(g_drv, sl)
+    real(dp), intent(in) :: g_drv(3), sl(3)
+    angle_slope = g_drv(1) * sl(2) - g_drv(2) * sl(1)
+  end function angle_slope
+
+  !> R = d sl / d s: the rows m, e, q of a plane of azimuth frame (cp, sp) at angle theta (frame
+  !> c, sn).
+  pure function frame_rows(cp, sp, c, sn) result(rot)
+    real(dp), intent(in) :: cp, sp, c, sn
+    real(dp) :: rot(3, 3)
+    rot(1, :) = [c, sn * cp, sn * sp]
+    rot(2, :) = [-sn, c * cp, c * sp]
+    rot(3, :) = [0.0_dp, -sp, cp]
+  end function frame_rows
+
+  !> The plane's traction in the macro frame and its derivative at fixed angle, R^T K_loc R,
+  !> with R = d sl / d s (rows m, e, q): each row of K_loc R is R^T times K_loc's row, and each
+  !> column of R^T (K_loc R) R^T times that column, both by to_macro.
+  pure subroutine rotated(cp, sp, c, sn, p, sig_k, k_k)
+    real(dp), intent(in) :: cp, sp, c, sn
+    type(plane_law_3d_t), intent(in) :: p
+    real(dp), intent(out) :: sig_k(3), k_k(3, 3)
+    real(dp) :: a(3, 3)
+    integer :: i
+    sig_k = to_macro(cp, sp, c, sn, p%sig_loc)
+    do i = 1, 3
+      a(i, :) = to_macro(cp, sp, c, sn, [p%k_loc(i, 1), p%k_loc(i, 2), p%k_loc(i, 3)])
+    end do
+    do i = 1, 3
+      k_k(:, i) = to_macro(cp, sp, c, sn, a(:, i))
+    end do
+  end subroutine rotated
+
+end module interlock_step_3d
