@@ -1,0 +1,144 @@
+#!/usr/bin/python3
+"""Figures and tables of the deal.II example's scene b (the pull-out test, docs/dealii.md).
+
+    /usr/bin/python3 plot_pullout.py compare --dealii LABEL=DIR/curve.csv ... \\
+        --ccx LABEL=DIR/pullout ... --out FIGURE.png
+    /usr/bin/python3 plot_pullout.py twist --dealii LABEL=DIR/curve.csv ... --out FIGURE.png
+
+compare: the grip's force against its displacement for deal.II runs (curve.csv) and CalculiX
+runs of the axisymmetric model (the job's path without extension: its .dat, made by
+examples/calculix/pullout/run.py); prints a Markdown table of the forces at 0.52, 1.3 and
+2.6 mm and each curve's largest difference from the last CalculiX run over the common range.
+twist: pull, then twist: the torque and the grip's axial force against the twist angle, and
+the interfaces' mean damage and slip around the bar.
+"""
+import argparse
+import csv
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "scripts"))
+import python_with  # noqa: E402  (the python3 that has the modules below)
+
+python_with.modules("numpy", "matplotlib")
+import matplotlib  # noqa: E402
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+LEVELS = (0.52, 1.3, 2.6)  # grip displacements of the table [mm]
+
+
+def read_curve(path):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+
+
+def read_ccx(job):
+    """(displacement [mm], force [N]) of the grip of an axisymmetric CalculiX run."""
+    sys.path.insert(0, os.path.join(HERE, "..", "calculix", "pullout"))
+    import post  # noqa: E402
+    _, _, top = post.read_inp(job + ".inp")
+    forces = post.read_dat(job + ".dat")[("total force", "TOP")]
+    t = np.array([0.0] + [tm for tm, _ in forces])
+    return t * top, np.array([0.0] + [rows[0][1] * post.WEDGE for _, rows in forces])
+
+
+def labelled(items):
+    out = []
+    for item in items:
+        label, _, path = item.partition("=")
+        out.append((label, path))
+    return out
+
+
+def compare(args):
+    curves = []
+    for label, path in labelled(args.dealii):
+        c = read_curve(path)
+        curves.append((label, np.concatenate([[0.0], c["pull"]]),
+                       np.concatenate([[0.0], c["force"]]), "-"))
+    for label, job in labelled(args.ccx):
+        s, f = read_ccx(job)
+        curves.append((label, s, f, "--"))
+    ref_label, ref_s, ref_f, _ = curves[-1]
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(11, 4.2))
+    print(f"| run | " + " | ".join(f"F at {v} mm [kN]" for v in LEVELS) +
+          f" | largest difference from {ref_label} |")
+    print("|---|" + "---|" * (len(LEVELS) + 1))
+    for label, s, f, style in curves:
+        ax.plot(s, f / 1e3, style, label=label)
+        end = min(s[-1], ref_s[-1])
+        grid = np.linspace(0.0, end, 201)[1:]
+        rel = (np.interp(grid, s, f) - np.interp(grid, ref_s, ref_f)) / np.max(ref_f)
+        if label != ref_label:
+            bx.plot(grid, 100 * rel, style, label=label)
+        k = np.argmax(np.abs(rel))
+        cells = [f"{np.interp(v, s, f) / 1e3:.2f}" if v <= s[-1] + 1e-9 else "-"
+                 for v in LEVELS]
+        print(f"| {label} | " + " | ".join(cells) +
+              f" | {100 * rel[k]:+.2f} % at {grid[k]:.2f} mm |")
+    ax.set_xlabel("grip displacement [mm]")
+    ax.set_ylabel("grip force [kN]")
+    ax.set_title("pull-out, elastic steel: 3D deal.II and axisymmetric CalculiX")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    bx.set_xlabel("grip displacement [mm]")
+    bx.set_ylabel(f"force - {ref_label} [% of its largest]")
+    bx.set_title("difference from the finest CalculiX run")
+    bx.legend(fontsize=8)
+    bx.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(args.out, dpi=110)
+    print(f"wrote {args.out}")
+
+
+def twist(args):
+    fig, axes = plt.subplots(1, 3, figsize=(14, 4.2))
+    for label, path in labelled(args.dealii):
+        c = read_curve(path)
+        on = c["twist_deg"] > 0
+        first = np.argmax(on) - 1  # the increment before the twist: its start
+        sel = np.r_[first, np.nonzero(on)[0]]
+        a = c["twist_deg"][sel]
+        axes[0].plot(a, c["torque"][sel] / 1e3, label=label)
+        axes[1].plot(a, c["force"][sel] / 1e3, label=label)
+        for key, style in (("clay", "-"), ("concrete", "--")):
+            axes[2].plot(a, c[f"{key}_damage"][sel], style, label=f"{label}: {key}-bar damage")
+        print(f"{label}: force {c['force'][sel][0] / 1e3:.2f} kN before the twist, "
+              f"{c['force'][sel][-1] / 1e3:.2f} kN at {a[-1]:.1f} deg; largest torque "
+              f"{np.max(c['torque']) / 1e3:.1f} N m at "
+              f"{a[np.argmax(c['torque'][sel])]:.1f} deg; damage clay-bar "
+              f"{c['clay_damage'][sel][-1]:.3f}, concrete-bar {c['concrete_damage'][sel][-1]:.3f}")
+    axes[0].set_ylabel("torque on the grip [N m]")
+    axes[1].set_ylabel("axial force on the grip [kN]")
+    axes[2].set_ylabel("mean damage")
+    titles = ("torque", "axial force held by the grip", "interfaces")
+    for ax, title in zip(axes, titles):
+        ax.set_xlabel("twist of the grip [deg]")
+        ax.set_title(title)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(args.out, dpi=110)
+    print(f"wrote {args.out}")
+
+
+def main(argv):
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("what", choices=("compare", "twist"))
+    p.add_argument("--dealii", action="append", default=[], help="LABEL=curve.csv")
+    p.add_argument("--ccx", action="append", default=[], help="LABEL=job path (no extension)")
+    p.add_argument("--out", required=True, help="the PNG file")
+    args = p.parse_args(argv)
+    if args.what == "compare" and not args.ccx:
+        p.error("compare needs at least one --ccx run")
+    {"compare": compare, "twist": twist}[args.what](args)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
