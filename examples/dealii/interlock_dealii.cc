@@ -1,9 +1,14 @@
-// interlock in deal.II: a rough rock joint between two rock blocks in a p4est-distributed
-// hexahedral mesh. The joint is a thin layer of hexahedral cells (thickness h); at each of the
-// layer's quadrature points the interlock law (through its C API, batched over every point of
-// the process) gives the traction and the consistent tangent from the separation
-// s = h (eps_nn, 2 eps_nt1, 2 eps_nt2) in the frame (n = z, t1 = x, t2 = y). The other strain
-// components of the layer are linear elastic (modulus e_other), the blocks isotropic elastic.
+// interlock in deal.II: a rough rock joint between two rock blocks (scenes shear, block), or
+// the pull-out test (scene pullout), in a p4est-distributed hexahedral mesh. An interface is
+// a thin layer of hexahedral cells (thickness h); at each of the layer's quadrature points the
+// interlock law (through its C API, batched over every point of the process) gives the
+// traction and the consistent tangent from the separation s = h (eps_nn, 2 eps_nt1, 2 eps_nt2)
+// in the point's frame (n = z, t1 = x, t2 = y for the joint). The other strain components of
+// the layer are linear elastic (modulus e_other), the solids isotropic elastic.
+//
+// Scene pullout: the paper's pull-out test (a bar in a concrete block, a clay-bar and a
+// concrete-bar layer, the frame n radial at each point, t1 along the bar, t2 around it): the
+// grip pulls the bar's top face, then twists it; make_pullout_grid and pullout_constraints.
 //
 // Loading (a direct-shear machine): the bottom face is fixed; the top face is a rigid platen
 // whose in-plane displacement is prescribed and whose normal displacement is one unknown
@@ -617,8 +622,10 @@ namespace interlock_dealii
 
     // Along the bar.
     const double       lower    = L - sleeve_length;
-    const unsigned int n_sleeve = std::max(1u, unsigned(std::lround(sleeve_length / settings.element)));
-    const unsigned int n_lower  = std::max(1u, unsigned(std::lround(lower / settings.element)));
+    const auto cells_along = [this](const double length) {
+      return std::max(1u, unsigned(std::lround(length / settings.element)));
+    };
+    const unsigned int n_sleeve = cells_along(sleeve_length), n_lower = cells_along(lower);
     std::vector<double> z;
     for (unsigned int k = 0; k <= n_lower; ++k)
       z.push_back(lower * k / n_lower);
