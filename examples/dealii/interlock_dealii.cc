@@ -359,6 +359,8 @@ namespace interlock_dealii
     std::string
     curve_row(const unsigned int increment, const double t, const unsigned int substeps,
               const unsigned int iterations);
+    std::vector<double>
+    layer_sums();
     std::string
     pullout_curve_row(const unsigned int increment, const double t, const unsigned int substeps,
                       const unsigned int iterations);
@@ -1194,6 +1196,38 @@ namespace interlock_dealii
     grip = grip_iterate;
   }
 
+  // Per layer material (ids 1, 2), over all processes: the layer's volume, then the
+  // volume-weighted sums of the separation (3), the traction (3) and the damage (the mean over
+  // the microplanes) at the last accepted increment.
+  std::vector<double>
+  JointProblem::layer_sums()
+  {
+    FEValues<dim>       fv(fe, quadrature, update_JxW_values);
+    const unsigned int  nq = quadrature.size();
+    std::vector<double> sums(8 * materials.size(), 0.0);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && in_layer(cell))
+        {
+          fv.reinit(cell);
+          double *   sum  = &sums[cell->material_id() == layer2_id ? 8 : 0];
+          const auto data = storage.get_data(cell);
+          for (unsigned int q = 0; q < nq; ++q)
+            {
+              const double *s = data[q]->committed.data();
+              const double  w = fv.JxW(q);
+              sum[0] += w;
+              for (unsigned int c = 0; c < 6; ++c)
+                sum[1 + c] += w * s[statev_size + c];
+              double d = 0;
+              for (const auto k : damage_slots)
+                d += s[k];
+              sum[7] += w * d / std::max<size_t>(1, damage_slots.size());
+            }
+        }
+    Utilities::MPI::sum(sums, comm, sums);
+    return sums;
+  }
+
   // One row of the curve: the platen's displacement, the layer's mean separation and traction
   // (area-weighted), mean damage and the largest departure of a point's traction from the mean.
   std::string
@@ -1202,29 +1236,8 @@ namespace interlock_dealii
   {
     if (pullout)
       return pullout_curve_row(increment, t, substeps, iterations);
-    FEValues<dim>      fv(fe, quadrature, update_JxW_values);
-    const unsigned int nq = quadrature.size();
-    std::vector<double> sums(8, 0.0); // area, sN, sT1, sT2, tN, tT1, tT2, damage
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned() && in_layer(cell))
-        {
-          fv.reinit(cell);
-          const auto data = storage.get_data(cell);
-          for (unsigned int q = 0; q < nq; ++q)
-            {
-              const double *s = data[q]->committed.data();
-              const double  w = fv.JxW(q);
-              sums[0] += w;
-              for (unsigned int c = 0; c < 6; ++c)
-                sums[1 + c] += w * s[statev_size + c];
-              double d = 0;
-              for (const auto k : damage_slots)
-                d += s[k];
-              sums[7] += w * d / std::max<size_t>(1, damage_slots.size());
-            }
-        }
-    Utilities::MPI::sum(sums, comm, sums);
-    std::array<double, 6> mean;
+    const std::vector<double> sums = layer_sums();
+    std::array<double, 6>     mean;
     for (unsigned int c = 0; c < 6; ++c)
       mean[c] = sums[1 + c] / sums[0];
     double spread = 0;
@@ -1252,30 +1265,8 @@ namespace interlock_dealii
   JointProblem::pullout_curve_row(const unsigned int increment, const double t,
                                   const unsigned int substeps, const unsigned int iterations)
   {
-    FEValues<dim>       fv(fe, quadrature, update_JxW_values);
-    const unsigned int  nq = quadrature.size();
-    std::vector<double> sums(2 * 8, 0.0); // per interface: area, s (3), traction (3), damage
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned() && in_layer(cell))
-        {
-          fv.reinit(cell);
-          double *   sum  = &sums[cell->material_id() == layer2_id ? 8 : 0];
-          const auto data = storage.get_data(cell);
-          for (unsigned int q = 0; q < nq; ++q)
-            {
-              const double *s = data[q]->committed.data();
-              const double  w = fv.JxW(q);
-              sum[0] += w;
-              for (unsigned int c = 0; c < 6; ++c)
-                sum[1 + c] += w * s[statev_size + c];
-              double d = 0;
-              for (const auto k : damage_slots)
-                d += s[k];
-              sum[7] += w * d / std::max<size_t>(1, damage_slots.size());
-            }
-        }
-    Utilities::MPI::sum(sums, comm, sums);
-    std::vector<double> g(grip.begin(), grip.end());
+    const std::vector<double> sums = layer_sums();
+    std::vector<double>       g(grip.begin(), grip.end());
     Utilities::MPI::sum(g, comm, g);
     std::ostringstream row;
     row << increment << ',' << substeps << ',' << iterations << std::setprecision(17) << ','

@@ -69,36 +69,44 @@ def labelled(items):
     return out
 
 
+def finish(fig, axes, titles, xlabel, out):
+    for ax, title in zip(axes, titles):
+        ax.set_xlabel(xlabel)
+        ax.set_title(title)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    print(f"wrote {out}")
+
+
 def compare(args):
     curves = []
-    for label, path in labelled(args.dealii):
+    # The k-th deal.II run and the k-th CalculiX run share a colour (give them in the same
+    # order of mesh sizes).
+    for k, (label, path) in enumerate(labelled(args.dealii)):
         c = read_curve(path)
         curves.append((label, np.concatenate([[0.0], c["pull"]]),
-                       np.concatenate([[0.0], c["force"]]), "-"))
-    for label, job in labelled(args.ccx):
+                       np.concatenate([[0.0], c["force"]]), "-", f"C{k}"))
+    for k, (label, job) in enumerate(labelled(args.ccx)):
         s, f = read_ccx(job)
-        curves.append((label, s, f, "--"))
+        curves.append((label, s, f, "--", f"C{k}"))
     fig, ax = plt.subplots(1, 1, figsize=(7.5, 4.8))
     print("| run | " + " | ".join(f"F at {v} mm [kN]" for v in LEVELS) +
           " | first peak [kN] | at [mm] |")
     print("|---|" + "---|" * (len(LEVELS) + 2))
-    for label, s, f, style in curves:
-        line, = ax.plot(s, f / 1e3, style, label=label)
+    for label, s, f, style, colour in curves:
+        ax.plot(s, f / 1e3, style, color=colour, label=label)
         peak = first_peak(s, f)
         if peak:
-            ax.plot(peak[0], peak[1] / 1e3, "o", color=line.get_color(), ms=4)
+            ax.plot(peak[0], peak[1] / 1e3, "o", color=colour, ms=4)
         cells = [f"{np.interp(v, s, f) / 1e3:.2f}" if v <= s[-1] + 1e-9 else "-"
                  for v in LEVELS]
         cells += [f"{peak[1] / 1e3:.2f}", f"{peak[0]:.3f}"] if peak else ["-", "-"]
         print(f"| {label} | " + " | ".join(cells) + " |")
-    ax.set_xlabel("grip displacement [mm]")
     ax.set_ylabel("grip force [kN]")
-    ax.set_title("pull-out, elastic steel: 3D deal.II and axisymmetric CalculiX")
-    ax.legend(fontsize=8)
-    ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(args.out, dpi=110)
-    print(f"wrote {args.out}")
+    finish(fig, [ax], ["pull-out, elastic steel: 3D deal.II and axisymmetric CalculiX"],
+           "grip displacement [mm]", args.out)
 
 
 def twist(args):
@@ -121,15 +129,8 @@ def twist(args):
     axes[0].set_ylabel("torque on the grip [N m]")
     axes[1].set_ylabel("axial force on the grip [kN]")
     axes[2].set_ylabel("mean damage")
-    titles = ("torque", "axial force held by the grip", "interfaces")
-    for ax, title in zip(axes, titles):
-        ax.set_xlabel("twist of the grip [deg]")
-        ax.set_title(title)
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(args.out, dpi=110)
-    print(f"wrote {args.out}")
+    finish(fig, axes, ("torque", "axial force held by the grip", "interfaces"),
+           "twist of the grip [deg]", args.out)
 
 
 def main(argv):
