@@ -1,9 +1,14 @@
-// interlock in deal.II: a rough rock joint between two rock blocks in a p4est-distributed
-// hexahedral mesh. The joint is a thin layer of hexahedral cells (thickness h); at each of the
-// layer's quadrature points the interlock law (through its C API, batched over every point of
-// the process) gives the traction and the consistent tangent from the separation
-// s = h (eps_nn, 2 eps_nt1, 2 eps_nt2) in the frame (n = z, t1 = x, t2 = y). The other strain
-// components of the layer are linear elastic (modulus e_other), the blocks isotropic elastic.
+// interlock in deal.II: a rough rock joint between two rock blocks (scenes shear, block), or
+// the pull-out test (scene pullout), in a p4est-distributed hexahedral mesh. An interface is
+// a thin layer of hexahedral cells (thickness h); at each of the layer's quadrature points the
+// interlock law (through its C API, batched over every point of the process) gives the
+// traction and the consistent tangent from the separation s = h (eps_nn, 2 eps_nt1, 2 eps_nt2)
+// in the point's frame (n = z, t1 = x, t2 = y for the joint). The other strain components of
+// the layer are linear elastic (modulus e_other), the solids isotropic elastic.
+//
+// Scene pullout: the paper's pull-out test (a bar in a concrete block, a clay-bar and a
+// concrete-bar layer, the frame n radial at each point, t1 along the bar, t2 around it): the
+// grip pulls the bar's top face, then twists it; make_pullout_grid and pullout_constraints.
 //
 // Loading (a direct-shear machine): the bottom face is fixed; the top face is a rigid platen
 // whose in-plane displacement is prescribed and whose normal displacement is one unknown
@@ -35,6 +40,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -74,6 +80,12 @@ namespace interlock_dealii
   using namespace dealii;
   constexpr int dim = 3;
 
+  // The paper's pull-out test (section 4.2): bar diameter D = 19.5 mm, a clay sleeve over the
+  // top 10 D, the steel's first yield stress (Table 3).
+  constexpr double bar_radius    = 19.5 / 2;
+  constexpr double sleeve_length = 10 * 19.5;
+  constexpr double steel_yield   = 350.0;
+
   // What a run does: key=value arguments on the command line (docs/dealii.md lists them).
   struct Settings
   {
@@ -100,7 +112,20 @@ namespace interlock_dealii
     bool         restart          = false; // continue from output_dir's checkpoint
     unsigned int max_iterations   = 25;
     unsigned int verbose          = 0;    // 1: every Newton iteration's residual and cut
-    double       tolerance        = 1e-10; // residual / (|sigma_N| A)
+    double       tolerance        = 1e-10; // residual / (|sigma_N| A), pullout: / (f_y A_bar)
+    // Scene pullout (the paper's pull-out test, section 4.2): a bar in a concrete cylinder.
+    unsigned int n_theta          = 16;   // cells around the bar (a multiple of 4)
+    double       element          = 10.0; // cell length along the bar [mm]
+    double       embedment        = 235.0; // the bar's embedded length [mm]
+    double       radius           = 500.0; // the block's radius [mm]
+    double       ring_first       = 10.0; // the first concrete ring's width [mm]
+    double       ring_ratio       = 1.5;  // each concrete ring this much wider than the last
+    double       e_steel          = 190000.0, nu_steel = 0.3;   // Table 3
+    double       e_concrete       = 2621.0, nu_concrete = 0.2;  // Table 3 as printed
+    double       pull             = 1.3;  // the grip's axial displacement [mm]
+    unsigned int n_pull           = 25;   // in n_pull increments
+    double       twist_deg        = 0.0;  // then the grip's rotation about the axis [deg]
+    unsigned int n_twist          = 0;    // in n_twist increments
 
     void
     parse(int argc, char **argv);
@@ -137,17 +162,30 @@ namespace interlock_dealii
         n_block = 1;
         n_slip  = 20;
       }
+    else if (scene == "pullout")
+      {
+        // The pull-out test in 3D: the interfaces' PROPS as the CalculiX model's
+        // (examples/calculix/pullout/make_mesh.py): accuracy bounds off, e_other 0.01 MPa.
+        layer         = 0.01;
+        e_other       = 0.01;
+        accuracy_cuts = false;
+      }
     else
-      throw std::invalid_argument("scene = '" + scene + "': admissible shear or block");
+      throw std::invalid_argument("scene = '" + scene +
+                                  "': admissible shear, block or pullout");
     const std::map<std::string, double *> reals = {
       {"length", &length},   {"layer", &layer},       {"block", &block},
       {"e_block", &e_block}, {"nu_block", &nu_block}, {"e_other", &e_other},
       {"normal", &normal},   {"slip", &slip},         {"angle_deg", &angle_deg},
-      {"tolerance", &tolerance}};
+      {"tolerance", &tolerance}, {"element", &element}, {"embedment", &embedment},
+      {"radius", &radius},   {"ring_first", &ring_first}, {"ring_ratio", &ring_ratio},
+      {"e_steel", &e_steel}, {"nu_steel", &nu_steel}, {"e_concrete", &e_concrete},
+      {"nu_concrete", &nu_concrete}, {"pull", &pull}, {"twist_deg", &twist_deg}};
     const std::map<std::string, unsigned int *> counts = {
       {"n_xy", &n_xy},           {"n_block", &n_block},     {"refine", &refine},
       {"n_slip", &n_slip},       {"vtu_every", &vtu_every}, {"max_iterations", &max_iterations},
-      {"verbose", &verbose}};
+      {"verbose", &verbose},     {"n_theta", &n_theta},     {"n_pull", &n_pull},
+      {"n_twist", &n_twist}};
     const std::map<std::string, bool *>        flags = {{"accuracy_cuts", &accuracy_cuts},
                                                         {"restart", &restart}};
     const std::map<std::string, std::string *> texts = {{"solver", &solver},
@@ -187,6 +225,14 @@ namespace interlock_dealii
       throw std::invalid_argument("solver = '" + solver + "': admissible mumps or gmres");
     if (n_xy == 0 || n_slip == 0 || !(layer > 0) || !(length > 0) || !(block > 0))
       throw std::invalid_argument("n_xy, n_slip, layer, length and block must be positive");
+    if (scene == "pullout" &&
+        (n_theta < 4 || n_theta % 4 != 0 || !(element > 0) || n_pull == 0 ||
+         !(embedment > sleeve_length + element) || !(radius > bar_radius + layer + ring_first) ||
+         !(ring_first > 0) || !(ring_ratio >= 1) || (twist_deg != 0 && n_twist == 0)))
+      throw std::invalid_argument(
+        "pullout: n_theta a multiple of 4, element, ring_first and n_pull > 0, embedment > " +
+        std::to_string(sleeve_length) + " + element, radius > the bar's + layer + ring_first, "
+        "ring_ratio >= 1, n_twist > 0 with a twist");
   }
 
   // The state of one quadrature point of the layer: the C API's state (the UMAT's STATEV,
@@ -198,9 +244,11 @@ namespace interlock_dealii
     std::vector<double> committed;
   };
 
+  using Material = std::unique_ptr<interlock_material, void (*)(interlock_material *)>;
+
   // The granite joint of the shipped 3D decks (inputs/granite_3d_*.nml): the azimuthal RIA
   // with 3 azimuths. Without accuracy cuts the step-fraction bounds are at their widest.
-  std::unique_ptr<interlock_material, void (*)(interlock_material *)>
+  Material
   granite_joint(const bool accuracy_cuts)
   {
     std::vector<const char *> names = {"sigma0_n", "sigma0_t", "gc", "eta", "mu",
@@ -222,6 +270,43 @@ namespace interlock_dealii
         INTERLOCK_OK)
       throw std::runtime_error(std::string("interlock refuses the material: ") + message);
     return {m, interlock_material_free};
+  }
+
+  // The pull-out test's interfaces (the paper's Table 5) with the CalculiX model's PROPS
+  // (examples/calculix/pullout/make_mesh.py): the paper's RIA (ridges across t1, the bar's
+  // ribs), wear on, theta_f = 0, the implicit scheme, the accuracy bounds at their widest
+  // unless asked; the exact tangent (the MUMPS solve is unsymmetric). Layer id 1: clay-bar,
+  // layer id 2: concrete-bar.
+  std::vector<Material>
+  pullout_interfaces(const bool accuracy_cuts)
+  {
+    // sigma0_n = sigma0_t, Gc, eta, mu, H_N, theta_0, theta_f, zeta_0
+    const double table5[2][8] = {{0.5, 0.05, 0.995, 0.6, 0.5, 1.75, 0.0, 33.3},
+                                 {1.0, 0.1, 0.995, 0.7, 1.5, 45.0, 0.0, 33.3}};
+    std::vector<Material> out;
+    for (const auto &t : table5)
+      {
+        const std::vector<double> props = {t[0], t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7],
+                                           0.0, 2.0, 0.0, accuracy_cuts ? 0.25 : 1.0,
+                                           accuracy_cuts ? 1.0 : 90.0, 1, 1, 1, 1, 1};
+        interlock_material *m = nullptr;
+        char                message[512];
+        if (interlock_material_from_props(dim, static_cast<int>(props.size()), props.data(), &m,
+                                          message, sizeof message) != INTERLOCK_OK)
+          throw std::runtime_error(std::string("interlock refuses an interface: ") + message);
+        out.emplace_back(m, interlock_material_free);
+      }
+    return out;
+  }
+
+  std::vector<Material>
+  scene_materials(const Settings &settings)
+  {
+    if (settings.scene == "pullout")
+      return pullout_interfaces(settings.accuracy_cuts);
+    std::vector<Material> out;
+    out.push_back(granite_joint(settings.accuracy_cuts));
+    return out;
   }
 
   // Seconds spent in each part of the Newton iterations: wall clock, and the process's CPU
@@ -252,7 +337,13 @@ namespace interlock_dealii
     void
     make_grid();
     void
+    make_pullout_grid();
+    void
     setup_system();
+    void
+    platen_constraints();
+    void
+    pullout_constraints();
     void
     initialise_state();
     void
@@ -268,6 +359,11 @@ namespace interlock_dealii
     std::string
     curve_row(const unsigned int increment, const double t, const unsigned int substeps,
               const unsigned int iterations);
+    std::vector<double>
+    layer_sums();
+    std::string
+    pullout_curve_row(const unsigned int increment, const double t, const unsigned int substeps,
+                      const unsigned int iterations);
     void
     write_vtu(const unsigned int increment);
     void
@@ -278,17 +374,58 @@ namespace interlock_dealii
     double
     normal_factor(const double t) const
     {
-      return std::min(t, 1.0);
+      return pullout ? 0.0 : std::min(t, 1.0);
     }
     double
     slip_at(const double t) const
     {
-      return t <= 1.0 ? 0.0 : settings.slip * (t - 1.0) / settings.n_slip;
+      return (pullout || t <= 1.0) ? 0.0 : settings.slip * (t - 1.0) / settings.n_slip;
+    }
+    // Pull-out: the grip's axial displacement [mm] and rotation [rad] at time t (increments
+    // 1 .. n_pull pull, then n_twist twist).
+    double
+    pull_at(const double t) const
+    {
+      return settings.pull * std::min(t, double(settings.n_pull)) / settings.n_pull;
+    }
+    double
+    twist_at(const double t) const
+    {
+      return t <= settings.n_pull ? 0.0 :
+                                    settings.twist_deg * numbers::PI / 180.0 *
+                                      (t - settings.n_pull) / settings.n_twist;
+    }
+    // The loading phase's start (normal load, then slip; pull, then twist): a substep carries
+    // the last substep's rate on only within one phase, and not in the normal load.
+    double
+    phase_start(const double t_new) const
+    {
+      const double b = pullout ? double(settings.n_pull) : 1.0;
+      return t_new > b + 1e-12 ? b : 0.0;
     }
     bool
     in_layer(const typename Triangulation<dim>::cell_iterator &cell) const
     {
-      return cell->material_id() == layer_id;
+      return cell->material_id() == layer_id || cell->material_id() == layer2_id;
+    }
+    const interlock_material *
+    material_of(const typename Triangulation<dim>::cell_iterator &cell) const
+    {
+      return materials[cell->material_id() == layer2_id ? 1 : 0].get();
+    }
+    // The layer's frame at a quadrature point x (rows n, t1, t2): scenes shear and block
+    // n = z, t1 = x, t2 = y; pull-out n radial at x, t1 = z along the bar towards the loaded
+    // end, t2 = n x t1 (around the bar).
+    Tensor<2, dim>
+    layer_frame(const Point<dim> &x) const;
+    // Pull-out: a radius between the bar's surface and the layer's outer face (the polygons'
+    // vertex radii).
+    double
+    pullout_bar_edge() const
+    {
+      const double n = settings.n_theta;
+      return bar_radius * std::sqrt((2 * numbers::PI / n) / std::sin(2 * numbers::PI / n)) +
+             0.5 * settings.layer;
     }
 
     Settings                                  settings;
@@ -299,7 +436,8 @@ namespace interlock_dealii
     DoFHandler<dim>                           dof_handler;
     QGauss<dim>                               quadrature;
     QGauss<dim - 1>                           face_quadrature;
-    std::unique_ptr<interlock_material, void (*)(interlock_material *)> material;
+    const bool                                pullout;
+    std::vector<Material>                     materials; // layer ids 1, 2
     unsigned int                              state_size;
     unsigned int                              statev_size;
     std::vector<unsigned int>                 damage_slots;
@@ -326,7 +464,22 @@ namespace interlock_dealii
     double                   current_normal = 0; // sigma_N of the increment's end [MPa]
     double                   force_scale    = 1; // |sigma_N| A: the residual's scale [N]
 
-    static constexpr types::material_id  layer_id = 1;
+    // Pull-out: the grip (the bar's top face) and the reaction plate (the concrete's top
+    // face): per vertex of the top face on this process, its dofs and position.
+    struct TopVertex
+    {
+      types::global_dof_index dof[dim];
+      double                  x, y;
+      bool                    bar;
+    };
+    std::vector<TopVertex> top_vertices;
+    // The batch's first point of each locally owned layer cell (by active cell index).
+    std::vector<size_t> batch_offset;
+    // The grip's axial force [N] and torque about the axis [N mm]: this process's share at
+    // the last assembly and at the last accepted substep.
+    std::array<double, 2> grip_iterate{{0, 0}}, grip{{0, 0}};
+
+    static constexpr types::material_id  layer_id = 1, layer2_id = 2, steel_id = 3;
     static constexpr types::boundary_id bottom_id = 4, top_id = 5; // colorize: z faces
   };
 
@@ -339,17 +492,21 @@ namespace interlock_dealii
     , dof_handler(triangulation)
     , quadrature(2)
     , face_quadrature(2)
-    , material(granite_joint(settings.accuracy_cuts))
-    , state_size(static_cast<unsigned int>(interlock_state_size(material.get())))
-    , statev_size(static_cast<unsigned int>(interlock_statev_size(material.get())))
+    , pullout(settings.scene == "pullout")
+    , materials(scene_materials(settings))
+    , state_size(static_cast<unsigned int>(interlock_state_size(materials[0].get())))
+    , statev_size(static_cast<unsigned int>(interlock_statev_size(materials[0].get())))
   {
-    const int n = interlock_state_variable_count(material.get());
+    for (const auto &m : materials)
+      if (interlock_state_size(m.get()) != static_cast<int>(state_size))
+        throw std::runtime_error("the interfaces' states differ in size");
+    const int n = interlock_state_variable_count(materials[0].get());
     for (int i = 0; i < n; ++i)
       {
         char   name[64], unit[16];
         int    plane = 0;
         double lo = 0, hi = 0;
-        if (interlock_state_variable_info(material.get(), i, name, sizeof name, unit,
+        if (interlock_state_variable_info(materials[0].get(), i, name, sizeof name, unit,
                                           sizeof unit, &plane, &lo, &hi) == INTERLOCK_OK &&
             std::strcmp(name, "damage") == 0)
           damage_slots.push_back(static_cast<unsigned int>(i));
@@ -361,6 +518,11 @@ namespace interlock_dealii
   void
   JointProblem::make_grid()
   {
+    if (pullout)
+      {
+        make_pullout_grid();
+        return;
+      }
     const double              L = settings.length, h = settings.layer, B = settings.block;
     std::vector<std::vector<double>> steps(dim);
     steps[0].assign(settings.n_xy, L / settings.n_xy);
@@ -381,13 +543,178 @@ namespace interlock_dealii
       }
   }
 
+  // The pull-out test's block: z from 0 (the bar's far end) to the embedment (the loaded end,
+  // the block's top face), as the axisymmetric CalculiX model (x = radius, y = axis there).
+  // The cross-section: the bar (a square core of m x m cells and one ring of n_theta = 4 m
+  // cells to its surface), the layer (one ring, thickness h; clay-bar over the top 10 D,
+  // concrete-bar below), the concrete (rings of growing width to the block's radius). Ring
+  // vertices lie on polygons at uniform angles whose radius is scaled so that each polygon
+  // has its circle's area (the bar's section exact); the layer's outer polygon lies h from
+  // the inner one. Along the bar cells of about `element` mm, the sleeve's end a vertex row.
+  // Boundary id 5: the top face.
+  void
+  JointProblem::make_pullout_grid()
+  {
+    const unsigned int n = settings.n_theta, m = n / 4;
+    const double       h = settings.layer, L = settings.embedment;
+    std::vector<double> radii = {bar_radius, bar_radius + h};
+    for (double w = settings.ring_first; radii.back() < settings.radius - 1e-9;
+         w *= settings.ring_ratio)
+      radii.push_back(radii.back() + 1.5 * w >= settings.radius ? settings.radius :
+                                                                   radii.back() + w);
+    const double area_scale = std::sqrt((2 * numbers::PI / n) / std::sin(2 * numbers::PI / n));
+    const double core       = 0.45 * bar_radius * area_scale; // the core square's half side
+
+    // The section: core vertices (i, j), i, j = 0 .. m, then ring k's n vertices.
+    std::vector<Point<2>> section;
+    for (unsigned int j = 0; j <= m; ++j)
+      for (unsigned int i = 0; i <= m; ++i)
+        section.emplace_back(-core + 2 * core * i / m, -core + 2 * core * j / m);
+    const auto core_vertex = [m](unsigned int i, unsigned int j) { return j * (m + 1) + i; };
+    // The core's boundary counterclockwise from (-a, -a), position p = 0 .. n - 1; ring
+    // vertex p at the angle -3 pi / 4 + 2 pi p / n (the core's corners at the diagonals).
+    std::vector<unsigned int> perimeter(n);
+    for (unsigned int k = 0; k < m; ++k)
+      {
+        perimeter[k]         = core_vertex(k, 0);
+        perimeter[m + k]     = core_vertex(m, k);
+        perimeter[2 * m + k] = core_vertex(m - k, m);
+        perimeter[3 * m + k] = core_vertex(0, m - k);
+      }
+    // The layer's outer polygon: its faces h from the inner ones (the cells' thickness is the
+    // layer's h, which the separation h eps assumes).
+    std::vector<double> vertex_radii;
+    for (const double r : radii)
+      vertex_radii.push_back(r * area_scale);
+    vertex_radii[1] = vertex_radii[0] + h / std::cos(numbers::PI / n);
+    const unsigned int first_ring = section.size();
+    for (const double r : vertex_radii)
+      for (unsigned int p = 0; p < n; ++p)
+        {
+          const double phi = -0.75 * numbers::PI + 2 * numbers::PI * p / n;
+          section.emplace_back(r * std::cos(phi), r * std::sin(phi));
+        }
+    const auto ring_vertex = [first_ring, n](unsigned int k, unsigned int p) {
+      return first_ring + k * n + p % n;
+    };
+    // Section cells (vertices in deal.II's lexicographic order, counterclockwise) and their
+    // kind: 0 concrete, 1 layer, 3 steel.
+    std::vector<std::array<unsigned int, 4>> quads;
+    std::vector<types::material_id>         kinds;
+    for (unsigned int j = 0; j < m; ++j)
+      for (unsigned int i = 0; i < m; ++i)
+        {
+          quads.push_back({{core_vertex(i, j), core_vertex(i + 1, j), core_vertex(i, j + 1),
+                            core_vertex(i + 1, j + 1)}});
+          kinds.push_back(steel_id);
+        }
+    for (unsigned int p = 0; p < n; ++p)
+      {
+        quads.push_back({{perimeter[p], ring_vertex(0, p), perimeter[(p + 1) % n],
+                          ring_vertex(0, p + 1)}});
+        kinds.push_back(steel_id);
+      }
+    for (unsigned int k = 0; k + 1 < radii.size(); ++k)
+      for (unsigned int p = 0; p < n; ++p)
+        {
+          quads.push_back({{ring_vertex(k, p), ring_vertex(k + 1, p), ring_vertex(k, p + 1),
+                            ring_vertex(k + 1, p + 1)}});
+          kinds.push_back(k == 0 ? layer_id : 0);
+        }
+
+    // Along the bar.
+    const double       lower    = L - sleeve_length;
+    const auto cells_along = [this](const double length) {
+      return std::max(1u, unsigned(std::lround(length / settings.element)));
+    };
+    const unsigned int n_sleeve = cells_along(sleeve_length), n_lower = cells_along(lower);
+    std::vector<double> z;
+    for (unsigned int k = 0; k <= n_lower; ++k)
+      z.push_back(lower * k / n_lower);
+    for (unsigned int k = 1; k <= n_sleeve; ++k)
+      z.push_back(lower + sleeve_length * k / n_sleeve);
+    top_z = L;
+
+    const unsigned int     ns = section.size();
+    std::vector<Point<dim>> vertices;
+    for (const double zk : z)
+      for (const auto &q : section)
+        vertices.emplace_back(q[0], q[1], zk);
+    std::vector<CellData<dim>> cells;
+    for (unsigned int k = 0; k + 1 < z.size(); ++k)
+      for (unsigned int c = 0; c < quads.size(); ++c)
+        {
+          CellData<dim> cell;
+          for (unsigned int v = 0; v < 4; ++v)
+            {
+              cell.vertices[v]     = k * ns + quads[c][v];
+              cell.vertices[v + 4] = (k + 1) * ns + quads[c][v];
+            }
+          const bool clay     = 0.5 * (z[k] + z[k + 1]) > lower;
+          cell.material_id    = kinds[c] == layer_id && !clay ? layer2_id : kinds[c];
+          cells.push_back(cell);
+        }
+    GridTools::consistently_order_cells(cells);
+    triangulation.create_triangulation(vertices, cells, SubCellData());
+    for (const auto &cell : triangulation.cell_iterators_on_level(0))
+      for (const auto f : cell->face_indices())
+        if (cell->face(f)->at_boundary() && std::abs(cell->face(f)->center()[2] - L) < 1e-9)
+          cell->face(f)->set_boundary_id(top_id);
+  }
+
+  // The layer's frame (rows n, t1, t2). In the pull-out n is radial at the point itself,
+  // not the normal of the cell's flat faces: a rigid rotation of the bar about its axis then
+  // opens no point of the polygonal layer (with the faces' normal the polygon's corners
+  // would bear like a key's, an opening of r sin(angle off the face's middle) per radian).
+  Tensor<2, dim>
+  JointProblem::layer_frame(const Point<dim> &x) const
+  {
+    Tensor<2, dim> q;
+    if (!pullout)
+      {
+        q[0][2] = q[1][0] = q[2][1] = 1;
+        return q;
+      }
+    const double r = std::hypot(x[0], x[1]);
+    q[0][0]        = x[0] / r;
+    q[0][1]        = x[1] / r;
+    q[1][2]            = 1;
+    q[2]               = cross_product_3d(q[0], q[1]);
+    return q;
+  }
+
   void
   JointProblem::setup_system()
   {
     dof_handler.distribute_dofs(fe);
     owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
+    if (pullout)
+      pullout_constraints();
+    else
+      platen_constraints();
 
+    // The platen's row couples to every top-face dof of every process (the ties condense into
+    // it): each process keeps its share of that row, even where the platen's dof is not
+    // locally relevant, and hands it to the owner.
+    IndexSet rows = relevant_dofs;
+    if (!pullout)
+      rows.add_index(platen_dof);
+    DynamicSparsityPattern dsp(rows);
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, comm, rows);
+    matrix.reinit(owned_dofs, owned_dofs, dsp, comm);
+    solution.reinit(owned_dofs, comm);
+    previous.reinit(owned_dofs, comm);
+    rhs.reinit(owned_dofs, comm);
+    ghosted.reinit(owned_dofs, relevant_dofs, comm);
+  }
+
+  // Scenes shear and block: the bottom face fixed, the top face's in-plane displacement
+  // prescribed, its normal displacements tied to the platen's one unknown.
+  void
+  JointProblem::platen_constraints()
+  {
     // The platen's normal displacement: the smallest z dof of the top face, on every process.
     const FEValuesExtractors::Scalar     z_component(2);
     std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
@@ -422,20 +749,63 @@ namespace interlock_dealii
           constraints.add_entry(d, platen_dof, 1.0);
         }
     constraints.close();
+  }
 
-    // The platen's row couples to every top-face dof of every process (the ties condense into
-    // it): each process keeps its share of that row, even where the platen's dof is not
-    // locally relevant, and hands it to the owner.
-    IndexSet rows = relevant_dofs;
-    rows.add_index(platen_dof);
-    DynamicSparsityPattern dsp(rows);
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-    SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, comm, rows);
-    matrix.reinit(owned_dofs, owned_dofs, dsp, comm);
-    solution.reinit(owned_dofs, comm);
-    previous.reinit(owned_dofs, comm);
-    rhs.reinit(owned_dofs, comm);
-    ghosted.reinit(owned_dofs, relevant_dofs, comm);
+  // Pull-out: on the top face the grip holds the bar (its vertices with r <= the bar's):
+  // u_z prescribed (the pull), the tangential displacement u_theta = -sin(phi) u_x +
+  // cos(phi) u_y prescribed (the twist times r), the radial one free; the axis' vertex
+  // u_x = u_y = 0. The reaction plate holds the concrete and the layer's outer vertices:
+  // u_z = 0 and u_theta = 0 (it resists the twist's torque), radially free. Axisymmetric
+  // pulling has u_theta = 0 everywhere: the u_theta ties only act in the twist. Homogeneous
+  // here (Newton's corrections); set_platen puts the values into the solution.
+  void
+  JointProblem::pullout_constraints()
+  {
+    const double bar_edge = pullout_bar_edge();
+    constraints.clear();
+    constraints.reinit(relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    top_vertices.clear();
+    std::map<types::global_dof_index, bool> seen;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == top_id)
+            for (unsigned int v = 0; v < GeometryInfo<dim>::vertices_per_face; ++v)
+              {
+                TopVertex t;
+                for (unsigned int c = 0; c < dim; ++c)
+                  t.dof[c] = cell->face(f)->vertex_dof_index(v, c);
+                if (seen.count(t.dof[0]))
+                  continue;
+                seen[t.dof[0]]   = true;
+                const Point<dim> x = cell->face(f)->vertex(v);
+                t.x                = x[0];
+                t.y                = x[1];
+                const double r     = std::hypot(t.x, t.y);
+                t.bar              = r < bar_edge;
+                if (owned_dofs.is_element(t.dof[0]))
+                  top_vertices.push_back(t);
+                if (constraints.is_constrained(t.dof[2]))
+                  continue;
+                constraints.add_line(t.dof[2]);
+                if (r < 1e-9 * bar_radius)
+                  {
+                    constraints.add_line(t.dof[0]);
+                    constraints.add_line(t.dof[1]);
+                  }
+                else if (std::abs(t.x) >= std::abs(t.y)) // u_y = (y / x) u_x + ...
+                  {
+                    constraints.add_line(t.dof[1]);
+                    constraints.add_entry(t.dof[1], t.dof[0], t.y / t.x);
+                  }
+                else // u_x = (x / y) u_y + ...
+                  {
+                    constraints.add_line(t.dof[0]);
+                    constraints.add_entry(t.dof[0], t.dof[1], t.x / t.y);
+                  }
+              }
+    constraints.close();
   }
 
   // Virgin state at every quadrature point of the process's layer cells.
@@ -450,7 +820,7 @@ namespace interlock_dealii
           for (auto &p : storage.get_data(cell))
             {
               p->committed.resize(state_size);
-              if (interlock_state_init(material.get(), 0, 1, p->committed.data()) !=
+              if (interlock_state_init(material_of(cell), 0, 1, p->committed.data()) !=
                   INTERLOCK_OK)
                 throw std::runtime_error("interlock_state_init failed");
             }
@@ -461,6 +831,31 @@ namespace interlock_dealii
   void
   JointProblem::set_platen(const double t)
   {
+    if (pullout)
+      {
+        // The grip: u_z = the pull, u_theta = the twist x r (the tie's dependent component
+        // from the independent one's current value); the plate: 0.
+        const double pull = pull_at(t), omega = twist_at(t);
+        std::vector<std::pair<types::global_dof_index, double>> values;
+        for (const auto &v : top_vertices)
+          {
+            const double w = v.bar ? omega : 0.0, r2 = v.x * v.x + v.y * v.y;
+            values.emplace_back(v.dof[2], v.bar ? pull : 0.0);
+            if (r2 < 1e-18 * bar_radius * bar_radius)
+              {
+                values.emplace_back(v.dof[0], 0.0);
+                values.emplace_back(v.dof[1], 0.0);
+              }
+            else if (std::abs(v.x) >= std::abs(v.y))
+              values.emplace_back(v.dof[1], v.y / v.x * solution(v.dof[0]) + w * r2 / v.x);
+            else
+              values.emplace_back(v.dof[0], v.x / v.y * solution(v.dof[1]) - w * r2 / v.y);
+          }
+        for (const auto &kv : values)
+          solution(kv.first) = kv.second;
+        solution.compress(VectorOperation::insert);
+        return;
+      }
     const double a = settings.angle_deg * numbers::PI / 180.0, u = slip_at(t);
     std::map<types::global_dof_index, double> values;
     VectorTools::interpolate_boundary_values(dof_handler, bottom_id,
@@ -492,13 +887,15 @@ namespace interlock_dealii
     const double       c0 = cpu_seconds();
     const unsigned int nq = quadrature.size(), nd = fe.n_dofs_per_cell();
     const double       h  = settings.layer;
-    FEValues<dim>      fv(fe, quadrature, update_gradients | update_JxW_values);
+    FEValues<dim>      fv(fe, quadrature,
+                     update_gradients | update_JxW_values | update_quadrature_points);
     FEFaceValues<dim>  ffv(fe, face_quadrature, update_values | update_JxW_values);
     const FEValuesExtractors::Vector     u(0);
     std::vector<SymmetricTensor<2, dim>> strain(nq);
     std::vector<types::global_dof_index> dofs(nd);
 
-    // 1. The layer's separations, gathered with the old states into the batch.
+    // 1. The layer's separations in each point's frame, gathered with the old states into
+    // the batch: the points of layer id 1, then those of layer id 2 (one call per material).
     size_t n = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && in_layer(cell))
@@ -510,29 +907,43 @@ namespace interlock_dealii
     batch_tangent.resize(9 * n);
     batch_status.resize(n);
     batch_fraction.resize(n);
-    size_t p = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && in_layer(cell))
-        {
-          fv.reinit(cell);
-          fv[u].get_function_symmetric_gradients(ghosted, strain);
-          const auto data = storage.get_data(cell);
-          for (unsigned int q = 0; q < nq; ++q, ++p)
+    batch_offset.assign(triangulation.n_active_cells(), 0);
+    std::vector<size_t> range(materials.size() + 1, 0);
+    size_t              p = 0;
+    for (unsigned int k = 0; k < materials.size(); ++k)
+      {
+        range[k] = p;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned() && in_layer(cell) && material_of(cell) == materials[k].get())
             {
-              batch_separation[3 * p + 0] = h * strain[q][2][2];
-              batch_separation[3 * p + 1] = h * 2 * strain[q][0][2];
-              batch_separation[3 * p + 2] = h * 2 * strain[q][1][2];
-              std::copy(data[q]->committed.begin(), data[q]->committed.end(),
-                        batch_old.begin() + state_size * p);
+              batch_offset[cell->active_cell_index()] = p;
+              fv.reinit(cell);
+              fv[u].get_function_symmetric_gradients(ghosted, strain);
+              const auto data = storage.get_data(cell);
+              for (unsigned int q = 0; q < nq; ++q, ++p)
+                {
+                  const Tensor<2, dim> frame = layer_frame(fv.quadrature_point(q));
+                  const Tensor<1, dim> en    = strain[q] * frame[0];
+                  for (unsigned int c = 0; c < 3; ++c)
+                    batch_separation[3 * p + c] = (c == 0 ? h : 2 * h) * (frame[c] * en);
+                  std::copy(data[q]->committed.begin(), data[q]->committed.end(),
+                            batch_old.begin() + state_size * p);
+                }
             }
-        }
+      }
+    range[materials.size()] = p;
     const auto   t1 = Clock::now();
     const double c1 = cpu_seconds();
     // 2. The law.
-    const size_t failed =
-      interlock_update(material.get(), n, batch_separation.data(), batch_old.data(),
-                       batch_new.data(), batch_traction.data(), batch_tangent.data(),
-                       batch_status.data(), batch_fraction.data());
+    size_t failed = 0;
+    for (unsigned int k = 0; k < materials.size(); ++k)
+      {
+        const size_t a = range[k], m = range[k + 1] - range[k];
+        failed += interlock_update(materials[k].get(), m, &batch_separation[3 * a],
+                                   &batch_old[state_size * a], &batch_new[state_size * a],
+                                   &batch_traction[3 * a], &batch_tangent[9 * a],
+                                   &batch_status[a], &batch_fraction[a]);
+      }
     const auto   t2 = Clock::now();
     const double c2 = cpu_seconds();
     cost.law_cpu += c2 - c1;
@@ -547,8 +958,10 @@ namespace interlock_dealii
         for (size_t i = 0; i < n; ++i)
           if (batch_status[i] != INTERLOCK_OK)
             {
+              const unsigned int k =
+                std::upper_bound(range.begin(), range.end(), i) - range.begin() - 1;
               char message[512];
-              interlock_update_message(material.get(), &batch_separation[3 * i],
+              interlock_update_message(materials[k].get(), &batch_separation[3 * i],
                                        &batch_old[state_size * i], message, sizeof message);
               std::cout << "  process " << Utilities::MPI::this_mpi_process(comm)
                         << ": a layer point fails: " << message << std::endl;
@@ -560,28 +973,37 @@ namespace interlock_dealii
         return false;
       }
 
-    // 3. Assembly.
-    const double lambda = settings.e_block * settings.nu_block /
-                          ((1 + settings.nu_block) * (1 - 2 * settings.nu_block));
-    const double mu = settings.e_block / (2 * (1 + settings.nu_block));
-    double       D_rock[6][6] = {};
-    for (unsigned int i = 0; i < 3; ++i)
-      {
-        for (unsigned int j = 0; j < 3; ++j)
-          D_rock[i][j] = lambda;
-        D_rock[i][i] += 2 * mu;
-        D_rock[i + 3][i + 3] = mu;
-      }
-    // The layer's law components in Voigt order: normal zz (2), t1 xz (4), t2 yz (3).
+    // 3. Assembly. The solids' isotropic elasticity: the rock (scenes shear, block) or the
+    // concrete, and the steel (pull-out).
+    const auto isotropic = [](const double E, const double nu, double (&D)[6][6]) {
+      const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+      for (unsigned int i = 0; i < 6; ++i)
+        for (unsigned int j = 0; j < 6; ++j)
+          D[i][j] = (i < 3 && j < 3) ? lambda : 0.0;
+      for (unsigned int i = 0; i < 3; ++i)
+        {
+          D[i][i] += 2 * mu;
+          D[i + 3][i + 3] = mu;
+        }
+    };
+    double D_rock[6][6], D_steel[6][6];
+    if (pullout)
+      isotropic(settings.e_concrete, settings.nu_concrete, D_rock);
+    else
+      isotropic(settings.e_block, settings.nu_block, D_rock);
+    isotropic(settings.e_steel, settings.nu_steel, D_steel);
+    // The layer's law components in the local Voigt order (x = t1, y = t2, z = n):
+    // normal zz (2), t1 xz (4), t2 yz (3).
     const unsigned int law_slot[3] = {2, 4, 3};
     matrix = 0;
     rhs    = 0;
+    grip_iterate = {{0, 0}};
+    const double bar_edge = pullout_bar_edge();
     FullMatrix<double>    cell_matrix(nd, nd);
     Vector<double>        cell_rhs(nd);
     std::vector<Voigt>    B(nd);
     double                D[6][6];
     Voigt                 stress;
-    p = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -590,9 +1012,24 @@ namespace interlock_dealii
           fv.reinit(cell);
           fv[u].get_function_symmetric_gradients(ghosted, strain);
           const bool layer = in_layer(cell);
+          // The layer's local axes at a point (t1, t2, n) as rows: a symmetric tensor e in
+          // them is R e R^T.
+          Tensor<2, dim> R;
+          const auto local = [&R](const SymmetricTensor<2, dim> &e) {
+            return voigt(symmetrize(Tensor<2, dim>(R * Tensor<2, dim>(e) * transpose(R))));
+          };
+          const auto &D_solid = cell->material_id() == steel_id ? D_steel : D_rock;
+          p = layer ? batch_offset[cell->active_cell_index()] : 0;
           for (unsigned int q = 0; q < nq; ++q)
             {
-              const Voigt e = voigt(strain[q]);
+              if (layer)
+                {
+                  const Tensor<2, dim> frame = layer_frame(fv.quadrature_point(q));
+                  R[0]                       = frame[1];
+                  R[1]                       = frame[2];
+                  R[2]                       = frame[0];
+                }
+              const Voigt e = layer ? local(strain[q]) : voigt(strain[q]);
               if (layer)
                 {
                   std::fill(&D[0][0], &D[0][0] + 36, 0.0);
@@ -612,13 +1049,14 @@ namespace interlock_dealii
                     stress[i] = 0;
                     for (unsigned int j = 0; j < 6; ++j)
                       {
-                        D[i][j] = D_rock[i][j];
-                        stress[i] += D_rock[i][j] * e[j];
+                        D[i][j] = D_solid[i][j];
+                        stress[i] += D_solid[i][j] * e[j];
                       }
                   }
               const double w = fv.JxW(q);
               for (unsigned int i = 0; i < nd; ++i)
-                B[i] = voigt(fv[u].symmetric_gradient(i, q));
+                B[i] = layer ? local(fv[u].symmetric_gradient(i, q)) :
+                               voigt(fv[u].symmetric_gradient(i, q));
               for (unsigned int i = 0; i < nd; ++i)
                 {
                   Voigt DBi_T{}; // row i of B^T D
@@ -642,10 +1080,26 @@ namespace interlock_dealii
                     }
                 }
             }
+          // Pull-out: the grip's force and torque, the internal forces of the bar's top
+          // vertices (Q1: shape function k of a component sits at vertex k).
+          if (pullout && std::abs(cell->center()[2] - top_z) < cell->diameter())
+            for (unsigned int i = 0; i < nd; ++i)
+              {
+                const auto       ci = fe.system_to_component_index(i);
+                const Point<dim> x  = cell->vertex(ci.second);
+                if (std::abs(x[2] - top_z) > 1e-9 * top_z || std::hypot(x[0], x[1]) > bar_edge)
+                  continue;
+                const double f = -cell_rhs(i);
+                if (ci.first == 2)
+                  grip_iterate[0] += f;
+                else
+                  grip_iterate[1] += (ci.first == 0 ? -x[1] : x[0]) * f;
+              }
           // The platen's normal force sigma_N A, as a traction on the top face (the ties
           // carry it to the platen's one unknown).
           for (const auto f : cell->face_indices())
-            if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == top_id)
+            if (!pullout && cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == top_id)
               {
                 ffv.reinit(cell, f);
                 for (unsigned int q = 0; q < face_quadrature.size(); ++q)
@@ -728,15 +1182,50 @@ namespace interlock_dealii
   void
   JointProblem::commit_state()
   {
-    size_t p = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned() && in_layer(cell))
-        for (auto &d : storage.get_data(cell))
-          {
-            std::copy(batch_new.begin() + state_size * p,
-                      batch_new.begin() + state_size * (p + 1), d->committed.begin());
-            ++p;
-          }
+        {
+          size_t p = batch_offset[cell->active_cell_index()];
+          for (auto &d : storage.get_data(cell))
+            {
+              std::copy(batch_new.begin() + state_size * p,
+                        batch_new.begin() + state_size * (p + 1), d->committed.begin());
+              ++p;
+            }
+        }
+    grip = grip_iterate;
+  }
+
+  // Per layer material (ids 1, 2), over all processes: the layer's volume, then the
+  // volume-weighted sums of the separation (3), the traction (3) and the damage (the mean over
+  // the microplanes) at the last accepted increment.
+  std::vector<double>
+  JointProblem::layer_sums()
+  {
+    FEValues<dim>       fv(fe, quadrature, update_JxW_values);
+    const unsigned int  nq = quadrature.size();
+    std::vector<double> sums(8 * materials.size(), 0.0);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && in_layer(cell))
+        {
+          fv.reinit(cell);
+          double *   sum  = &sums[cell->material_id() == layer2_id ? 8 : 0];
+          const auto data = storage.get_data(cell);
+          for (unsigned int q = 0; q < nq; ++q)
+            {
+              const double *s = data[q]->committed.data();
+              const double  w = fv.JxW(q);
+              sum[0] += w;
+              for (unsigned int c = 0; c < 6; ++c)
+                sum[1 + c] += w * s[statev_size + c];
+              double d = 0;
+              for (const auto k : damage_slots)
+                d += s[k];
+              sum[7] += w * d / std::max<size_t>(1, damage_slots.size());
+            }
+        }
+    Utilities::MPI::sum(sums, comm, sums);
+    return sums;
   }
 
   // One row of the curve: the platen's displacement, the layer's mean separation and traction
@@ -745,29 +1234,10 @@ namespace interlock_dealii
   JointProblem::curve_row(const unsigned int increment, const double t,
                           const unsigned int substeps, const unsigned int iterations)
   {
-    FEValues<dim>      fv(fe, quadrature, update_JxW_values);
-    const unsigned int nq = quadrature.size();
-    std::vector<double> sums(8, 0.0); // area, sN, sT1, sT2, tN, tT1, tT2, damage
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned() && in_layer(cell))
-        {
-          fv.reinit(cell);
-          const auto data = storage.get_data(cell);
-          for (unsigned int q = 0; q < nq; ++q)
-            {
-              const double *s = data[q]->committed.data();
-              const double  w = fv.JxW(q);
-              sums[0] += w;
-              for (unsigned int c = 0; c < 6; ++c)
-                sums[1 + c] += w * s[statev_size + c];
-              double d = 0;
-              for (const auto k : damage_slots)
-                d += s[k];
-              sums[7] += w * d / std::max<size_t>(1, damage_slots.size());
-            }
-        }
-    Utilities::MPI::sum(sums, comm, sums);
-    std::array<double, 6> mean;
+    if (pullout)
+      return pullout_curve_row(increment, t, substeps, iterations);
+    const std::vector<double> sums = layer_sums();
+    std::array<double, 6>     mean;
     for (unsigned int c = 0; c < 6; ++c)
       mean[c] = sums[1 + c] / sums[0];
     double spread = 0;
@@ -789,9 +1259,36 @@ namespace interlock_dealii
     return row.str();
   }
 
-  const char *const curve_header =
-    "increment,substeps,iterations,t,platen_ux,platen_uy,platen_uz,s_n,s_t1,s_t2,"
-    "sigma_n,sigma_t1,sigma_t2,damage,traction_spread";
+  // Pull-out: the grip's pull [mm], twist [deg], force [N] and torque [N mm]; per interface
+  // (clay-bar, concrete-bar) the area-weighted mean separation, traction and damage.
+  std::string
+  JointProblem::pullout_curve_row(const unsigned int increment, const double t,
+                                  const unsigned int substeps, const unsigned int iterations)
+  {
+    const std::vector<double> sums = layer_sums();
+    std::vector<double>       g(grip.begin(), grip.end());
+    Utilities::MPI::sum(g, comm, g);
+    std::ostringstream row;
+    row << increment << ',' << substeps << ',' << iterations << std::setprecision(17) << ','
+        << t << ',' << pull_at(t) << ',' << twist_at(t) * 180 / numbers::PI << ',' << g[0]
+        << ',' << g[1];
+    for (unsigned int k = 0; k < 2; ++k)
+      for (unsigned int c = 1; c < 8; ++c)
+        row << ',' << sums[8 * k + c] / std::max(sums[8 * k], 1e-300);
+    return row.str();
+  }
+
+  std::string
+  curve_header(const bool pullout)
+  {
+    if (pullout)
+      return "increment,substeps,iterations,t,pull,twist_deg,force,torque,"
+             "clay_s_n,clay_s_t1,clay_s_t2,clay_sigma_n,clay_sigma_t1,clay_sigma_t2,clay_damage,"
+             "concrete_s_n,concrete_s_t1,concrete_s_t2,concrete_sigma_n,concrete_sigma_t1,"
+             "concrete_sigma_t2,concrete_damage";
+    return "increment,substeps,iterations,t,platen_ux,platen_uy,platen_uz,s_n,s_t1,s_t2,"
+           "sigma_n,sigma_t1,sigma_t2,damage,traction_spread";
+  }
 
   // Displacement, and per cell of the layer its mean damage, slip |s_T| and dilation s_N.
   void
@@ -831,7 +1328,8 @@ namespace interlock_dealii
     out.add_data_vector(dilation, "dilation");
     out.add_data_vector(rank, "process");
     out.build_patches();
-    out.write_vtu_with_pvtu_record(settings.output_dir + "/", "joint", increment, comm, 4);
+    out.write_vtu_with_pvtu_record(settings.output_dir + "/", pullout ? "pullout" : "joint",
+                                   increment, comm, 4);
   }
 
   // The distributed mesh, the solution and every layer point's state (packed with its cell,
@@ -936,7 +1434,8 @@ namespace interlock_dealii
         setup_system();
         initialise_state();
       }
-    force_scale = std::abs(settings.normal) * settings.length * settings.length;
+    force_scale = pullout ? steel_yield * numbers::PI * bar_radius * bar_radius :
+                            std::abs(settings.normal) * settings.length * settings.length;
     if (!(force_scale > 0))
       force_scale = settings.e_block * settings.length * settings.length * 1e-6;
 
@@ -955,7 +1454,8 @@ namespace interlock_dealii
     Cost                       cost;
     const auto                 t_start = Clock::now();
     const double               dt_min  = 1e-6;
-    const unsigned int         n_total = 1 + settings.n_slip;
+    const unsigned int         n_total =
+      pullout ? settings.n_pull + settings.n_twist : 1 + settings.n_slip;
     PETScWrappers::MPI::Vector last(owned_dofs, comm);
     for (unsigned int increment = done + 1; increment <= n_total; ++increment)
       {
@@ -970,7 +1470,8 @@ namespace interlock_dealii
             // In the slip phase the last substep's rate carries on: the layer's points start
             // Newton off the state they converged to (where a point that slid sits on its
             // friction cone to round-off, and its tangent would depend on the partition).
-            if (dt_previous > 0 && t - dt_previous >= 1.0 - 1e-12)
+            const double phase = phase_start(t_new);
+            if (dt_previous > 0 && t - dt_previous >= phase - 1e-12 && (pullout || phase > 0))
               {
                 PETScWrappers::MPI::Vector rate = last;
                 rate -= previous;
@@ -1024,7 +1525,7 @@ namespace interlock_dealii
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
         std::ofstream f(settings.output_dir + "/" + settings.curve);
-        f << curve_header << '\n';
+        f << curve_header(pullout) << '\n';
         for (const auto &r : curve_rows)
           f << r << '\n';
         if (!f)

@@ -51,7 +51,7 @@ set_tests_properties(mpi_dealii_build PROPERTIES LABELS mpi TIMEOUT 900
 set(mpi_environment OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
   OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_mpi_yield_when_idle=1)
 # (tests/mpi/test_dealii.py runs the example with one BLAS thread per process: see there.)
-foreach(case shear partition restart)
+foreach(case shear partition restart gmres pullout_partition pullout_restart)
   add_test(NAME mpi_dealii_${case}
     COMMAND ${INTERLOCK_TEST_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/test_dealii.py ${case}
       --example ${mpi_work}/build/interlock_dealii --mpiexec ${INTERLOCK_MPIEXEC}

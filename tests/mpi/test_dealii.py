@@ -9,6 +9,17 @@
   restart    the same scene stopped after increment K and restarted from its checkpoint, on
              the same number of processes (to 1e-12 of each column's largest value) and on
              another (the quadrature-point state repartitioned with its cells; to 1e-9)
+  gmres      scene block at np 2 with GMRES + BoomerAMG against the direct solver (MUMPS):
+             the curves within 1e-8 of each column's largest value (Newton's tolerance is
+             1e-10 of the scale, each GMRES correction 1e-8 of its residual)
+  pullout_partition
+             a short scene b (the pull-out: bar, clay-bar and concrete-bar layers, concrete;
+             pull, then twist) at np 1 and 2: the same substeps and Newton iterations, every
+             column within 1e-9 of its largest value; the grip's force equals the layers'
+             shear resultant (the bar's equilibrium); no torque before the twist
+  pullout_restart
+             that scene stopped after increment K (in the pull) and restarted at np 2: the
+             rest of the curve, the twist included, equals the uninterrupted run's to 1e-12
   absent     deal.II or MPI was not found at configure time: say so and skip (exit 77)
 
 usage: test_dealii.py CASE --example EXE --mpiexec MPIEXEC --work DIR [--history EXE] [--deck NML]
@@ -64,7 +75,8 @@ def compare(a, b, tolerance, what, rows=slice(None)):
     for k in ("increment", "substeps", "iterations"):
         check(np.array_equal(a[k][rows], b[k][rows]), f"{what}: {k} equal")
     worst = 0.0
-    traction_scale = max(np.max(np.abs(a[k])) for k in ("sigma_n", "sigma_t1", "sigma_t2"))
+    traction_scale = max((np.max(np.abs(a[k])) for k in ("sigma_n", "sigma_t1", "sigma_t2")
+                          if k in a), default=0.0)
     for k in a:
         if k in ("increment", "substeps", "iterations"):
             continue
@@ -108,11 +120,11 @@ def block_settings():
     return ["scene=block"]
 
 
-def check_vtu(work, increment, n_processes):
+def check_vtu(work, increment, n_processes, name="joint"):
     """The PVTU record of an increment names one VTU piece per process; each piece is
     well-formed XML with the displacement and the layer's damage, slip and dilation."""
     import xml.etree.ElementTree as ET
-    record = os.path.join(work, f"joint_{increment:04d}.pvtu")
+    record = os.path.join(work, f"{name}_{increment:04d}.pvtu")
     pieces = [p.get("Source") for p in ET.parse(record).getroot().iter("Piece")]
     check(len(pieces) == n_processes, f"{record}: {len(pieces)} pieces for {n_processes} processes")
     for piece in pieces:
@@ -153,9 +165,81 @@ def case_restart(args):
                 "uninterrupted run", rows=slice(k, None))
 
 
+def case_gmres(args):
+    direct = run_example(args, 2, os.path.join(args.work, "mumps"), *block_settings())
+    iterative = run_example(args, 2, os.path.join(args.work, "gmres"), *block_settings(),
+                            "solver=gmres")
+    worst = 0.0
+    for k in direct:
+        if k in ("increment", "substeps", "iterations"):
+            continue
+        scale = max(np.max(np.abs(direct[k])), 1e-300)
+        worst = max(worst, np.max(np.abs(direct[k] - iterative[k])) / scale)
+    check(np.array_equal(direct["increment"], iterative["increment"]), "the same increments")
+    check(worst <= 1e-8, f"GMRES + BoomerAMG against MUMPS: largest difference {worst:.2e} "
+          "of a column's largest value (<= 1e-8)")
+    check(np.sum(iterative["iterations"]) >= np.sum(direct["iterations"]),
+          f"inexact corrections: {int(np.sum(iterative['iterations']))} Newton iterations "
+          f"against {int(np.sum(direct['iterations']))}")
+
+
+# A short scene b: 8 cells around the bar, 20 mm along it, 40 mm bonded below the sleeve, a
+# 200 mm block; pull 0.5 mm in 5 increments, then twist the grip 2 deg in 3.
+PULLOUT = ["scene=pullout", "n_theta=8", "element=20", "embedment=235", "radius=200",
+           "ring_ratio=2", "pull=0.5", "n_pull=5", "twist_deg=2", "n_twist=3"]
+
+
+def case_pullout_partition(args):
+    curves = {n: run_example(args, n, os.path.join(args.work, f"np{n}"), *PULLOUT,
+                             "vtu_every=8") for n in (1, 2)}
+    c1 = curves[1]
+    compare(c1, curves[2], 1e-9, "pull-out: np 2 against np 1")
+    check(np.max(np.abs(c1["torque"][:5])) <= 1e-9 * np.max(np.abs(c1["torque"])),
+          "no torque while pulling (axisymmetric), "
+          f"{np.max(np.abs(c1['torque'][5:])):.4g} N mm in the twist")
+    check(np.all(np.diff(c1["force"][:5]) > 0), "the grip's force rises with the pull")
+    # Equilibrium of the bar (its far end free): the grip's force, from the internal forces
+    # of the bar's top vertices, equals the layers' shear resultant, from their mean traction
+    # sigma_t1 times their mid-surface area (the polygon of 8 sides whose vertex radius gives
+    # the bar's area, the layer's faces h apart; docs/dealii.md) and the cosine of the Gauss
+    # points' radial direction to the faces' normal: to O(n_theta^-2), 0.6 % measured at 8.
+    n, rb, h = 8, 9.75, 0.01
+    mid = rb * np.sqrt((2 * np.pi / n) / np.sin(2 * np.pi / n)) + h / 2 / np.cos(np.pi / n)
+    perimeter = 2 * n * mid * np.sin(np.pi / n) / np.sqrt(1 + np.tan(np.pi / n) ** 2 / 3)
+    resultant = -perimeter * (195.0 * c1["clay_sigma_t1"] + 40.0 * c1["concrete_sigma_t1"])
+    gap = np.max(np.abs(resultant - c1["force"])) / np.max(c1["force"])
+    check(gap <= 0.01, f"the grip's force = the layers' shear resultant to {gap:.1e} of it")
+    area = np.pi * 9.75 ** 2
+    check(np.max(c1["force"]) / area < 350.0,
+          f"the bar stays below its yield stress ({np.max(c1['force']) / area:.1f} MPa)")
+    check(c1["clay_damage"][-1] > 0.9 and c1["concrete_damage"][-1] < c1["clay_damage"][-1],
+          f"the clay-bar layer debonds first (damage {c1['clay_damage'][-1]:.3f} against "
+          f"{c1['concrete_damage'][-1]:.3f})")
+    t2 = np.abs(c1["clay_s_t2"])
+    check(t2[-1] > 1e-3 and np.max(t2[:5]) <= 1e-9 * t2[-1],
+          f"the twist alone slides the clay-bar layer around the bar: mean s_t2 "
+          f"{np.max(t2[:5]):.1e} mm while pulling, {t2[-1]:.4f} mm at the end")
+    for n in (1, 2):
+        check_vtu(os.path.join(args.work, f"np{n}"), 8, n, "pullout")
+
+
+def case_pullout_restart(args):
+    k = 3
+    full = run_example(args, 2, os.path.join(args.work, "full"), *PULLOUT)
+    work = os.path.join(args.work, "restart")
+    shutil.rmtree(work, ignore_errors=True)
+    stopped = run_example(args, 2, work, *PULLOUT, f"checkpoint_after={k}")
+    check(len(stopped["increment"]) == k, f"the stopped run ends after increment {k}")
+    resumed = run_example(args, 2, work, *PULLOUT, "restart=1")
+    check(len(resumed["increment"]) == len(full["increment"]), "the restarted run completes")
+    compare(full, resumed, 1e-12, f"pull-out restarted after increment {k} against the "
+            "uninterrupted run", rows=slice(k, None))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("case", choices=["shear", "partition", "restart", "absent"])
+    parser.add_argument("case", choices=["shear", "partition", "restart", "gmres",
+                                         "pullout_partition", "pullout_restart", "absent"])
     parser.add_argument("--example")
     parser.add_argument("--mpiexec")
     parser.add_argument("--work")
@@ -170,7 +254,9 @@ def main():
               " (scripts/ensure_packages.sh installs them; docs/dealii.md)")
         return SKIP
     os.makedirs(args.work, exist_ok=True)
-    {"shear": case_shear, "partition": case_partition, "restart": case_restart}[args.case](args)
+    {"shear": case_shear, "partition": case_partition, "restart": case_restart,
+     "gmres": case_gmres, "pullout_partition": case_pullout_partition,
+     "pullout_restart": case_pullout_restart}[args.case](args)
     print(f"{len(failures)} failure(s)")
     return 1 if failures else 0
 

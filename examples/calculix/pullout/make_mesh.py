@@ -72,6 +72,9 @@ def parse_args(argv):
     p.add_argument("--layer-e-other", type=float, default=0.01,
                    help="layer PROPS 2, modulus [MPa] of its non-interface components (0.01)")
     p.add_argument("--layer", choices=("umat", "elastic"), default="umat")
+    p.add_argument("--steel", choices=("plastic", "elastic"), default="plastic",
+                   help="plastic: Table 4's von Mises hardening; elastic: the steel elastic "
+                        "(the deal.II example's 3D pull-out compares against it)")
     p.add_argument("--tangent", type=int, choices=(0, 1, 2), default=2,
                    help="interlock PROPS 20: 1 exact (ccx averages it), 2 symmetric for hosts "
                         "that symmetrize (2); 0: PROPS 20 not given (the law's default)")
@@ -210,12 +213,13 @@ def main(argv):
     w("*MATERIAL, NAME=STEEL")
     w("*ELASTIC")
     w(f"{E_STEEL}, {NU_STEEL}")
-    w("*PLASTIC")
-    eps_plateau_end = HARDENING[1][1]
-    for stress, eps in HARDENING:
-        if a.plateau_hardening > 0 and 0 < eps <= eps_plateau_end:
-            stress += a.plateau_hardening * eps
-        w(f"{stress}, {eps}")
+    if a.steel == "plastic":
+        w("*PLASTIC")
+        eps_plateau_end = HARDENING[1][1]
+        for stress, eps in HARDENING:
+            if a.plateau_hardening > 0 and 0 < eps <= eps_plateau_end:
+                stress += a.plateau_hardening * eps
+            w(f"{stress}, {eps}")
     for set_name, mat in (("LAYERCLAY", "CLAYBAR"), ("LAYERCONC", "CONCBAR")):
         s0, gc, eta, mu, th0, thf, hn, z0 = INTERFACES[mat]
         if a.layer == "umat":

@@ -181,6 +181,8 @@ def analyse(job):
     for tm, rows in peeq:
         ys = [heights[e] for e, v in element_means(rows, [0]).items() if v[0] > 0.0]
         yielded.append(length - min(ys) if ys else 0.0)   # to the lowest yielded centre
+    if not peeq:                      # an elastic steel (make_mesh.py --steel elastic)
+        yielded = [0.0] * len(t)
     yielded = np.array(yielded)
     first_yield = next((k for k in range(1, len(yielded)) if yielded[k] > 0), None)
 
