@@ -97,7 +97,14 @@ contains
     type(umat_controls_t), intent(out) :: controls
     integer, intent(out) :: stat
     character(len=*), intent(out) :: message
-    call props_checked_to_material(n, props, .true., mat, solver, controls, stat, message)
+    integer :: refusal
+    stat = status_bad_input
+    refusal = props_refusal(n, props, .true.)
+    if (refusal /= refused_none) then
+      call props_message(props, refusal, message)
+      return
+    end if
+    call material_from_rows(n, props, mat, solver, controls, stat, message)
   end subroutine props_n_to_material
 
   !> props_n_to_material for a three-dimensional interface (SPEC section 9): PROPS 1-20 as
@@ -112,33 +119,21 @@ contains
     type(umat_controls_t), intent(out) :: controls
     integer, intent(out) :: stat
     character(len=*), intent(out) :: message
-    call props_checked_to_material(n, props, .false., mat, solver, controls, stat, message)
-  end subroutine props_n_to_material_3d
-
-  !> PROPS(1:n) checked where they enter (the count, every value against its row, theta_f <=
-  !> theta_0, and on a 2D element (`planar`) the paper's RIA), then the material of the rows
-  !> (interlock_material_rows:material_from_rows).
-  pure subroutine props_checked_to_material(n, props, planar, mat, solver, controls, stat, message)
-    integer, intent(in) :: n
-    real(dp), intent(in) :: props(n)
-    logical, intent(in) :: planar
-    type(interlock_material_t), intent(inout) :: mat
-    type(interlock_solver_t), intent(out) :: solver
-    type(umat_controls_t), intent(out) :: controls
-    integer, intent(out) :: stat
-    character(len=*), intent(out) :: message
     integer :: refusal
     stat = status_bad_input
-    refusal = props_refusal(n, props, planar)
+    refusal = props_refusal(n, props, .false.)
     if (refusal /= refused_none) then
       call props_message(props, refusal, message)
       return
     end if
     call material_from_rows(n, props, mat, solver, controls, stat, message)
-  end subroutine props_checked_to_material
+  end subroutine props_n_to_material_3d
+
 
   !> Which check PROPS(1:n) fails (refused_*), refused_none when none: each tested on its own
-  !> (the value checks by integer comparisons, no comparison of a NaN).
+  !> (the value checks by integer comparisons, no comparison of a NaN): the count, every value
+  !> against its row, theta_f <= theta_0, and on a 2D element (`planar`) the paper's RIA. PROPS
+  !> are checked here, where they enter; material_from_rows then maps the rows.
   pure integer function props_refusal(n, props, planar) result(refusal)
     integer, intent(in) :: n
     real(dp), intent(in) :: props(n)

@@ -48,22 +48,24 @@ contains
   !> plane of such planes (an angle: its magnitude, with the sign of the plane's theta0_deg),
   !> and the material is then checked whole (interlock_material_prepare: the varied row
   !> against the others). stat /= status_ok: `message` says why the material cannot be derived
-  !> (it is set only then: the UMAT's every call builds no text). `mat` is intent(inout) only
-  !> so that the caller's fresh material is not initialised a second time.
+  !> (it is set only then: the UMAT's every call builds no text). `mat`, `solver` and
+  !> `controls` are intent(inout) only so that the caller's fresh ones are not initialised a
+  !> second time on every UMAT call: every field a row gives is set here (the solver's Newton
+  !> controls, which no row gives, stay as the caller has them).
   pure subroutine material_from_rows(n, values, mat, solver, controls, stat, message, varied, &
                                      gamma_hat, theta0_deg, thetaf_deg, zeta0, phi_deg)
     integer, intent(in) :: n
     real(dp), intent(in) :: values(n)
     type(interlock_material_t), intent(inout) :: mat
-    type(interlock_solver_t), intent(out) :: solver
-    type(umat_controls_t), intent(out) :: controls
+    type(interlock_solver_t), intent(inout) :: solver
+    type(umat_controls_t), intent(inout) :: controls
     integer, intent(out) :: stat
     character(len=*), intent(inout) :: message
     logical, intent(in), optional :: varied(n_properties)
     real(dp), intent(in), optional :: gamma_hat(:), theta0_deg(:), thetaf_deg(:), zeta0(:), &
                                       phi_deg(:)
     integer :: i, n_azimuths
-    logical :: vary(n_properties)
+    logical :: varies
     real(dp) :: theta0, thetaf
 
     mat%sigma0_n = values(prop_sigma0_n)
@@ -82,22 +84,22 @@ contains
     controls%max_damage_increment = row(prop_max_dd)
     controls%max_angle_increment = row(prop_max_dtheta) * deg_to_rad
     controls%symmetric_tangent = row(prop_tangent) > tangent_symmetric - 0.5_dp
-    vary = .false.
-    if (present(varied)) vary = varied
+    varies = .false.
+    if (present(varied)) varies = any(varied)
     ! (the angles of the table are in degrees, the material's in radians)
     theta0 = values(prop_theta0) * deg_to_rad
     thetaf = values(prop_thetaf) * deg_to_rad
     n_azimuths = rows_n_azimuths(row(prop_ria), row(prop_n_azimuths))
     if (present(gamma_hat)) then
-      call general_planes(values, vary, gamma_hat, theta0_deg, thetaf_deg, zeta0, phi_deg, mat)
-    else if (n_azimuths <= 1 .and. .not. any(vary)) then
+      call general_planes(values, gamma_hat, theta0_deg, thetaf_deg, zeta0, phi_deg, mat, varied)
+    else if (n_azimuths <= 1 .and. .not. varies) then
       ! (the paper's three planes built and derived in one, no loop over the planes)
       call interlock_paper_material_derive(mat, theta0, thetaf, values(prop_zeta0), stat, message)
       return
     else
       call interlock_azimuthal_ria(mat, n_azimuths, theta0, thetaf, values(prop_zeta0))
     end if
-    if (any(vary)) then
+    if (varies) then
       ! (a varied row is checked against the others here, where it meets them)
       call interlock_material_prepare(mat, stat, message)
     else
@@ -120,19 +122,22 @@ contains
 
   !> The general RIA of the planes a caller gives (angles in degrees), a `varied` row of
   !> theta0_deg, thetaf_deg or zeta0 (values) over every plane.
-  pure subroutine general_planes(values, varied, gamma_hat, theta0_deg, thetaf_deg, zeta0, &
-                                 phi_deg, mat)
+  pure subroutine general_planes(values, gamma_hat, theta0_deg, thetaf_deg, zeta0, phi_deg, &
+                                 mat, varied)
     real(dp), intent(in) :: values(:)
-    logical, intent(in) :: varied(:)
     real(dp), intent(in) :: gamma_hat(:), theta0_deg(:), thetaf_deg(:), zeta0(:), phi_deg(:)
     type(interlock_material_t), intent(inout) :: mat
+    logical, intent(in), optional :: varied(n_properties)
     real(dp) :: t0(size(gamma_hat)), tf(size(gamma_hat)), z(size(gamma_hat))
+    logical :: vary(n_properties)
+    vary = .false.
+    if (present(varied)) vary = varied
     t0 = theta0_deg
     tf = thetaf_deg
     z = zeta0
-    if (varied(prop_theta0)) t0 = sign(values(prop_theta0), theta0_deg)
-    if (varied(prop_thetaf)) tf = sign(values(prop_thetaf), theta0_deg)
-    if (varied(prop_zeta0)) z = values(prop_zeta0)
+    if (vary(prop_theta0)) t0 = sign(values(prop_theta0), theta0_deg)
+    if (vary(prop_thetaf)) tf = sign(values(prop_thetaf), theta0_deg)
+    if (vary(prop_zeta0)) z = values(prop_zeta0)
     call interlock_general_ria(mat, size(gamma_hat), gamma_hat, t0 * deg_to_rad, &
                                tf * deg_to_rad, z, phi_deg * deg_to_rad)
   end subroutine general_planes
