@@ -129,7 +129,6 @@ contains
     call material_from_rows(n, props, mat, solver, controls, stat, message)
   end subroutine props_n_to_material_3d
 
-
   !> Which check PROPS(1:n) fails (refused_*), refused_none when none: each tested on its own
   !> (the value checks by integer comparisons, no comparison of a NaN): the count, every value
   !> against its row, theta_f <= theta_0, and on a 2D element (`planar`) the paper's RIA. PROPS
