@@ -16,6 +16,7 @@ module interlock
       scheme_trapezoidal, scheme_name, effect_damage, effect_friction, effect_interlocking, &
       effect_finite_depth, effect_wear, effect_names, n_effects, kernel_general, kernel_flat, &
       kernel_inclined, kernel_cohesive
+  use interlock_material_rows, only: material_from_rows, rows_n_azimuths
   use interlock_state, only: interlock_state_t, interlock_state_init, interlock_state_3d_t, &
       interlock_state_3d_init
   use interlock_integrate, only: interlock_update

@@ -25,7 +25,7 @@ module interlock_c_api
   use interlock_numbers, only: key_in_range, format_integer, format_real, format_reals
   use interlock_material_table, only: properties, n_properties, n_required_properties, &
       property_index, check_property, property_defaults, umat_nstatv, umat_nstatv_3d, &
-      umat_planes, statevar_3d, statevar_t, prop_tangent, tangent_symmetric, kind_real
+      umat_planes, statevar_3d, statevar_t, kind_real
   use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes
   use interlock_state, only: interlock_state_t, interlock_state_init, interlock_state_3d_t, &
       interlock_state_3d_init
@@ -216,7 +216,7 @@ contains
     if (s /= status_ok) return
     h%dim = dim
     h%state_size = h%nstatv + 2 * dim
-    if (size(props) >= prop_tangent) h%symmetric = props(prop_tangent) > tangent_symmetric - 0.5_dp
+    h%symmetric = h%controls%symmetric_tangent
     allocate (created, source=h)
     call c_f_pointer(material, out)
     out = c_loc(created)

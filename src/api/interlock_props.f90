@@ -1,28 +1,24 @@
 !> The one pack/unpack between the material table's PROPS and STATEV layouts (used by the
 !> UMAT) and the library's material, solver and state types.
 module interlock_props
-  use interlock_kinds, only: dp, deg_to_rad
+  use interlock_kinds, only: dp
   use, intrinsic :: iso_fortran_env, only: int64
   use interlock_kinds, only: same_value, is_finite_bits
   use interlock_numbers, only: key_in_range, format_integer, format_real
-  use interlock_material_table, only: properties, n_properties, n_required_properties, &
+  use interlock_material_table, only: n_properties, n_required_properties, &
       check_property, all_properties_ok, property_defaults, umat_planes, umat_nstatv, statevar_t, &
-      n_statevars_per_plane, &
-      prop_sigma0_n, prop_sigma0_t, prop_gc, prop_eta, prop_mu, prop_h_n, prop_theta0, &
-      prop_thetaf, prop_zeta0, prop_prefractured, prop_scheme, prop_substep_tol, prop_max_dd, &
-      prop_max_dtheta, prop_effect_damage, n_properties_2d, prop_ria, prop_n_azimuths, &
-      ria_azimuthal, property_ok, umat_nstatv_3d, statevar_index_3d, statevar_3d, &
+      n_statevars_per_plane, prop_theta0, prop_thetaf, prop_prefractured, prop_ria, &
+      prop_n_azimuths, ria_paper, statevar_index_3d, statevar_3d, &
       n_statevars_global, sv_frictional_slip_strike, sv_friction_traction_strike, &
       sv_damage, sv_beta, sv_frictional_slip, sv_zeta, sv_theta, sv_friction_traction, &
       sv_work, sv_damage_dissipation, sv_friction_dissipation, sv_initialized, statevars, &
       n_statevars_strike, state_bound, bound_broken, bound_broken_history, bound_plane_angle, &
       bound_flag
-  use interlock_material, only: interlock_material_t, interlock_solver_t, &
-      interlock_paper_material_derive, n_effects, interlock_azimuthal_ria, &
-      interlock_material_derive
+  use interlock_material, only: interlock_material_t, interlock_solver_t
+  use interlock_material_rows, only: umat_controls_t, material_from_rows, rows_n_azimuths
   use interlock_state, only: interlock_state_t, interlock_state_init, interlock_state_3d_t, &
       interlock_state_3d_init
-  use interlock_status, only: status_ok, status_bad_input
+  use interlock_status, only: status_bad_input
   implicit none
   private
   public :: props_to_material, props_n_to_material, statev_to_state, state_to_statev, umat_controls_t
@@ -55,6 +51,10 @@ module interlock_props
     statevars(1:n_statevars_per_plane)%bound, 1, umat_planes), [n_statevars_per_plane * umat_planes]), &
     statevars(n_statevars_per_plane + 1:)%bound]
 
+  !> The checks a PROPS can fail (props_refusal), each with its message (props_message).
+  integer, parameter :: refused_none = 0, refused_count = 1, refused_value = 2, &
+                        refused_angles = 3, refused_ria_2d = 4
+
   !> The rows' bounds as ordered keys (interlock_material_table:key_in_range), for the check of
   !> every UMAT call: the flag 1 (statev_bad_index has taken the uninitialised STATEV before);
   !> the bounds the material narrows (pre-fractured, the angles) are compared after these, on
@@ -69,20 +69,14 @@ module interlock_props
   integer(int64), parameter :: statev_hi_key(umat_nstatv) = &
     merge(hi_bits, ieor(hi_bits, huge(0_int64)), hi_bits >= 0)
 
-  !> What the UMAT needs besides the material: the accuracy bounds behind PNEWDT.
-  type :: umat_controls_t
-    real(dp) :: max_damage_increment = 0.25_dp
-    real(dp) :: max_angle_increment = 1.0_dp * deg_to_rad  !< [rad]
-  end type umat_controls_t
-
 contains
 
-  !> Read and validate PROPS(1:nprops). Missing optional properties take their defaults. Every
-  !> call of the UMAT comes here, so the success path is plain comparisons and arithmetic (no
-  !> message, no formatted write, no copy of a long string): the messages are built by
-  !> props_message only when a check fails. The RIA is the paper's, valid by construction.
-  !> `mat` is intent(inout) only so that the caller's fresh material is not initialised a
-  !> second time on every call: every field the update reads is set here.
+  !> Read and validate PROPS(1:nprops) of a 2D element. Missing optional properties take their
+  !> defaults. Every call of the UMAT comes here, so the success path is plain comparisons and
+  !> arithmetic (no message, no formatted write, no copy of a long string): the messages are
+  !> built by props_message only when a check fails. The RIA is the paper's, valid by
+  !> construction. `mat` is intent(inout) only so that the caller's fresh material is not
+  !> initialised a second time on every call: every field the update reads is set here.
   pure subroutine props_to_material(props, mat, solver, controls, stat, message)
     real(dp), intent(in), contiguous :: props(:)
     type(interlock_material_t), intent(inout) :: mat
@@ -103,53 +97,14 @@ contains
     type(umat_controls_t), intent(out) :: controls
     integer, intent(out) :: stat
     character(len=*), intent(out) :: message
-    integer :: i
-    logical :: ok
-
+    integer :: refusal
     stat = status_bad_input
-    if (n < n_required_properties .or. n > n_properties) then
-      call props_message(props, 0, message)
+    refusal = props_refusal(n, props, .true.)
+    if (refusal /= refused_none) then
+      call props_message(props, refusal, message)
       return
     end if
-    ok = all_properties_ok(props)
-    if (ok) ok = props(prop_thetaf) <= props(prop_theta0)   ! (no comparison of a NaN)
-    ! (the RIA of a 2D element is the paper's: PROPS(21), when given, must say so)
-    if (n >= prop_ria .and. ok) ok = props(prop_ria) < 0.5_dp
-    if (.not. ok) then
-      call props_message(props, 1, message)
-      return
-    end if
-    mat%sigma0_n = props(prop_sigma0_n)
-    mat%sigma0_t = props(prop_sigma0_t)
-    mat%gc = props(prop_gc)
-    mat%eta = props(prop_eta)
-    mat%mu = props(prop_mu)
-    mat%h_n = props(prop_h_n)
-    mat%prefractured = value(prop_prefractured) > 0.5_dp
-    !GCC$ unroll 5
-    do i = 1, n_effects
-      mat%effect(i) = value(prop_effect_damage + i - 1) > 0.5_dp
-    end do
-    solver%scheme = int(value(prop_scheme))   ! a whole number (checked): no rounding call
-    solver%substep_tol = value(prop_substep_tol)
-    controls%max_damage_increment = value(prop_max_dd)
-    controls%max_angle_increment = value(prop_max_dtheta) * deg_to_rad
-    ! (interlock_paper_ria and interlock_material_derive in one, for the three fixed planes)
-    call interlock_paper_material_derive(mat, props(prop_theta0) * deg_to_rad, &
-                                         props(prop_thetaf) * deg_to_rad, props(prop_zeta0), &
-                                         stat, message)
-
-  contains
-
-    !> Optional property i: given, or its default.
-    pure real(dp) function value(i)
-      integer, intent(in) :: i
-      if (i <= n) then
-        value = props(i)
-      else
-        value = property_defaults(i)
-      end if
-    end function value
+    call material_from_rows(n, props, mat, solver, controls, stat, message)
   end subroutine props_n_to_material
 
   !> props_n_to_material for a three-dimensional interface (SPEC section 9): PROPS 1-20 as
@@ -164,28 +119,37 @@ contains
     type(umat_controls_t), intent(out) :: controls
     integer, intent(out) :: stat
     character(len=*), intent(out) :: message
-    integer :: i, n_azimuths
-
-    if (n > n_properties) then
-      stat = status_bad_input
-      call props_message(props, 0, message)
+    integer :: refusal
+    stat = status_bad_input
+    refusal = props_refusal(n, props, .false.)
+    if (refusal /= refused_none) then
+      call props_message(props, refusal, message)
       return
     end if
-    call props_n_to_material(min(n, n_properties_2d), props, mat, solver, controls, stat, message)
-    if (stat /= status_ok) return
-    do i = n_properties_2d + 1, n
-      if (.not. property_ok(i, props(i))) then
-        stat = status_bad_input
-        call props_message(props, 1, message)
-        return
-      end if
-    end do
-    n_azimuths = (props_n_planes_3d(n, props) - 1) / 2
-    if (n_azimuths <= 1) return
-    call interlock_azimuthal_ria(mat, n_azimuths, props(prop_theta0) * deg_to_rad, &
-                                 props(prop_thetaf) * deg_to_rad, props(prop_zeta0))
-    call interlock_material_derive(mat, stat, message)
+    call material_from_rows(n, props, mat, solver, controls, stat, message)
   end subroutine props_n_to_material_3d
+
+  !> Which check PROPS(1:n) fails (refused_*), refused_none when none: each tested on its own
+  !> (the value checks by integer comparisons, no comparison of a NaN): the count, every value
+  !> against its row, theta_f <= theta_0, and on a 2D element (`planar`) the paper's RIA. PROPS
+  !> are checked here, where they enter; material_from_rows then maps the rows.
+  pure integer function props_refusal(n, props, planar) result(refusal)
+    integer, intent(in) :: n
+    real(dp), intent(in) :: props(n)
+    logical, intent(in) :: planar
+    refusal = refused_count
+    if (n < n_required_properties .or. n > n_properties) return
+    refusal = refused_value
+    if (.not. all_properties_ok(props)) return
+    refusal = refused_angles
+    if (.not. props(prop_thetaf) <= props(prop_theta0)) return
+    refusal = refused_ria_2d
+    ! (the RIA of a 2D element is the paper's: PROPS(21), when given, must say so)
+    if (planar .and. n >= prop_ria) then
+      if (props(prop_ria) > ria_paper + 0.5_dp) return
+    end if
+    refusal = refused_none
+  end function props_refusal
 
   !> The number of planes of the RIA that an admissible PROPS(1:n) selects for a
   !> three-dimensional interface (props_n_to_material_3d): 3 for the paper's, 1 + 2 N_a for the
@@ -193,40 +157,39 @@ contains
   pure integer function props_n_planes_3d(n, props) result(n_planes)
     integer, intent(in) :: n
     real(dp), intent(in) :: props(n)
-    n_planes = 3
-    if (n < prop_ria) return
-    if (props(prop_ria) < ria_azimuthal - 0.5_dp) return
-    n_planes = 1 + 2 * nint(properties(prop_n_azimuths)%default)
-    if (n >= prop_n_azimuths) n_planes = 1 + 2 * nint(props(prop_n_azimuths))
+    real(dp) :: rows(prop_ria:prop_n_azimuths)
+    rows = property_defaults(prop_ria:prop_n_azimuths)
+    if (n >= prop_ria) rows(prop_ria:min(n, prop_n_azimuths)) = props(prop_ria:min(n, prop_n_azimuths))
+    n_planes = 1 + 2 * rows_n_azimuths(rows(prop_ria), rows(prop_n_azimuths))
   end function props_n_planes_3d
 
-  !> The message of a PROPS that props_to_material refused (`what` 0: NPROPS, 1: a value).
-  pure subroutine props_message(props, what, message)
+  !> The message of a PROPS that props_refusal refused: the check it failed, in its own terms.
+  pure subroutine props_message(props, refusal, message)
     real(dp), intent(in) :: props(:)
-    integer, intent(in) :: what
+    integer, intent(in) :: refusal
     character(len=*), intent(out) :: message
     integer :: i
     logical :: ok
-    if (what == 0) then
+    select case (refusal)
+    case (refused_count)
       call nprops_message(size(props), message)
-      return
-    end if
-    do i = 1, size(props)
-      call check_property(i, props(i), ok, message)
-      if (.not. ok) then
-        message = 'PROPS(' // format_integer(i) // '): ' // trim(message)
-        return
-      end if
-    end do
-    if (props(prop_thetaf) <= props(prop_theta0)) then
+    case (refused_value)
+      do i = 1, size(props)
+        call check_property(i, props(i), ok, message)
+        if (.not. ok) then
+          message = 'PROPS(' // format_integer(i) // '): ' // trim(message)
+          return
+        end if
+      end do
+    case (refused_angles)
+      message = "property 'thetaf_deg' must not exceed 'theta0_deg': admissible 0 <= " // &
+                'thetaf_deg <= theta0_deg'
+    case default
       message = 'PROPS(' // format_integer(prop_ria) // "): property 'ria' = " // &
                 format_real(props(prop_ria)) // ' is inadmissible with a 2D element ' // &
                 '(NTENS = 2): admissible ria = 0 (the paper''s RIA; the azimuthal RIA needs a ' // &
                 '3D element, NTENS = 3)'
-      return
-    end if
-    message = "property 'thetaf_deg' must not exceed 'theta0_deg': admissible 0 <= thetaf_deg" &
-              // ' <= theta0_deg'
+    end select
   end subroutine props_message
 
   !> The message of a PROPS of n values (n outside the admissible count).

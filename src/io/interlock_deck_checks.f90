@@ -4,7 +4,7 @@
 module interlock_deck_checks
   use interlock, only: dp, max_planes, max_azimuths, properties, check_property, format_range, format_integer, &
       format_real, is_nan_value, same_value, is_infinite_value, is_finite_bits
-  use interlock_deck_text, only: group_scan_t, probe_text, value_text, lower
+  use interlock_deck_text, only: group_scan_t, probe_text, value_text, lower, int8_text
   implicit none
   private
   public :: deck_groups, group_required, var_t, deck_vars, real_list, unset, unset_int
@@ -426,11 +426,5 @@ contains
     real(dp), intent(in) :: a(:)
     has_gaps = .not. all(is_given(a(1:count_given(a))))
   end function has_gaps
-
-  pure function int8_text(i) result(text)
-    integer(kind=8), intent(in) :: i
-    character(len=24) :: text
-    write (text, '(i0)') i
-  end function int8_text
 
 end module interlock_deck_checks

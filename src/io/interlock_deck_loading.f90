@@ -435,6 +435,8 @@ contains
       end if
     end do
     message = ''
+    ! (a sweep over n_azimuths is one over the azimuthal RIA)
+    if (ip == prop_n_azimuths) deck%rows(prop_ria) = ria_azimuthal
     deck%sweep_parameter = lower(trim(adjustl(parameter)))
     deck%sweep_property = ip
     deck%sweep_values = values(1:n)

@@ -36,13 +36,13 @@ contains
     call check_required(prop_eta, eta, message); if (len_trim(message) > 0) return
     call check_required(prop_mu, mu, message); if (len_trim(message) > 0) return
     call check_required(prop_h_n, h_n, message); if (len_trim(message) > 0) return
-    deck%sigma0_n = sigma0_n
-    deck%sigma0_t = sigma0_t
-    deck%gc = gc
-    deck%eta = eta
-    deck%mu = mu
-    deck%h_n = h_n
-    deck%prefractured = prefractured
+    deck%rows(prop_sigma0_n) = sigma0_n
+    deck%rows(prop_sigma0_t) = sigma0_t
+    deck%rows(prop_gc) = gc
+    deck%rows(prop_eta) = eta
+    deck%rows(prop_mu) = mu
+    deck%rows(prop_h_n) = h_n
+    deck%rows(prop_prefractured) = merge(1.0_dp, 0.0_dp, prefractured)
   end procedure read_interface
 
   module procedure read_microplanes
@@ -93,7 +93,8 @@ contains
                   ' (1 + 2 n_azimuths planes)'
         return
       end if
-      deck%n_azimuths = n_azimuths
+      deck%rows(prop_ria) = ria_azimuthal
+      deck%rows(prop_n_azimuths) = n_azimuths
       deck%n_components = 3
     end if
     if (n_planes == unset_int .and. count_given(phi_deg) > 0) then
@@ -125,12 +126,9 @@ contains
                   value_str(theta0_deg(1)) // ' [deg]'
         return
       end if
-      deck%theta0_deg = 0.0_dp
-      deck%thetaf_deg = 0.0_dp
-      deck%zeta0 = huge(1.0_dp)
-      deck%theta0_deg(1) = theta0_deg(1)
-      deck%thetaf_deg(1) = thetaf_deg(1)
-      deck%zeta0(1) = zeta0(1)
+      deck%rows(prop_theta0) = theta0_deg(1)
+      deck%rows(prop_thetaf) = thetaf_deg(1)
+      deck%rows(prop_zeta0) = zeta0(1)
     else
       deck%paper_ria = .false.
       if (n_planes < 1 .or. n_planes > max_planes) then
@@ -213,6 +211,9 @@ contains
       deck%theta0_deg(1:n) = theta0_deg(1:n)
       deck%thetaf_deg(1:n) = thetaf_deg(1:n)
       deck%zeta0(1:n) = zeta0(1:n)
+      deck%rows(prop_theta0) = abs(theta0_deg(1))
+      deck%rows(prop_thetaf) = abs(thetaf_deg(1))
+      deck%rows(prop_zeta0) = zeta0(1)
     end if
   end procedure read_microplanes
 
@@ -239,7 +240,8 @@ contains
       call nml_error(3, text, scan, kp, iomsg, iomsg2, message)
       return
     end if
-    deck%effect = [damage, friction, interlocking, finite_depth, wear]
+    deck%rows(prop_effect_damage:prop_effect_wear) = &
+      merge(1.0_dp, 0.0_dp, [damage, friction, interlocking, finite_depth, wear])
   end procedure read_effects
 
   module procedure read_initial_state

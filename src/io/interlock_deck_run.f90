@@ -32,11 +32,11 @@ contains
     end if
     select case (lower(trim(adjustl(scheme))))
     case ('explicit')
-      deck%solver%scheme = scheme_explicit
+      deck%rows(prop_scheme) = scheme_explicit
     case ('implicit')
-      deck%solver%scheme = scheme_implicit
+      deck%rows(prop_scheme) = scheme_implicit
     case ('trapezoidal')
-      deck%solver%scheme = scheme_trapezoidal
+      deck%rows(prop_scheme) = scheme_trapezoidal
     case default
       message = "scheme = '" // trim(scheme) // "' is inadmissible: admissible 'explicit', " // &
                 "'implicit' or 'trapezoidal'"
@@ -44,7 +44,7 @@ contains
     end select
     call check_value(prop_substep_tol, substep_tol, message)
     if (len_trim(message) > 0) return
-    deck%solver%substep_tol = substep_tol
+    deck%rows(prop_substep_tol) = substep_tol
     ok = .false.
     if (.not. is_nan_value(newton_tol)) ok = newton_tol >= 1.0e-16_dp .and. newton_tol <= 1.0e-2_dp
     if (.not. ok) then

@@ -3,13 +3,17 @@
 !> `!` comments). This lets the reader reject what a namelist read would silently accept or
 !> report without naming the variable: text outside every group, unknown or repeated groups,
 !> unclosed groups, unknown or repeated variables; and it lets it name the variable whose value
-!> cannot be read, by re-reading each assignment alone (`probe_text`).
+!> cannot be read, by re-reading each assignment alone (`probe_text`). Before all of it the file
+!> is loaded as text and checked as bytes (`load_text`: its size, control bytes, line ends).
 module interlock_deck_text
-  use interlock, only: format_integer
+  use interlock, only: format_integer, status_ok, status_bad_input
+  use interlock_files, only: path_kind, path_absent, path_folder, path_other
   implicit none
   private
   public :: group_scan_t, assignment_t, scan_deck, probe_text, value_text, &
-            is_name_char, lower
+            is_name_char, lower, load_text, int8_text, max_deck_bytes
+
+  integer, parameter :: max_deck_bytes = 4 * 1024 * 1024   !< the size of a deck
 
   integer, parameter :: name_len = 64
 
@@ -372,5 +376,111 @@ contains
       j = j + 1
     end do
   end function group_name_end
+
+  !> The whole file as text (stream read): it must exist, be non-empty, at most
+  !> max_deck_bytes long, and hold no control bytes but tab, line feed, carriage return, form feed.
+  subroutine load_text(path, text, stat, message)
+    character(len=*), intent(in) :: path
+    character(len=:), allocatable, intent(out) :: text
+    integer, intent(out) :: stat
+    character(len=*), intent(out) :: message
+    logical :: exists
+    integer :: u, ios, i, c, line
+    logical :: ok_cr
+    integer(kind=8) :: nbytes
+    character(len=512) :: iomsg
+
+    stat = status_bad_input
+    message = ''
+    text = ''
+    select case (path_kind(path))
+    case (path_absent)
+      message = path // ': no such deck file'
+      return
+    case (path_folder)
+      message = path // ': the deck is a folder, not a file'
+      return
+    case (path_other)
+      message = path // ': the deck is not a regular file (a FIFO, a device such as ' // &
+                '/dev/zero, or a socket): give a deck file'
+      return
+    end select
+    inquire (file=path, exist=exists, size=nbytes)
+    if (.not. exists) then
+      message = path // ': no such deck file'
+      return
+    end if
+    if (nbytes == 0) then
+      message = path // ': the deck is empty'
+      return
+    end if
+    if (nbytes < 0) then
+      message = path // ': the deck is not a regular file'
+      return
+    end if
+    if (nbytes > max_deck_bytes) then
+      message = path // ': the deck has ' // trim(int8_text(nbytes)) // ' bytes: admissible ' // &
+                'at most ' // format_integer(max_deck_bytes) // ' bytes (4 MiB)'
+      return
+    end if
+    deallocate (text)
+    allocate (character(len=int(nbytes)) :: text)
+    open (newunit=u, file=path, status='old', action='read', access='stream', &
+          form='unformatted', iostat=ios, iomsg=iomsg)
+    if (ios /= 0) then
+      message = path // ': cannot open the deck: ' // trim(iomsg)
+      return
+    end if
+    read (u, iostat=ios, iomsg=iomsg) text
+    close (u)
+    if (ios /= 0) then
+      message = path // ': cannot read the deck: ' // trim(iomsg)
+      return
+    end if
+    ! A UTF-8 byte order mark (EF BB BF, written by some Windows editors) marks the encoding;
+    ! it is not text: dropped.
+    if (len(text) >= 3) then
+      if (text(1:3) == char(239) // char(187) // char(191)) text = text(4:)
+    end if
+    if (len(text) == 0) then
+      message = path // ': the deck is empty (only a UTF-8 byte order mark)'
+      return
+    end if
+    if (len(text) >= 2) then
+      c = ichar(text(1:1)) + 256 * ichar(text(2:2))
+      if (c == 255 + 256 * 254 .or. c == 254 + 256 * 255) then
+        message = path // ': the deck is UTF-16 encoded (a byte order mark ' // &
+                  'and NUL bytes): write it as ASCII or UTF-8 text'
+        return
+      end if
+    end if
+    line = 1
+    do i = 1, len(text)
+      c = iachar(text(i:i))
+      if (c == 10) line = line + 1
+      if (c == 13) then
+        ok_cr = i < len(text)
+        if (ok_cr) ok_cr = text(i + 1:i + 1) == achar(10)
+        if (.not. ok_cr) then
+          message = path // ': line ' // format_integer(line) // ': a carriage return (code 13) ' // &
+                    'without a line feed: line ends must be LF (Unix) or CR LF (Windows)'
+          return
+        end if
+      end if
+      if (c < 32 .and. c /= 9 .and. c /= 10 .and. c /= 13 .and. c /= 12 .or. c == 127) then
+        message = path // ': line ' // format_integer(line) // ': byte ' // format_integer(i) // &
+                  ' is a control character (code ' // format_integer(c) // &
+                  '): the deck must be a text file (a Fortran namelist)'
+        return
+      end if
+    end do
+    stat = status_ok
+  end subroutine load_text
+
+  pure function int8_text(i) result(text)
+    integer(kind=8), intent(in) :: i
+    character(len=24) :: text
+    write (text, '(i0)') i
+  end function int8_text
 
 end module interlock_deck_text

@@ -201,11 +201,12 @@ contains
     real(dp), intent(in) :: theta0, thetaf, zeta0
     integer :: j, k
     real(dp) :: g
-    call interlock_paper_ria(mat, theta0, thetaf, zeta0)
-    if (n_azimuths <= 1) return
-    g = 1.0_dp / (3.0_dp * n_azimuths)
-    mat%gamma_hat(1) = g
-    mat%gamma_hat(3) = g
+    g = 1.0_dp / (3.0_dp * max(n_azimuths, 1))
+    mat%gamma_hat(1:3) = [g, 1.0_dp / 3.0_dp, g]
+    mat%theta0(1:3) = [-theta0, 0.0_dp, theta0]
+    mat%thetaf(1:3) = [-thetaf, 0.0_dp, thetaf]
+    mat%zeta0(1:3) = [zeta0, huge(1.0_dp), zeta0]
+    mat%phi(1:3) = 0.0_dp
     k = 3
     do j = 1, n_azimuths - 1
       mat%gamma_hat(k + 1:k + 2) = g

@@ -11,6 +11,7 @@ program interlock_fit
       scheme_trapezoidal
   use interlock_mixed_control, only: history_t
   use interlock_history_output, only: output_check_target
+  use interlock_deck, only: deck_scheme
   use interlock_fit_deck, only: fit_t, read_fit_deck, join_selected, output_names, folder_of
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use interlock_files, only: remove_file, rename_file, unguard_file, hold_signals
@@ -158,7 +159,7 @@ contains
       disc%note = 'not computed (no statistics)'
       rc = 2
     end if
-    disc%order = scheme_order(fit%deck%solver%scheme, fit%deck%n_components, fit%deck%extrapolate)
+    disc%order = scheme_order(deck_scheme(fit%deck), fit%deck%n_components, fit%deck%extrapolate)
     at_bound = bound_state(fit, values)
 
     ! the curves at the fitted values (the residuals there were computed: the history runs)
@@ -421,7 +422,7 @@ contains
   function scheme_text(fit) result(text)
     type(fit_t), intent(in) :: fit
     character(len=:), allocatable :: text
-    text = 'the ' // trim(scheme_name(fit%deck%solver%scheme)) // ' scheme'
+    text = 'the ' // trim(scheme_name(deck_scheme(fit%deck))) // ' scheme'
     if (fit%deck%extrapolate) text = text // ', extrapolated,'
     text = text // ' in ' // format_integer(fit%deck%n_components) // 'D'
   end function scheme_text
@@ -438,9 +439,9 @@ contains
            'x as large)'
     associate (d => fit%deck)
       q = scheme_order(scheme_trapezoidal, d%n_components, d%extrapolate)
-      if (d%solver%scheme /= scheme_trapezoidal .and. q > order) &
+      if (deck_scheme(d) /= scheme_trapezoidal .and. q > order) &
         text = text // ', or scheme = ''trapezoidal'' (order ' // format_integer(q) // ' here)'
-      q = scheme_order(d%solver%scheme, d%n_components, .true.)
+      q = scheme_order(deck_scheme(d), d%n_components, .true.)
       if (.not. d%extrapolate .and. q > order) &
         text = text // ', or extrapolate = .true. (order ' // format_integer(q) // ' here)'
     end associate
