@@ -7,9 +7,11 @@
 !> the energy bookkeeping need (the slip in the dip direction, the frictional work, the damage
 !> dissipation, the stored energy). Every derivative is with respect to the local separation
 !> at a fixed start state (the caller chains the frame and the angle); at a kink the side SPEC
-!> section 6 and D13 name: s_kn = 0 is closed for every derivative of friction and wear, and
-!> open for damage (<s_kn>_+ has slope 0 there). Every operation on a value is the one of the
-!> 2D law (interlock_plane_law) in the same order where the strike components vanish.
+!> section 6 and D13 name: s_kn = 0 is closed for every derivative (<s_kn>_+ has slope 0 there),
+!> and so is a positive s_kn within the round-off of its rotation (contact_round_off: a path in
+!> the plane's surface gives s_kn = 0 or +-1e-17 from one step to the next, and a chain over
+!> such steps must not mix the sides). Every operation on a value is the one of the 2D law
+!> (interlock_plane_law) in the same order where the strike components vanish.
 module interlock_plane_law_3d
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t
@@ -17,7 +19,7 @@ module interlock_plane_law_3d
   implicit none
   private
   public :: plane_start_3d_t, plane_law_3d_t, plane_law_3d, slides_at_start, &
-            local_separation, to_macro
+            local_separation, contact_round_off, to_macro
 
   !> One plane's state at the start of a step (SPEC section 9: D, beta, sf(2), zeta, theta,
   !> tauf(2); vectors in the plane's (e, q) frame).
@@ -80,6 +82,14 @@ contains
     sl(3) = -(sp * s(2)) + cp * s(3)
   end function local_separation
 
+  !> The round-off of s_kn = cos(theta) s_N + sin(theta) (cos(phi) s_T1 + sin(phi) s_T2), 8 eps
+  !> times the magnitudes summed: an s_kn up to it is at the tie s_kn = 0 for the derivatives
+  !> (SPEC D13; its values are kept).
+  pure real(dp) function contact_round_off(cp, sp, c, sn, s) result(tie)
+    real(dp), intent(in) :: cp, sp, c, sn, s(3)
+    tie = 8.0_dp * epsilon(1.0_dp) * (abs(c * s(1)) + abs(sn * (cp * s(2) + sp * s(3))))
+  end function contact_round_off
+
   !> A local vector v (components along m, e, q) in the macro frame (n, t1, t2).
   pure function to_macro(cp, sp, c, sn, v) result(w)
     real(dp), intent(in) :: cp, sp, c, sn, v(3)
@@ -92,14 +102,16 @@ contains
   end function to_macro
 
   !> A plane at the local separation sl from the start state o (SPEC section 9, one step,
-  !> points 3-5 and the energies). mu_p_o: the start state's mu p (interlock_plane_law's
+  !> points 3-5 and the energies); s_kn up to tie (contact_round_off; absent: 0) is closed for
+  !> every derivative. mu_p_o: the start state's mu p (interlock_plane_law's
   !> start_yield with the start separation's dip component) where the
   !> slip direction follows D14's mean-direction rule (the trapezoidal scheme), 0 for radial
   !> return alone. `drivers`: the derivatives of the wear drivers are wanted (a scheme whose
   !> angle is coupled to the end of the step, on a plane that wears).
-  pure subroutine plane_law_3d(mat, sl, o, mu_p_o, drivers, chain, p)
+  pure subroutine plane_law_3d(mat, sl, o, mu_p_o, drivers, chain, p, tie)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: sl(3), mu_p_o
+    real(dp), intent(in), optional :: tie
     type(plane_start_3d_t), intent(in) :: o
     logical, intent(in) :: drivers, chain
     type(plane_law_3d_t), intent(out) :: p
@@ -108,13 +120,15 @@ contains
                 atau, g_atau(3), share, g_share(3), x, g_x(3), kpos, kts, tauf_norm, work, &
                 phi_nn(2), phi_slip_norm, phi_x
     integer :: i
-    logical :: closed_at_zero, mean_direction, grows
+    logical :: closed_at_zero, mean_direction, grows, open
 
     p%sl = sl
+    open = sl(1) > 0.0_dp
+    if (present(tie)) open = sl(1) > tie
 
     ! Damage, isotropic in the microplane: beta_eq from <s_kn>_+ and |s_kt| (interlock_damage).
     pos = max(0.0_dp, sl(1))
-    dpos = merge(1.0_dp, 0.0_dp, sl(1) > 0.0_dp)
+    dpos = merge(1.0_dp, 0.0_dp, open)
     p%beta = o%beta
     p%g_dmg = 0.0_dp
     p%g_beta = 0.0_dp
@@ -156,13 +170,13 @@ contains
     p%dmg_kept = mat%use_damage .and. p%beta_kept
 
     ! Friction on the damaged part, to |tau_f| = mu p (p = K_n <-s_kn>_+); free (sf = s_kt,
-    ! tau_f = 0) on an open plane or without friction. At s_kn = 0 exactly mu p has the closed
+    ! tau_f = 0) on an open plane or without friction. At the tie s_kn = 0 mu p has the closed
     ! side's derivative (SPEC D13).
     mu_p = 0.0_dp
     g_mu = 0.0_dp
     if (mat%use_friction) then
       mu_p = -mat%mu_eff * mat%kn * min(sl(1), 0.0_dp)
-      if (.not. sl(1) > 0.0_dp) g_mu(1) = -mat%mu_eff * mat%kn
+      if (.not. open) g_mu(1) = -mat%mu_eff * mat%kn
     end if
     closed_at_zero = .false.
     mean_direction = .false.
@@ -260,8 +274,8 @@ contains
         p%g_slip_dip = sign_of(dsf(1)) * e_t(:, 1)
         g_slip_norm = norm_gradient(dsf, slip_norm, e_t)
       end if
-      if (mat%use_friction .and. .not. sl(1) > 0.0_dp) then
-        ! s_kn = 0 exactly: in contact for every derivative (SPEC D13). The values are the
+      if (mat%use_friction .and. .not. open) then
+        ! s_kn = 0 (the tie): in contact for every derivative (SPEC D13). The values are the
         ! free plane's, the same as the slide's with mu p = 0 (tau_f = 0, sf = s_kt); the
         ! derivatives are the slide's: d tau_f = d(mu p) n, the slip shortened by d(mu p) / K_t
         ! along n. At the cone's apex (|tau_tr| = 0) a kink where they stay 0.

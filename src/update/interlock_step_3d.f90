@@ -20,7 +20,7 @@ module interlock_step_3d
   use interlock_plane_law, only: plane_frame, wear_weights, start_yield, trapezoidal_weight, &
       wear_angle_error, add_wear_error, wear_error_of
   use interlock_plane_law_3d, only: plane_start_3d_t, plane_law_3d_t, plane_law_3d, &
-      local_separation, to_macro
+      local_separation, contact_round_off, to_macro
   implicit none
   private
   public :: plane_chain_t, step_3d, chain_bounded
@@ -262,12 +262,14 @@ contains
         iterations = rt%iterations
         ok = rt%ok
         if (.not. ok) return
-        if (.not. drv > 0.0_dp) then
+        if (.not. (drv > 0.0_dp .or. abs(p%tauf(1)) + abs(p%tauf(2)) > 0.0_dp)) then
           ! The root is where the plane just loses contact (very fast wear turns it until
-          ! then), within round-off of that kink, and the last point is on the open side: take
-          ! the closed side's last point, rt%lo (F < 0 there, so some work: the plane is in
-          ! contact), a few ulps from the root, so that the angle's derivative and the
-          ! traction's come from the same side (mixed, they are neither one-sided derivative).
+          ! then), within round-off of that kink, and the last point is on the open side (no
+          ! friction traction; a plane that sticks there has its root where it switches to
+          ! sliding, and the last point is that root): take the closed side's last point, rt%lo
+          ! (F < 0 there, so some work: the plane is in contact), a few ulps from the root, so
+          ! that the angle's derivative and the traction's come from the same side (mixed,
+          ! they are neither one-sided derivative).
           rt%x = rt%lo
           call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, &
                           thp)
@@ -353,8 +355,10 @@ contains
            jo%tauf(:, 1)
     else if (trapezoidal) then
       dsn_o = 0.0_dp
+      ! (closed at the tie s_kn = 0, SPEC D13, as the plane law)
       x_o = -(c_o * s_o(1) + sn_o * (cp * s_o(2) + sp * s_o(3)))
-      if (s_o(1) * mat%inv_h_n < 1.0_dp .and. .not. 0.0_dp > x_o) &
+      if (s_o(1) * mat%inv_h_n < 1.0_dp .and. &
+          .not. -contact_round_off(cp, sp, c_o, sn_o, s_o) > x_o) &
         dsn_o = -(mat%mu_eff * mat%kn) * (h_start * [c_o, sn_o * cp, sn_o * sp] + &
                  (-sn_o * s_o(1) + c_o * (cp * s_o(2) + sp * s_o(3))) * jo%theta)
       dg = 0.5_dp * (jo%dmg * mu_p_o + o%dmg * dsn_o)
@@ -439,7 +443,8 @@ contains
     real(dp), intent(out) :: c, sn, drv, g_drv(3)
     type(plane_law_3d_t), intent(out) :: p
     call plane_frame(mat, k, theta, c, sn)
-    call plane_law_3d(mat, local_separation(cp, sp, c, sn, s), o, mu_p_o, drivers, chain, p)
+    call plane_law_3d(mat, local_separation(cp, sp, c, sn, s), o, mu_p_o, drivers, chain, p, &
+                      contact_round_off(cp, sp, c, sn, s))
     g_drv = 0.0_dp
     if (trapezoidal) then
       drv = a_end * p%wear_end + g_slip * p%wear_start
