@@ -19,8 +19,8 @@ module interlock_step_3d
       wear_root_update
   use interlock_plane_law, only: plane_frame, wear_weights, start_yield, trapezoidal_weight, &
       wear_angle_error, add_wear_error, wear_error_of
-  use interlock_plane_law_3d, only: plane_start_3d_t, plane_law_3d_t, plane_law_3d, &
-      local_separation, contact_round_off, to_macro
+  use interlock_plane_law_3d, only: plane_start_3d_t, plane_law_3d_t, plane_law_3d_parts, &
+      plane_traction_3d, local_separation, contact_round_off, to_macro
   implicit none
   private
   public :: plane_chain_t, step_3d, chain_bounded
@@ -240,8 +240,9 @@ contains
 
     theta = o%theta
     zeta = o%zeta
+    ! (the traction with the law where the angle is not solved for)
     call evaluate(mat, k, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, drivers, chain, &
-                  theta, c, sn, p, drv, g_drv)
+                  .not. (coupled .and. wears), theta, c, sn, p, drv, g_drv)
     if (coupled .and. wears) then
       ! F(zeta) = zeta - zeta_o - G(theta(zeta)); at zeta_o the stored angle and its slope, no
       ! exponential.
@@ -253,7 +254,7 @@ contains
           call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, &
                           thp)
           call evaluate(mat, k, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, .true., chain, &
-                        theta, c, sn, p, drv, g_drv)
+                        .false., theta, c, sn, p, drv, g_drv)
           fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
           call wear_root_update(rt, rt%x - o%zeta - drv, fp, solver%newton_tol, &
                                 solver%newton_max_iterations)
@@ -274,7 +275,7 @@ contains
           call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, &
                           thp)
           call evaluate(mat, k, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, .true., chain, &
-                        theta, c, sn, p, drv, g_drv)
+                        .false., theta, c, sn, p, drv, g_drv)
           fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
         end if
         zeta = rt%x
@@ -288,6 +289,9 @@ contains
                                            mat%inv_zeta0(k), zeta, theta, thp)
       end if
     end if
+    ! the traction, its derivative and the energies at the wear equation's root (not at its
+    ! iterates)
+    if (coupled .and. wears) call plane_traction_3d(mat, o, chain, p)
     call rotated(cp, sp, c, sn, p, sig_k, k_k)
     if (wears .and. (coupled .or. chain .or. estimate)) then
       ! d sig_k / d theta at fixed s = sigma_kn e - sigma_kt1 m + R^T K_loc d sl / d theta
@@ -429,22 +433,24 @@ contains
     end do
   end subroutine chain_plane
 
-  !> The plane law at angle theta (its frame c, sn) and the scheme's wear driver G with
+  !> The plane law at angle theta (its frame c, sn), with its traction, tangent and energies if
+  !> `traction` (else plane_traction_3d gives them), and the scheme's wear driver G with
   !> d G / d sl: a_end D |tau_f,1| |d sf_1| + g_slip |d sf_1| (explicit, implicit), a_end
   !> wear_end + g_slip wear_start (trapezoidal: the dip component of D_o mu p_o n at the start);
   !> d G / d sl only with `drivers` (else 0).
   pure subroutine evaluate(mat, k, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, drivers, &
-                           chain, theta, c, sn, p, drv, g_drv)
+                           chain, traction, theta, c, sn, p, drv, g_drv)
     type(interlock_material_t), intent(in) :: mat
     integer, intent(in) :: k
     real(dp), intent(in) :: cp, sp, s(3), mu_p_o, a_end, g_slip, theta
     type(plane_start_3d_t), intent(in) :: o
-    logical, intent(in) :: trapezoidal, drivers, chain
+    logical, intent(in) :: trapezoidal, drivers, chain, traction
     real(dp), intent(out) :: c, sn, drv, g_drv(3)
     type(plane_law_3d_t), intent(out) :: p
     call plane_frame(mat, k, theta, c, sn)
-    call plane_law_3d(mat, local_separation(cp, sp, c, sn, s), o, mu_p_o, drivers, chain, p, &
-                      contact_round_off(cp, sp, c, sn, s))
+    call plane_law_3d_parts(mat, local_separation(cp, sp, c, sn, s), &
+                            contact_round_off(cp, sp, c, sn, s), o, mu_p_o, drivers, chain, &
+                            traction, p)
     g_drv = 0.0_dp
     if (trapezoidal) then
       drv = a_end * p%wear_end + g_slip * p%wear_start
