@@ -223,10 +223,9 @@ contains
     ! start separation); mu p_o, the start state's friction bound, also decides whether the
     ! plane slides at the start (D14's mean-direction rule), and the trapezoidal start weight
     ! D_o mu p_o / 2 is the error estimate's reference.
+    ! (the start angle's frame: also the frame of the law's first evaluation)
     dip_o = cp * s_o(2) + sp * s_o(3)
-    c_o = 1.0_dp
-    sn_o = 0.0_dp
-    if (trapezoidal .or. estimate) call plane_frame(mat, k, o%theta, c_o, sn_o)
+    call plane_frame(mat, k, o%theta, c_o, sn_o)
     call wear_weights(mat, solver%scheme, o%dmg, o%tauf(1), c_o, sn_o, s_o(1), dip_o, a_w, &
                       g_slip)
     mu_p_o = 0.0_dp
@@ -240,9 +239,11 @@ contains
 
     theta = o%theta
     zeta = o%zeta
+    c = c_o
+    sn = sn_o
     ! (the traction with the law where the angle is not solved for)
-    call evaluate(mat, k, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, drivers, chain, &
-                  .not. (coupled .and. wears), theta, c, sn, p, drv, g_drv)
+    call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, drivers, chain, &
+                  .not. (coupled .and. wears), c, sn, p, drv, g_drv)
     if (coupled .and. wears) then
       ! F(zeta) = zeta - zeta_o - G(theta(zeta)); at zeta_o the stored angle and its slope, no
       ! exponential.
@@ -253,8 +254,9 @@ contains
         do
           call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, &
                           thp)
-          call evaluate(mat, k, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, .true., chain, &
-                        .false., theta, c, sn, p, drv, g_drv)
+          call plane_frame(mat, k, theta, c, sn)
+          call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, .true., chain, &
+                        .false., c, sn, p, drv, g_drv)
           fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
           call wear_root_update(rt, rt%x - o%zeta - drv, fp, solver%newton_tol, &
                                 solver%newton_max_iterations)
@@ -274,8 +276,9 @@ contains
           rt%x = rt%lo
           call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, &
                           thp)
-          call evaluate(mat, k, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, .true., chain, &
-                        .false., theta, c, sn, p, drv, g_drv)
+          call plane_frame(mat, k, theta, c, sn)
+          call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, .true., chain, &
+                        .false., c, sn, p, drv, g_drv)
           fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
         end if
         zeta = rt%x
@@ -433,21 +436,19 @@ contains
     end do
   end subroutine chain_plane
 
-  !> The plane law at angle theta (its frame c, sn), with its traction, tangent and energies if
+  !> The plane law at the angle of frame (c, sn), with its traction, tangent and energies if
   !> `traction` (else plane_traction_3d gives them), and the scheme's wear driver G with
   !> d G / d sl: a_end D |tau_f,1| |d sf_1| + g_slip |d sf_1| (explicit, implicit), a_end
   !> wear_end + g_slip wear_start (trapezoidal: the dip component of D_o mu p_o n at the start);
   !> d G / d sl only with `drivers` (else 0).
-  pure subroutine evaluate(mat, k, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, drivers, &
-                           chain, traction, theta, c, sn, p, drv, g_drv)
+  pure subroutine evaluate(mat, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, drivers, &
+                           chain, traction, c, sn, p, drv, g_drv)
     type(interlock_material_t), intent(in) :: mat
-    integer, intent(in) :: k
-    real(dp), intent(in) :: cp, sp, s(3), mu_p_o, a_end, g_slip, theta
+    real(dp), intent(in) :: cp, sp, s(3), mu_p_o, a_end, g_slip, c, sn
     type(plane_start_3d_t), intent(in) :: o
     logical, intent(in) :: trapezoidal, drivers, chain, traction
-    real(dp), intent(out) :: c, sn, drv, g_drv(3)
+    real(dp), intent(out) :: drv, g_drv(3)
     type(plane_law_3d_t), intent(out) :: p
-    call plane_frame(mat, k, theta, c, sn)
     call plane_law_3d_parts(mat, local_separation(cp, sp, c, sn, s), &
                             contact_round_off(cp, sp, c, sn, s), o, mu_p_o, drivers, chain, &
                             traction, p)
