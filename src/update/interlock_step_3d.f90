@@ -480,21 +480,40 @@ contains
   end function frame_rows
 
   !> The plane's traction in the macro frame and its derivative at fixed angle, R^T K_loc R,
-  !> with R = d sl / d s (rows m, e, q): each row of K_loc R is R^T times K_loc's row, and each
-  !> column of R^T (K_loc R) R^T times that column, both by to_macro.
+  !> with R = d sl / d s (rows m, e, q) = B A: B turns by theta in (n, d) (to_macro's first
+  !> rotation), A by the azimuth in (t1, t2); each turns both sides in one plane of the frame,
+  !> the columns (B^T K_loc), then the rows ((B^T K_loc) B); the azimuth's only where phi /= 0.
   pure subroutine rotated(cp, sp, c, sn, p, sig_k, k_k)
     real(dp), intent(in) :: cp, sp, c, sn
     type(plane_law_3d_t), intent(in) :: p
     real(dp), intent(out) :: sig_k(3), k_k(3, 3)
-    real(dp) :: a(3, 3)
-    integer :: i
     sig_k = to_macro(cp, sp, c, sn, p%sig_loc)
-    do i = 1, 3
-      a(i, :) = to_macro(cp, sp, c, sn, [p%k_loc(i, 1), p%k_loc(i, 2), p%k_loc(i, 3)])
-    end do
-    do i = 1, 3
-      k_k(:, i) = to_macro(cp, sp, c, sn, a(:, i))
-    end do
+    k_k = p%k_loc
+    call turn_both_sides(c, sn, 1, k_k)
+    if (sp < 0.0_dp .or. sp > 0.0_dp .or. cp < 1.0_dp) call turn_both_sides(cp, sp, 2, k_k)
   end subroutine rotated
+
+  !> a = T^T a T for the rotation T by (cs, sn) = (cos, sin) of an angle in the plane of the
+  !> indices i and i + 1: each column's pair (v_i, v_i+1) -> (cs v_i - sn v_i+1, sn v_i +
+  !> cs v_i+1), then each row's.
+  pure subroutine turn_both_sides(cs, sn, i, a)
+    real(dp), intent(in) :: cs, sn
+    integer, intent(in) :: i
+    real(dp), intent(inout) :: a(3, 3)
+    real(dp) :: x, y
+    integer :: j
+    do j = 1, 3
+      x = a(i, j)
+      y = a(i + 1, j)
+      a(i, j) = cs * x - sn * y
+      a(i + 1, j) = sn * x + cs * y
+    end do
+    do j = 1, 3
+      x = a(j, i)
+      y = a(j, i + 1)
+      a(j, i) = cs * x - sn * y
+      a(j, i + 1) = sn * x + cs * y
+    end do
+  end subroutine turn_both_sides
 
 end module interlock_step_3d
