@@ -7,17 +7,19 @@
 !> the energy bookkeeping need (the slip in the dip direction, the frictional work, the damage
 !> dissipation, the stored energy). Every derivative is with respect to the local separation
 !> at a fixed start state (the caller chains the frame and the angle); at a kink the side SPEC
-!> section 6 and D13 name: s_kn = 0 is closed for every derivative of friction and wear, and
-!> open for damage (<s_kn>_+ has slope 0 there). Every operation on a value is the one of the
-!> 2D law (interlock_plane_law) in the same order where the strike components vanish.
+!> section 6 and D13 name: s_kn = 0 is closed for every derivative (<s_kn>_+ has slope 0 there),
+!> and so is a positive s_kn within the round-off of its rotation (contact_round_off: a path in
+!> the plane's surface gives s_kn = 0 or +-1e-17 from one step to the next, and a chain over
+!> such steps must not mix the sides). Every operation on a value is the one of the 2D law
+!> (interlock_plane_law) in the same order where the strike components vanish.
 module interlock_plane_law_3d
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t
   use interlock_damage, only: damage_growth
   implicit none
   private
-  public :: plane_start_3d_t, plane_law_3d_t, plane_law_3d, slides_at_start, &
-            local_separation, to_macro
+  public :: plane_start_3d_t, plane_law_3d_t, plane_law_3d, plane_law_3d_parts, &
+            plane_traction_3d, slides_at_start, local_separation, contact_round_off, to_macro
 
   !> One plane's state at the start of a step (SPEC section 9: D, beta, sf(2), zeta, theta,
   !> tauf(2); vectors in the plane's (e, q) frame).
@@ -56,6 +58,9 @@ module interlock_plane_law_3d
     real(dp) :: wear_start, wear_end
     !> their derivatives, where the caller asks for them (`drivers`)
     real(dp) :: g_slip_dip(3), g_wfric_dip(3), g_wear_start(3), g_wear_end(3)
+    real(dp) :: pos, dpos    !< <s_kn>_+ and its slope (0 at the tie)
+    real(dp) :: slip_norm    !< |d sf|, the slip of the step [mm]
+    logical :: dmg_grows     !< D grows below 1 (g_dmg applies)
     real(dp) :: wfric   !< frictional work on the damaged part, D |tau_f| |d sf| [N/mm]
     real(dp) :: wdmg    !< energy dissipated by damage in the step [N/mm]
     real(dp) :: psi     !< stored energy at the end of the step [N/mm]
@@ -80,6 +85,14 @@ contains
     sl(3) = -(sp * s(2)) + cp * s(3)
   end function local_separation
 
+  !> The round-off of s_kn = cos(theta) s_N + sin(theta) (cos(phi) s_T1 + sin(phi) s_T2), 8 eps
+  !> times the magnitudes summed: an s_kn up to it is at the tie s_kn = 0 for the derivatives
+  !> (SPEC D13; its values are kept).
+  pure real(dp) function contact_round_off(cp, sp, c, sn, s) result(tie)
+    real(dp), intent(in) :: cp, sp, c, sn, s(3)
+    tie = 8.0_dp * epsilon(1.0_dp) * (abs(c * s(1)) + abs(sn * (cp * s(2) + sp * s(3))))
+  end function contact_round_off
+
   !> A local vector v (components along m, e, q) in the macro frame (n, t1, t2).
   pure function to_macro(cp, sp, c, sn, v) result(w)
     real(dp), intent(in) :: cp, sp, c, sn, v(3)
@@ -92,29 +105,47 @@ contains
   end function to_macro
 
   !> A plane at the local separation sl from the start state o (SPEC section 9, one step,
-  !> points 3-5 and the energies). mu_p_o: the start state's mu p (interlock_plane_law's
-  !> start_yield with the start separation's dip component) where the
-  !> slip direction follows D14's mean-direction rule (the trapezoidal scheme), 0 for radial
-  !> return alone. `drivers`: the derivatives of the wear drivers are wanted (a scheme whose
-  !> angle is coupled to the end of the step, on a plane that wears).
-  pure subroutine plane_law_3d(mat, sl, o, mu_p_o, drivers, chain, p)
+  !> points 3-5 and the energies), plane_law_3d_parts with its traction; s_kn up to tie
+  !> (absent: 0) is closed for every derivative.
+  pure subroutine plane_law_3d(mat, sl, o, mu_p_o, drivers, chain, p, tie)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: sl(3), mu_p_o
+    real(dp), intent(in), optional :: tie
     type(plane_start_3d_t), intent(in) :: o
     logical, intent(in) :: drivers, chain
     type(plane_law_3d_t), intent(out) :: p
+    if (present(tie)) then
+      call plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, .true., p)
+    else
+      call plane_law_3d_parts(mat, sl, 0.0_dp, o, mu_p_o, drivers, chain, .true., p)
+    end if
+  end subroutine plane_law_3d
+
+  !> plane_law_3d: s_kn up to tie (contact_round_off) is closed for every derivative.
+  !> `traction` false: damage, friction and the wear drivers alone (what a wear equation's
+  !> iteration needs), plane_traction_3d gives the rest. mu_p_o: the start state's mu p
+  !> (interlock_plane_law's start_yield with the start separation's dip component) where the
+  !> slip direction follows D14's mean-direction rule (the trapezoidal scheme), 0 for radial
+  !> return alone. `drivers`: the derivatives of the wear drivers are wanted (a scheme whose
+  !> angle is coupled to the end of the step, on a plane that wears).
+  pure subroutine plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, traction, p)
+    type(interlock_material_t), intent(in) :: mat
+    real(dp), intent(in) :: sl(3), tie, mu_p_o
+    type(plane_start_3d_t), intent(in) :: o
+    logical, intent(in) :: drivers, chain, traction
+    type(plane_law_3d_t), intent(out) :: p
     real(dp) :: pos, dpos, tn, gd_n, gd_t, mu_p, g_mu(3), tr(2), trn, nv(2), g_nv(3, 2), &
                 n_o(2), n_new(2), g_nn(3, 2), dsf(2), g_dsf(3, 2), slip_norm, g_slip_norm(3), &
-                atau, g_atau(3), share, g_share(3), x, g_x(3), kpos, kts, tauf_norm, work, &
-                phi_nn(2), phi_slip_norm, phi_x
+                atau, g_atau(3), share, g_share(3), x, g_x(3), phi_nn(2), phi_slip_norm, phi_x
     integer :: i
-    logical :: closed_at_zero, mean_direction, grows
+    logical :: closed_at_zero, mean_direction, grows, open
 
     p%sl = sl
+    open = sl(1) > tie
 
     ! Damage, isotropic in the microplane: beta_eq from <s_kn>_+ and |s_kt| (interlock_damage).
     pos = max(0.0_dp, sl(1))
-    dpos = merge(1.0_dp, 0.0_dp, sl(1) > 0.0_dp)
+    dpos = merge(1.0_dp, 0.0_dp, open)
     p%beta = o%beta
     p%g_dmg = 0.0_dp
     p%g_beta = 0.0_dp
@@ -156,13 +187,13 @@ contains
     p%dmg_kept = mat%use_damage .and. p%beta_kept
 
     ! Friction on the damaged part, to |tau_f| = mu p (p = K_n <-s_kn>_+); free (sf = s_kt,
-    ! tau_f = 0) on an open plane or without friction. At s_kn = 0 exactly mu p has the closed
+    ! tau_f = 0) on an open plane or without friction. At the tie s_kn = 0 mu p has the closed
     ! side's derivative (SPEC D13).
     mu_p = 0.0_dp
     g_mu = 0.0_dp
     if (mat%use_friction) then
       mu_p = -mat%mu_eff * mat%kn * min(sl(1), 0.0_dp)
-      if (.not. sl(1) > 0.0_dp) g_mu(1) = -mat%mu_eff * mat%kn
+      if (.not. open) g_mu(1) = -mat%mu_eff * mat%kn
     end if
     closed_at_zero = .false.
     mean_direction = .false.
@@ -260,8 +291,8 @@ contains
         p%g_slip_dip = sign_of(dsf(1)) * e_t(:, 1)
         g_slip_norm = norm_gradient(dsf, slip_norm, e_t)
       end if
-      if (mat%use_friction .and. .not. sl(1) > 0.0_dp) then
-        ! s_kn = 0 exactly: in contact for every derivative (SPEC D13). The values are the
+      if (mat%use_friction .and. .not. open) then
+        ! s_kn = 0 (the tie): in contact for every derivative (SPEC D13). The values are the
         ! free plane's, the same as the slide's with mu p = 0 (tau_f = 0, sf = s_kt); the
         ! derivatives are the slide's: d tau_f = d(mu p) n, the slip shortened by d(mu p) / K_t
         ! along n. At the cone's apex (|tau_tr| = 0) a kink where they stay 0.
@@ -320,32 +351,15 @@ contains
       if (drivers) g_atau = sign_of(p%tauf(1)) * p%g_tauf(:, 1)
     end if
 
-    ! The traction (eq. 6) in the plane's frame: d sigma_kn = K_n (1 - D <s_kn>_+') ds_kn -
-    ! K_n <s_kn>_+ dD, d sigma_kt = (1 - D) K_t ds_kt + D d tau_f + (tau_f - K_t s_kt) dD.
-    kpos = mat%kn * pos
-    p%sig_loc(1) = mat%kn * sl(1) - p%dmg * kpos
-    p%k_loc(1, :) = 0.0_dp
-    p%k_loc(1, 1) = mat%kn - (p%dmg * mat%kn) * dpos
-    do i = 1, 2
-      kts = mat%kt * sl(1 + i)
-      p%sig_loc(1 + i) = (1.0_dp - p%dmg) * kts + p%dmg * p%tauf(i)
-      p%k_loc(1 + i, :) = p%dmg * p%g_tauf(:, i)
-      p%k_loc(1 + i, 1 + i) = p%k_loc(1 + i, 1 + i) + (1.0_dp - p%dmg) * mat%kt
-      if (grows) p%k_loc(1 + i, :) = p%k_loc(1 + i, :) + (p%tauf(i) - kts) * p%g_dmg
-    end do
-    if (grows) p%k_loc(1, :) = p%k_loc(1, :) - kpos * p%g_dmg
     if (chain) then
-      p%dmg_sig(1) = -kpos
-      p%dmg_sig(2) = p%tauf(1) - mat%kt * sl(2)
-      p%dmg_sig(3) = p%tauf(2) - mat%kt * sl(3)
       p%dmg_wfric_dip = atau * p%slip_dip
       if (.not. p%mean) p%dmg_wear_end = p%dmg_wfric_dip
     end if
 
     ! The wear drivers in the dip direction.
     p%wfric_dip = p%dmg * atau * p%slip_dip
+    share = 1.0_dp
     if (.not. mean_direction) then
-      share = 1.0_dp
       if (slip_norm > 0.0_dp) share = p%slip_dip / slip_norm
       p%wear_start = p%slip_dip * share
       p%wear_end = p%wfric_dip
@@ -361,21 +375,59 @@ contains
       end if
     end if
 
+    p%pos = pos
+    p%dpos = dpos
+    p%slip_norm = slip_norm
+    p%dmg_grows = grows
+    if (traction) call plane_traction_3d(mat, o, chain, p)
+  end subroutine plane_law_3d_parts
+
+  !> The rest of plane_law_3d from its damage and friction in p: the traction (eq. 6) in the
+  !> plane's frame with its derivative k_loc, with `chain` its d / d D at fixed friction, and the
+  !> energies.
+  pure subroutine plane_traction_3d(mat, o, chain, p)
+    type(interlock_material_t), intent(in) :: mat
+    type(plane_start_3d_t), intent(in) :: o
+    logical, intent(in) :: chain
+    type(plane_law_3d_t), intent(inout) :: p
+    real(dp) :: kpos, kts, tauf_norm, work
+    integer :: i
+
+    ! d sigma_kn = K_n (1 - D <s_kn>_+') ds_kn - K_n <s_kn>_+ dD, d sigma_kt = (1 - D) K_t ds_kt
+    ! + D d tau_f + (tau_f - K_t s_kt) dD.
+    kpos = mat%kn * p%pos
+    p%sig_loc(1) = mat%kn * p%sl(1) - p%dmg * kpos
+    p%k_loc(1, :) = 0.0_dp
+    p%k_loc(1, 1) = mat%kn - (p%dmg * mat%kn) * p%dpos
+    do i = 1, 2
+      kts = mat%kt * p%sl(1 + i)
+      p%sig_loc(1 + i) = (1.0_dp - p%dmg) * kts + p%dmg * p%tauf(i)
+      p%k_loc(1 + i, :) = p%dmg * p%g_tauf(:, i)
+      p%k_loc(1 + i, 1 + i) = p%k_loc(1 + i, 1 + i) + (1.0_dp - p%dmg) * mat%kt
+      if (p%dmg_grows) p%k_loc(1 + i, :) = p%k_loc(1 + i, :) + (p%tauf(i) - kts) * p%g_dmg
+    end do
+    if (p%dmg_grows) p%k_loc(1, :) = p%k_loc(1, :) - kpos * p%g_dmg
+    if (chain) then
+      p%dmg_sig(1) = -kpos
+      p%dmg_sig(2) = p%tauf(1) - mat%kt * p%sl(2)
+      p%dmg_sig(3) = p%tauf(2) - mat%kt * p%sl(3)
+    end if
+
     ! Energies, as the 2D law's (interlock_plane_law) with vectors: the frictional work on the
     ! damaged part, the damage dissipation Y dD (the elastic part exact, the friction part at
     ! first order), the stored energy (sigma_k . s_k - D tau_f . sf) / 2.
     tauf_norm = sqrt(p%tauf(1)**2 + p%tauf(2)**2)
-    p%wfric = p%dmg * tauf_norm * slip_norm
+    p%wfric = p%dmg * tauf_norm * p%slip_norm
     p%wdmg = 0.0_dp
     if (p%dmg > o%dmg) then
       p%wdmg = mat%decohesion_energy_factor * (min(max(p%beta, 1.0_dp), mat%beta_break) - &
                                                min(max(o%beta, 1.0_dp), mat%beta_break))
       p%wdmg = p%wdmg - 0.5_dp * tauf_norm**2 * mat%inv_kt * (p%dmg - o%dmg)
     end if
-    work = p%sig_loc(1) * sl(1) + p%sig_loc(2) * sl(2) + p%sig_loc(3) * sl(3) - &
+    work = p%sig_loc(1) * p%sl(1) + p%sig_loc(2) * p%sl(2) + p%sig_loc(3) * p%sl(3) - &
            p%dmg * (p%tauf(1) * p%sf(1) + p%tauf(2) * p%sf(2))
     p%psi = 0.5_dp * work
-  end subroutine plane_law_3d
+  end subroutine plane_traction_3d
 
   !> D14's slip direction of a plane that slides over the whole step (SPEC decision D14): with
   !> the start direction n_o = tauf_o / |tauf_o| and the trial traction tau_tr, the slip

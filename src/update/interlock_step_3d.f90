@@ -19,8 +19,8 @@ module interlock_step_3d
       wear_root_update
   use interlock_plane_law, only: plane_frame, wear_weights, start_yield, trapezoidal_weight, &
       wear_angle_error, add_wear_error, wear_error_of
-  use interlock_plane_law_3d, only: plane_start_3d_t, plane_law_3d_t, plane_law_3d, &
-      local_separation, to_macro
+  use interlock_plane_law_3d, only: plane_start_3d_t, plane_law_3d_t, plane_law_3d_parts, &
+      plane_traction_3d, local_separation, contact_round_off, to_macro
   implicit none
   private
   public :: plane_chain_t, step_3d, chain_bounded
@@ -223,10 +223,9 @@ contains
     ! start separation); mu p_o, the start state's friction bound, also decides whether the
     ! plane slides at the start (D14's mean-direction rule), and the trapezoidal start weight
     ! D_o mu p_o / 2 is the error estimate's reference.
+    ! (the start angle's frame: also the frame of the law's first evaluation)
     dip_o = cp * s_o(2) + sp * s_o(3)
-    c_o = 1.0_dp
-    sn_o = 0.0_dp
-    if (trapezoidal .or. estimate) call plane_frame(mat, k, o%theta, c_o, sn_o)
+    call plane_frame(mat, k, o%theta, c_o, sn_o)
     call wear_weights(mat, solver%scheme, o%dmg, o%tauf(1), c_o, sn_o, s_o(1), dip_o, a_w, &
                       g_slip)
     mu_p_o = 0.0_dp
@@ -240,8 +239,11 @@ contains
 
     theta = o%theta
     zeta = o%zeta
-    call evaluate(mat, k, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, drivers, chain, &
-                  theta, c, sn, p, drv, g_drv)
+    c = c_o
+    sn = sn_o
+    ! (the traction with the law where the angle is not solved for)
+    call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, drivers, chain, &
+                  .not. (coupled .and. wears), c, sn, p, drv, g_drv)
     if (coupled .and. wears) then
       ! F(zeta) = zeta - zeta_o - G(theta(zeta)); at zeta_o the stored angle and its slope, no
       ! exponential.
@@ -252,8 +254,9 @@ contains
         do
           call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, &
                           thp)
-          call evaluate(mat, k, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, .true., chain, &
-                        theta, c, sn, p, drv, g_drv)
+          call plane_frame(mat, k, theta, c, sn)
+          call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, .true., chain, &
+                        .false., c, sn, p, drv, g_drv)
           fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
           call wear_root_update(rt, rt%x - o%zeta - drv, fp, solver%newton_tol, &
                                 solver%newton_max_iterations)
@@ -262,17 +265,20 @@ contains
         iterations = rt%iterations
         ok = rt%ok
         if (.not. ok) return
-        if (.not. drv > 0.0_dp) then
+        if (.not. (drv > 0.0_dp .or. abs(p%tauf(1)) + abs(p%tauf(2)) > 0.0_dp)) then
           ! The root is where the plane just loses contact (very fast wear turns it until
-          ! then), within round-off of that kink, and the last point is on the open side: take
-          ! the closed side's last point, rt%lo (F < 0 there, so some work: the plane is in
-          ! contact), a few ulps from the root, so that the angle's derivative and the
-          ! traction's come from the same side (mixed, they are neither one-sided derivative).
+          ! then), within round-off of that kink, and the last point is on the open side (no
+          ! friction traction; a plane that sticks there has its root where it switches to
+          ! sliding, and the last point is that root): take the closed side's last point, rt%lo
+          ! (F < 0 there, so some work: the plane is in contact), a few ulps from the root, so
+          ! that the angle's derivative and the traction's come from the same side (mixed,
+          ! they are neither one-sided derivative).
           rt%x = rt%lo
           call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, &
                           thp)
-          call evaluate(mat, k, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, .true., chain, &
-                        theta, c, sn, p, drv, g_drv)
+          call plane_frame(mat, k, theta, c, sn)
+          call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, .true., chain, &
+                        .false., c, sn, p, drv, g_drv)
           fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
         end if
         zeta = rt%x
@@ -286,6 +292,9 @@ contains
                                            mat%inv_zeta0(k), zeta, theta, thp)
       end if
     end if
+    ! the traction, its derivative and the energies at the wear equation's root (not at its
+    ! iterates)
+    if (coupled .and. wears) call plane_traction_3d(mat, o, chain, p)
     call rotated(cp, sp, c, sn, p, sig_k, k_k)
     if (wears .and. (coupled .or. chain .or. estimate)) then
       ! d sig_k / d theta at fixed s = sigma_kn e - sigma_kt1 m + R^T K_loc d sl / d theta
@@ -353,8 +362,10 @@ contains
            jo%tauf(:, 1)
     else if (trapezoidal) then
       dsn_o = 0.0_dp
+      ! (closed at the tie s_kn = 0, SPEC D13, as the plane law)
       x_o = -(c_o * s_o(1) + sn_o * (cp * s_o(2) + sp * s_o(3)))
-      if (s_o(1) * mat%inv_h_n < 1.0_dp .and. .not. 0.0_dp > x_o) &
+      if (s_o(1) * mat%inv_h_n < 1.0_dp .and. &
+          .not. -contact_round_off(cp, sp, c_o, sn_o, s_o) > x_o) &
         dsn_o = -(mat%mu_eff * mat%kn) * (h_start * [c_o, sn_o * cp, sn_o * sp] + &
                  (-sn_o * s_o(1) + c_o * (cp * s_o(2) + sp * s_o(3))) * jo%theta)
       dg = 0.5_dp * (jo%dmg * mu_p_o + o%dmg * dsn_o)
@@ -425,21 +436,22 @@ contains
     end do
   end subroutine chain_plane
 
-  !> The plane law at angle theta (its frame c, sn) and the scheme's wear driver G with
+  !> The plane law at the angle of frame (c, sn), with its traction, tangent and energies if
+  !> `traction` (else plane_traction_3d gives them), and the scheme's wear driver G with
   !> d G / d sl: a_end D |tau_f,1| |d sf_1| + g_slip |d sf_1| (explicit, implicit), a_end
   !> wear_end + g_slip wear_start (trapezoidal: the dip component of D_o mu p_o n at the start);
   !> d G / d sl only with `drivers` (else 0).
-  pure subroutine evaluate(mat, k, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, drivers, &
-                           chain, theta, c, sn, p, drv, g_drv)
+  pure subroutine evaluate(mat, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, drivers, &
+                           chain, traction, c, sn, p, drv, g_drv)
     type(interlock_material_t), intent(in) :: mat
-    integer, intent(in) :: k
-    real(dp), intent(in) :: cp, sp, s(3), mu_p_o, a_end, g_slip, theta
+    real(dp), intent(in) :: cp, sp, s(3), mu_p_o, a_end, g_slip, c, sn
     type(plane_start_3d_t), intent(in) :: o
-    logical, intent(in) :: trapezoidal, drivers, chain
-    real(dp), intent(out) :: c, sn, drv, g_drv(3)
+    logical, intent(in) :: trapezoidal, drivers, chain, traction
+    real(dp), intent(out) :: drv, g_drv(3)
     type(plane_law_3d_t), intent(out) :: p
-    call plane_frame(mat, k, theta, c, sn)
-    call plane_law_3d(mat, local_separation(cp, sp, c, sn, s), o, mu_p_o, drivers, chain, p)
+    call plane_law_3d_parts(mat, local_separation(cp, sp, c, sn, s), &
+                            contact_round_off(cp, sp, c, sn, s), o, mu_p_o, drivers, chain, &
+                            traction, p)
     g_drv = 0.0_dp
     if (trapezoidal) then
       drv = a_end * p%wear_end + g_slip * p%wear_start
@@ -468,21 +480,40 @@ contains
   end function frame_rows
 
   !> The plane's traction in the macro frame and its derivative at fixed angle, R^T K_loc R,
-  !> with R = d sl / d s (rows m, e, q): each row of K_loc R is R^T times K_loc's row, and each
-  !> column of R^T (K_loc R) R^T times that column, both by to_macro.
+  !> with R = d sl / d s (rows m, e, q) = B A: B turns by theta in (n, d) (to_macro's first
+  !> rotation), A by the azimuth in (t1, t2); each turns both sides in one plane of the frame,
+  !> the columns (B^T K_loc), then the rows ((B^T K_loc) B); the azimuth's only where phi /= 0.
   pure subroutine rotated(cp, sp, c, sn, p, sig_k, k_k)
     real(dp), intent(in) :: cp, sp, c, sn
     type(plane_law_3d_t), intent(in) :: p
     real(dp), intent(out) :: sig_k(3), k_k(3, 3)
-    real(dp) :: a(3, 3)
-    integer :: i
     sig_k = to_macro(cp, sp, c, sn, p%sig_loc)
-    do i = 1, 3
-      a(i, :) = to_macro(cp, sp, c, sn, [p%k_loc(i, 1), p%k_loc(i, 2), p%k_loc(i, 3)])
-    end do
-    do i = 1, 3
-      k_k(:, i) = to_macro(cp, sp, c, sn, a(:, i))
-    end do
+    k_k = p%k_loc
+    call turn_both_sides(c, sn, 1, k_k)
+    if (sp < 0.0_dp .or. sp > 0.0_dp .or. cp < 1.0_dp) call turn_both_sides(cp, sp, 2, k_k)
   end subroutine rotated
+
+  !> a = T^T a T for the rotation T by (cs, sn) = (cos, sin) of an angle in the plane of the
+  !> indices i and i + 1: each column's pair (v_i, v_i+1) -> (cs v_i - sn v_i+1, sn v_i +
+  !> cs v_i+1), then each row's.
+  pure subroutine turn_both_sides(cs, sn, i, a)
+    real(dp), intent(in) :: cs, sn
+    integer, intent(in) :: i
+    real(dp), intent(inout) :: a(3, 3)
+    real(dp) :: x, y
+    integer :: j
+    do j = 1, 3
+      x = a(i, j)
+      y = a(i + 1, j)
+      a(i, j) = cs * x - sn * y
+      a(i + 1, j) = sn * x + cs * y
+    end do
+    do j = 1, 3
+      x = a(j, i)
+      y = a(j, i + 1)
+      a(j, i) = cs * x - sn * y
+      a(j, i + 1) = sn * x + cs * y
+    end do
+  end subroutine turn_both_sides
 
 end module interlock_step_3d

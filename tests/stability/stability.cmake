@@ -78,12 +78,8 @@ set_tests_properties(stability_fuzz_3d_beyond_bound PROPERTIES TIMEOUT 600 LABEL
 
 # Updates the fuzzers found with a tangent that matched no finite difference, replayed from
 # their exact inputs and checked as the fuzzer checks them
-# (tests/stability/fuzz/fuzz_fd_check.f90). Disabled while its two cases fail: the 3D update's
-# tangent on a path in a wearing plane's surface (s_kn round-off about 0 on 260 sub-increments)
-# and at a wear root within 1e-64 of zeta_o (zeta_0 = 1e-64 N/mm) is open (docs/tests.md, the
-# fuzzers).
+# (tests/stability/fuzz/fuzz_fd_check.f90).
 interlock_add_suite(stability_fuzz_cases stability fuzz/fuzz_fd_check.f90 fuzz/test_fuzz_cases.f90)
-set_tests_properties(stability_fuzz_cases PROPERTIES DISABLED TRUE)
 
 # Replay decks: write one for a failing update, read it back, re-run it.
 interlock_add_suite(stability_replay stability test_stability_replay.f90)

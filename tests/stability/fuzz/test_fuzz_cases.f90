@@ -92,10 +92,10 @@ contains
   !> (582 sub-increments), a separation path through the origin (the end separation is 47.6
   !> times the start one). Plane 3 slides, wears until it just loses contact, and from then on
   !> the path runs in its surface: its s_kn is 0 or +-1.4e-17 (round-off) at the end of each
-  !> of the last 260 sub-increments. The traction is 0 at the end and on the opening side; the
-  !> closing side's derivative is small (0.24 MPa/mm); the tangent was 1e3-1.7e4 MPa/mm. The
-  !> fuzzers' check skips a column whose one-sided differences disagree; SPEC D13 asks for the
-  !> closing side's, which closed_side checks.
+  !> of the last 260 sub-increments, every one of them the tie s_kn = 0 for the derivatives. The
+  !> traction is 0 at the end and on the opening side; the closing side's derivative is small
+  !> (0.24 MPa/mm). The fuzzers' check skips a column whose one-sided differences disagree;
+  !> SPEC D13 asks for the closing side's, which closed_side checks.
   subroutine beyond_bound_seed2_surface_path()
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver
@@ -155,10 +155,10 @@ contains
   !> (N_a = 3, theta_0 = 42.6 deg, theta_f = 3.3 deg) from the virgin state, the trapezoidal
   !> scheme, plane 6 with zeta_0 = 1e-64 N/mm (an admissible garbled value). Plane 6 slides at
   !> its initial angle and sticks at its final one, so the wear equation's root lies where it
-  !> switches, within zeta ~ 1e-64 of zeta_o = 0. The update returned the plane unworn and
-  !> sliding (a wear residual of -4.8e-4 N/mm), its tangent the implicit derivative of a root
-  !> (F' = 2.8e59): column 1 was (-8.9e6, -8.5e6, 2.3e7) MPa/mm against differences (3.67e6,
-  !> -1.41e5, -1.02e6) that agree to 6 digits from steps 3.5e-10 down to 3.5e-15.
+  !> switches, within zeta ~ 1e-64 of zeta_o = 0, and the iteration ends on the stuck side (no
+  !> wear driver, a friction traction): the plane is taken stuck there, not at the bracket's
+  !> lower end (unworn and sliding). Column 1 of the differences, (3.67e6, -1.41e5, -1.02e6)
+  !> MPa/mm, agrees to 6 digits from steps 3.5e-10 down to 3.5e-15.
   subroutine beyond_bound_seed2_tiny_zeta0()
     type(interlock_material_t) :: mat
     type(interlock_solver_t) :: solver

@@ -89,9 +89,19 @@ contains
       dip = cp * s_o(2) + sp * s_o(3)
       ! (max takes its first argument at a tie: at s_kn = 0 the closed side's derivative,
       ! SPEC D13)
-      mu_p = mat%mu_eff * mat%kn * max(-(c * s_o(1) + sn * dip), 0.0_dp)
+      mu_p = mat%mu_eff * mat%kn * max(-normal_separation(c, sn, s_o(1), dip), 0.0_dp)
     end if
   end function start_pressure_3d
+
+  !> s_kn = c s_N + sn s_dip, its value 0 within its round-off 8 eps (|c s_N| + |sn s_dip|): a
+  !> path in the plane's surface gives 0 or +-1e-17 from one step to the next, all of them the
+  !> tie s_kn = 0 whose derivatives are the closed side's (SPEC D13).
+  pure type(dual_t) function normal_separation(c, sn, s_n, dip) result(sl_n)
+    type(dual_t), intent(in) :: c, sn, s_n, dip
+    sl_n = c * s_n + sn * dip
+    if (abs(sl_n%v) <= 8.0_dp * epsilon(1.0_dp) * (abs(c%v * s_n%v) + abs(sn%v * dip%v))) &
+      sl_n%v = 0.0_dp
+  end function normal_separation
 
   !> A plane of azimuth frame (cp, sp) = (cos, sin)(phi) at angle theta (frame c, sn) from the
   !> start state o to the macro separation s (SPEC section 9, one step, points 2-6 and the
@@ -113,7 +123,7 @@ contains
     ! sin(phi) t2, then m = cos(theta) n + sin(theta) d, e = -sin(theta) n + cos(theta) d and
     ! the strike q = -sin(phi) t1 + cos(phi) t2.
     dip = cp * s(2) + sp * s(3)
-    sl_n = c * s(1) + sn * dip
+    sl_n = normal_separation(c, sn, s(1), dip)
     sl_t(1) = -(sn * s(1)) + c * dip
     sl_t(2) = -(sp * s(2)) + cp * s(3)
 

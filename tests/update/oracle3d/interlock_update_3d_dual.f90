@@ -353,6 +353,9 @@ contains
       ! F(zeta) = zeta - zeta_o - G(theta(zeta)): column 4 carries d / d zeta (F' = 1 - dG /
       ! d zeta); at zeta_o the stored angle and its slope, no exponential.
       thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), o%theta%v)
+      ! (the angle is theta(zeta) of the unknown zeta: its start-state columns would count
+      ! the start angle's derivative twice, through F')
+      theta%d(1:3) = 0.0_dp
       theta%d(4) = thp
       call evaluate(mat, cp, sp, k, theta, s, o, mu_p_o, a_end, g_slip, trapezoidal, p, drv)
       fp = 1.0_dp - drv%d(4)
@@ -372,9 +375,10 @@ contains
         iterations = rt%iterations
         ok = rt%ok
         if (.not. ok) return
-        if (.not. drv%v > 0.0_dp) then
+        if (.not. (drv%v > 0.0_dp .or. abs(p%tauf(1)%v) + abs(p%tauf(2)%v) > 0.0_dp)) then
           ! The root is where the plane just loses contact (very fast wear turns it until
-          ! then), within round-off of that kink, and the last point is on the open side: take
+          ! then; not where it sticks, no friction traction), within round-off of that kink,
+          ! and the last point is on the open side: take
           ! the closed side's last point, rt%lo (F < 0 there, so some work: the plane is in
           ! contact), a few ulps from the root, so that the angle's derivative and the
           ! traction's come from the same side (mixed, they are neither one-sided derivative).
