@@ -1,10 +1,16 @@
 !> Coulomb friction on the damaged part of a microplane (eq. 7 with erratum E1): an elastic
 !> predictor on the friction traction and a return to |tau_f| = mu p, p the contact pressure.
+!> The return in scalar form (friction_step: a plane of a two-dimensional interface) and in
+!> vector form (radial_return: the tangential 2-vector of a plane of a three-dimensional one).
 module interlock_friction
   use interlock_kinds, only: dp
   implicit none
   private
-  public :: friction_step
+  public :: friction_step, radial_return
+
+  !> d s_kt / d (s_kn, s_kt1, s_kt2): column i is the unit vector of s_kt,i
+  real(dp), parameter :: e_t(3, 2) = reshape([0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], &
+                                             [3, 2])
 
 contains
 
@@ -53,5 +59,29 @@ contains
       end if
     end if
   end subroutine friction_step
+
+  !> The return of a tangential 2-vector whose trial traction tr = K_t (s_kt - sf_o), of norm
+  !> trn, exceeds the bound mu_p > 0: back to |tau_f| = mu p along n = tr / |tr| (radial return,
+  !> backward Euler on the slip direction): tau_f = mu p n, sf = s_kt - tau_f / K_t, the slip of
+  !> the step |d sf| = (|tr| - mu p) / K_t. Derivatives with respect to the local separation
+  !> (s_kn, s_kt1, s_kt2), g_x(j) = d x / d sl(j): g_mu the bound's, g_nv(:, i) = d n_i =
+  !> (K_t / |tr|) (e_i - n_i n) . d s_kt, g_tauf(:, i) = n_i g_mu + mu p g_nv(:, i). In one
+  !> dimension this is friction_step's slide.
+  pure subroutine radial_return(mu_p, g_mu, kt, inv_kt, st, tr, trn, nv, g_nv, sf, tauf, &
+                                g_tauf, slip)
+    real(dp), intent(in) :: mu_p, g_mu(3), kt, inv_kt, st(2), tr(2), trn
+    real(dp), intent(out) :: nv(2), g_nv(3, 2), sf(2), tauf(2), g_tauf(3, 2), slip
+    integer :: i
+    do i = 1, 2
+      nv(i) = tr(i) / trn
+    end do
+    do i = 1, 2
+      g_nv(:, i) = (kt / trn) * (e_t(:, i) - nv(i) * (nv(1) * e_t(:, 1) + nv(2) * e_t(:, 2)))
+      tauf(i) = mu_p * nv(i)
+      g_tauf(:, i) = nv(i) * g_mu + mu_p * g_nv(:, i)
+      sf(i) = st(i) - tauf(i) * inv_kt
+    end do
+    slip = (trn - mu_p) * inv_kt
+  end subroutine radial_return
 
 end module interlock_friction

@@ -3,7 +3,8 @@
 !> (interlock_kernels) and the general path (interlock_microplane, interlock_schemes, which adds
 !> the derivative columns that substepping chains). In the plane's frame: damage (eq. 9-11,
 !> interlock_damage), Coulomb friction on the damaged part (eq. 7, interlock_friction), the
-!> traction of eq. 6 and its exact 2x2 tangent, the frictional work, the damage dissipation and
+!> traction of eq. 6 (normal_traction, tangential_traction: also the 3D law's,
+!> interlock_plane_law_3d) and its exact 2x2 tangent, the frictional work, the damage dissipation and
 !> the stored energy (eq. 21); the wear driver of each scheme (eq. 22-25, decisions D4, D11),
 !> the coupled wear equation of the implicit and trapezoidal schemes and the embedded error
 !> estimate of substepping. Small scalar procedures: with link-time optimisation they are
@@ -20,6 +21,7 @@ module interlock_plane_law
   public :: plane_response_t, plane_law, add_rotated, traction_angle_slope, plane_frame
   public :: start_yield, trapezoidal_weight, wear_weights, wear_driver, coupled_wear
   public :: wear_angle_error, add_wear_error, wear_error_of
+  public :: normal_traction, tangential_traction
 
   !> One plane over one step, in its own frame, from its start state (beta_o, D_o, sf_o) to the
   !> local separation (s_kn, s_kt). Derivatives are with respect to (s_kn, s_kt) at fixed start
@@ -75,7 +77,7 @@ contains
     ! which the compiler could not drop.)
     kpos = mat%kn * pos
     kts = mat%kt * sl_t
-    p%sig_n = mat%kn * sl_n - p%dmg * kpos
+    p%sig_n = normal_traction(mat%kn, p%dmg, sl_n)
     if (sl_n > 0.0_dp) then
       p%k_nn = (1.0_dp - p%dmg) * mat%kn - kpos * p%gd_n
     else
@@ -87,11 +89,10 @@ contains
     else
       tk = -kts
     end if
-    p%sig_t = (1.0_dp - p%dmg) * kts
+    p%sig_t = tangential_traction(mat%kt, p%dmg, sl_t, p%tauf, friction)
     p%k_tn = tk * p%gd_n
     p%k_tt = (1.0_dp - p%dmg) * mat%kt
     if (friction) then
-      p%sig_t = p%sig_t + p%dmg * p%tauf
       p%k_tn = p%dmg * p%dtauf_n + p%k_tn
       p%k_tt = p%k_tt + p%dmg * p%dtauf_t
     end if
@@ -115,6 +116,24 @@ contains
     if (friction) work = work - p%dmg * p%tauf * p%sf
     p%psi = 0.5_dp * work
   end subroutine plane_law
+
+  !> The traction of eq. 6 normal to a plane, sigma_kn = K_n s_kn - D K_n <s_kn>_+: the bond
+  !> carries tension in the undamaged part only, contact carries compression in full.
+  elemental real(dp) function normal_traction(kn, dmg, sl_n) result(sig)
+    real(dp), intent(in) :: kn, dmg, sl_n
+    sig = kn * sl_n - dmg * (kn * max(0.0_dp, sl_n))
+  end function normal_traction
+
+  !> The traction of eq. 6 along a plane (one component of its tangential vector in 3D),
+  !> sigma_kt = (1 - D) K_t s_kt + D tau_f: the undamaged part elastic, the damaged one
+  !> carrying the friction traction. `friction` false: tau_f = 0, its term left out (not added
+  !> as a zero, which the compiler could not drop).
+  elemental real(dp) function tangential_traction(kt, dmg, sl_t, tauf, friction) result(sig)
+    real(dp), intent(in) :: kt, dmg, sl_t, tauf
+    logical, intent(in) :: friction
+    sig = (1.0_dp - dmg) * (kt * sl_t)
+    if (friction) sig = sig + dmg * tauf
+  end function tangential_traction
 
   !> mu p at the start of the step on the plane of frame (c, sn) = (cos theta_o, sin theta_o),
   !> s_o the start separation: the friction traction of the damaged part where the slip of the

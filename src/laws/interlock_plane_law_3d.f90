@@ -16,6 +16,8 @@ module interlock_plane_law_3d
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t
   use interlock_damage, only: damage_growth
+  use interlock_friction, only: radial_return
+  use interlock_plane_law, only: normal_traction, tangential_traction
   implicit none
   private
   public :: plane_start_3d_t, plane_law_3d_t, plane_law_3d, plane_law_3d_parts, &
@@ -42,7 +44,7 @@ module interlock_plane_law_3d
     real(dp) :: g_beta(3), g_sf(3, 2)     !< (chain)
     logical :: beta_kept   !< beta = beta_o (no growth of the equivalent displacement)
     logical :: dmg_kept    !< D = D_o (damage on and beta kept)
-    logical :: mean        !< D14's mean direction was taken (the phi_ derivatives apply)
+    logical :: mean        !< (chain) D14's mean direction was taken (the phi_ derivatives apply)
     !> d / d phi_o (chain, mean): of tau_f, sf, wear_start, wear_end
     real(dp) :: phi_tauf(2), phi_sf(2), phi_wear_start, phi_wear_end
     !> d / d D at fixed friction (chain): of sig_loc, wfric_dip, wear_end
@@ -148,12 +150,14 @@ contains
     dpos = merge(1.0_dp, 0.0_dp, open)
     p%beta = o%beta
     p%g_dmg = 0.0_dp
-    p%g_beta = 0.0_dp
-    p%mean = .false.
-    p%phi_tauf = 0.0_dp
-    p%phi_sf = 0.0_dp
-    p%phi_wear_start = 0.0_dp
-    p%phi_wear_end = 0.0_dp
+    if (chain) then
+      p%g_beta = 0.0_dp
+      p%mean = .false.
+      p%phi_tauf = 0.0_dp
+      p%phi_sf = 0.0_dp
+      p%phi_wear_start = 0.0_dp
+      p%phi_wear_end = 0.0_dp
+    end if
     grows = .false.
     if (mat%use_damage) then
       p%dmg = o%dmg
@@ -257,19 +261,15 @@ contains
             p%dmg_wear_end = abs(p%tauf(1)) * x
           end if
         else
-          ! radial return: sf - sf_o = n (|tau_tr| - mu p) / K_t along n = tau_tr / |tau_tr|
-          do i = 1, 2
-            nv(i) = tr(i) / trn
-          end do
-          do i = 1, 2
-            g_nv(:, i) = (mat%kt / trn) * (e_t(:, i) - nv(i) * (nv(1) * e_t(:, 1) + &
-                                                                 nv(2) * e_t(:, 2)))
-            p%tauf(i) = mu_p * nv(i)
-            p%g_tauf(:, i) = nv(i) * g_mu + mu_p * g_nv(:, i)
-            p%sf(i) = sl(1 + i) - p%tauf(i) * mat%inv_kt
-            if (chain) p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
-          end do
-          slip_norm = (trn - mu_p) * mat%inv_kt
+          ! radial return (interlock_friction): sf - sf_o = n (|tau_tr| - mu p) / K_t along
+          ! n = tau_tr / |tau_tr|
+          call radial_return(mu_p, g_mu, mat%kt, mat%inv_kt, sl(2:3), tr, trn, nv, g_nv, p%sf, &
+                             p%tauf, p%g_tauf, slip_norm)
+          if (chain) then
+            do i = 1, 2
+              p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
+            end do
+          end if
           p%slip_dip = abs(nv(1)) * slip_norm
           if (drivers) then
             g_slip_norm = (nv(1) * e_t(:, 1) + nv(2) * e_t(:, 2) - g_mu * mat%inv_kt)
@@ -382,8 +382,8 @@ contains
     if (traction) call plane_traction_3d(mat, o, chain, p)
   end subroutine plane_law_3d_parts
 
-  !> The rest of plane_law_3d from its damage and friction in p: the traction (eq. 6) in the
-  !> plane's frame with its derivative k_loc, with `chain` its d / d D at fixed friction, and the
+  !> The rest of plane_law_3d from its damage and friction in p: the traction (eq. 6, stated in
+  !> interlock_plane_law) in the plane's frame with its derivative k_loc, with `chain` its d / d D at fixed friction, and the
   !> energies.
   pure subroutine plane_traction_3d(mat, o, chain, p)
     type(interlock_material_t), intent(in) :: mat
@@ -396,12 +396,12 @@ contains
     ! d sigma_kn = K_n (1 - D <s_kn>_+') ds_kn - K_n <s_kn>_+ dD, d sigma_kt = (1 - D) K_t ds_kt
     ! + D d tau_f + (tau_f - K_t s_kt) dD.
     kpos = mat%kn * p%pos
-    p%sig_loc(1) = mat%kn * p%sl(1) - p%dmg * kpos
+    p%sig_loc(1) = normal_traction(mat%kn, p%dmg, p%sl(1))
     p%k_loc(1, :) = 0.0_dp
     p%k_loc(1, 1) = mat%kn - (p%dmg * mat%kn) * p%dpos
     do i = 1, 2
       kts = mat%kt * p%sl(1 + i)
-      p%sig_loc(1 + i) = (1.0_dp - p%dmg) * kts + p%dmg * p%tauf(i)
+      p%sig_loc(1 + i) = tangential_traction(mat%kt, p%dmg, p%sl(1 + i), p%tauf(i), .true.)
       p%k_loc(1 + i, :) = p%dmg * p%g_tauf(:, i)
       p%k_loc(1 + i, 1 + i) = p%k_loc(1 + i, 1 + i) + (1.0_dp - p%dmg) * mat%kt
       if (p%dmg_grows) p%k_loc(1 + i, :) = p%k_loc(1 + i, :) + (p%tauf(i) - kts) * p%g_dmg

@@ -12,7 +12,7 @@
 module interlock_step_3d
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_explicit, &
-      scheme_trapezoidal
+      scheme_trapezoidal, max_planes
   use interlock_state, only: interlock_state_3d_t
   use interlock_geometry, only: contact_area
   use interlock_wear, only: worn_angle, worn_angle_slope, wear_root_t, wear_root_begin, &
@@ -57,7 +57,8 @@ contains
     type(plane_law_3d_t) :: p
     type(plane_start_3d_t) :: o
     real(dp) :: area, darea, gam, w, sig(3), sig_k(3), k_k(3, 3), s_o(3), old_sig(3), zeta, &
-                theta, e, dsig_dtheta(3), err_angle, err_traction
+                theta, e, dsig_dtheta(3), err_angle, err_traction, c_o(max_planes), &
+                sn_o(max_planes)
     integer :: k, n_eval, it
     logical :: shared
 
@@ -103,11 +104,17 @@ contains
       ! Identical flat planes share one history: computed once, copied (SPEC section 7).
       shared = mat%flat .and. mat%azimuths_zero
       n_eval = merge(1, mat%n_planes, shared)
+      ! The start angles' frames first (the stored ones unless worn): libm's sincos sets and
+      ! restores the rounding mode, which waits for the floating-point work before it, so that
+      ! the planes' laws after it overlap (the same values).
+      do k = 1, n_eval
+        call plane_frame(mat, k, old%theta(k), c_o(k), sn_o(k))
+      end do
       do k = 1, n_eval
         o = plane_of(old, k)
-        call plane_step(mat, mat%cos_phi(k), mat%sin_phi(k), solver, k, s, s_o, o, estimate, &
-                        chain, h_start, h_end, jo(min(k, size(jo))), p, sig_k, k_k, zeta, &
-                        theta, jn(min(k, size(jn))), e, dsig_dtheta, it, ok)
+        call plane_step(mat, mat%cos_phi(k), mat%sin_phi(k), c_o(k), sn_o(k), solver, k, s, &
+                        s_o, o, estimate, chain, h_start, h_end, jo(min(k, size(jo))), p, &
+                        sig_k, k_k, zeta, theta, jn(min(k, size(jn))), e, dsig_dtheta, it, ok)
         if (.not. ok) return
         iterations = max(iterations, it)
         gam = merge(1.0_dp, mat%gamma_hat(k), shared)
@@ -116,7 +123,7 @@ contains
                                           abs(dsig_dtheta(3)))], err_angle, err_traction)
         sig = sig + w * sig_k
         tangent = tangent + w * k_k
-        tangent(:, 1) = tangent(:, 1) + (gam * darea * h_end) * sig_k
+        if (darea < 0.0_dp) tangent(:, 1) = tangent(:, 1) + (gam * darea * h_end) * sig_k
         new%diss_damage = new%diss_damage + gam * area * p%wdmg
         new%diss_friction = new%diss_friction + gam * area * p%wfric
         new%stored = new%stored + gam * area * p%psi
@@ -190,10 +197,12 @@ contains
   !> theta' dG / d theta), the end values of zeta and theta, with `chain` the end state's
   !> derivatives jn, with `estimate` the wear's embedded error estimate e [rad] and
   !> dsig_dtheta = d sig_k / d theta at fixed s.
-  pure subroutine plane_step(mat, cp, sp, solver, k, s, s_o, o, estimate, chain, h_start, h_end, &
-                             jo, p, sig_k, k_k, zeta, theta, jn, e, dsig_dtheta, iterations, ok)
+  pure subroutine plane_step(mat, cp, sp, c_o, sn_o, solver, k, s, s_o, o, estimate, chain, &
+                             h_start, h_end, jo, p, sig_k, k_k, zeta, theta, jn, e, dsig_dtheta, &
+                             iterations, ok)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: cp, sp   !< cos and sin of the plane's azimuth
+    real(dp), intent(in) :: c_o, sn_o   !< cos and sin of its start angle (plane_frame)
     type(interlock_solver_t), intent(in) :: solver
     integer, intent(in) :: k
     real(dp), intent(in) :: s(3), s_o(3), h_start, h_end
@@ -206,8 +215,8 @@ contains
     integer, intent(out) :: iterations
     logical, intent(out) :: ok
     type(wear_root_t) :: rt
-    real(dp) :: c, sn, c_o, sn_o, dip_o, mu_p_o, mu_p_law, a_w, g_slip, g_trap, drv, g_drv(3), &
-                thp, fp, rot(3, 3), dzeta(3)
+    real(dp) :: c, sn, dip_o, mu_p_o, mu_p_law, a_w, g_slip, g_trap, drv, g_drv(3), thp, fp, &
+                rot(3, 3), dzeta(3), ksl(3)
     logical :: coupled, wears, trapezoidal, drivers
     integer :: j
 
@@ -225,7 +234,6 @@ contains
     ! D_o mu p_o / 2 is the error estimate's reference.
     ! (the start angle's frame: also the frame of the law's first evaluation)
     dip_o = cp * s_o(2) + sp * s_o(3)
-    call plane_frame(mat, k, o%theta, c_o, sn_o)
     call wear_weights(mat, solver%scheme, o%dmg, o%tauf(1), c_o, sn_o, s_o(1), dip_o, a_w, &
                       g_slip)
     mu_p_o = 0.0_dp
@@ -298,8 +306,10 @@ contains
     call rotated(cp, sp, c, sn, p, sig_k, k_k)
     if (wears .and. (coupled .or. chain .or. estimate)) then
       ! d sig_k / d theta at fixed s = sigma_kn e - sigma_kt1 m + R^T K_loc d sl / d theta
-      dsig_dtheta = to_macro(cp, sp, c, sn, matmul(p%k_loc, [p%sl(2), -p%sl(1), 0.0_dp]) + &
-                             [-p%sig_loc(2), p%sig_loc(1), 0.0_dp])
+      ksl = p%k_loc(:, 1) * p%sl(2) - p%k_loc(:, 2) * p%sl(1)
+      ksl(1) = ksl(1) - p%sig_loc(2)
+      ksl(2) = ksl(2) + p%sig_loc(1)
+      dsig_dtheta = to_macro(cp, sp, c, sn, ksl)
     end if
     if (chain) then
       call chain_plane(mat, cp, sp, c, sn, c_o, sn_o, s_o, o, jo, p, coupled .and. wears, &
@@ -308,7 +318,10 @@ contains
     else if (coupled .and. wears) then
       ! d zeta / d s = (dG / d s) / F' at the root, d theta / d s = theta' d zeta / d s
       rot = frame_rows(cp, sp, c, sn)
-      dzeta = matmul(g_drv, rot) * (thp / fp)
+      do j = 1, 3
+        dzeta(j) = (g_drv(1) * rot(1, j) + g_drv(2) * rot(2, j) + g_drv(3) * rot(3, j)) * &
+                   (thp / fp)
+      end do
       do j = 1, 3
         k_k(:, j) = k_k(:, j) + dsig_dtheta * dzeta(j)
       end do
@@ -449,9 +462,14 @@ contains
     logical, intent(in) :: trapezoidal, drivers, chain, traction
     real(dp), intent(out) :: drv, g_drv(3)
     type(plane_law_3d_t), intent(out) :: p
-    call plane_law_3d_parts(mat, local_separation(cp, sp, c, sn, s), &
-                            contact_round_off(cp, sp, c, sn, s), o, mu_p_o, drivers, chain, &
-                            traction, p)
+    if (flat_frame(cp, sp, c, sn)) then
+      call plane_law_3d_parts(mat, s, contact_round_off(cp, sp, c, sn, s), o, mu_p_o, drivers, &
+                              chain, traction, p)
+    else
+      call plane_law_3d_parts(mat, local_separation(cp, sp, c, sn, s), &
+                              contact_round_off(cp, sp, c, sn, s), o, mu_p_o, drivers, chain, &
+                              traction, p)
+    end if
     g_drv = 0.0_dp
     if (trapezoidal) then
       drv = a_end * p%wear_end + g_slip * p%wear_start
@@ -482,16 +500,29 @@ contains
   !> The plane's traction in the macro frame and its derivative at fixed angle, R^T K_loc R,
   !> with R = d sl / d s (rows m, e, q) = B A: B turns by theta in (n, d) (to_macro's first
   !> rotation), A by the azimuth in (t1, t2); each turns both sides in one plane of the frame,
-  !> the columns (B^T K_loc), then the rows ((B^T K_loc) B); the azimuth's only where phi /= 0.
+  !> the columns (B^T K_loc), then the rows ((B^T K_loc) B); the azimuth's only where phi /= 0,
+  !> none for a flat plane.
   pure subroutine rotated(cp, sp, c, sn, p, sig_k, k_k)
     real(dp), intent(in) :: cp, sp, c, sn
     type(plane_law_3d_t), intent(in) :: p
     real(dp), intent(out) :: sig_k(3), k_k(3, 3)
+    if (flat_frame(cp, sp, c, sn)) then
+      sig_k = p%sig_loc
+      k_k = p%k_loc
+      return
+    end if
     sig_k = to_macro(cp, sp, c, sn, p%sig_loc)
     k_k = p%k_loc
     call turn_both_sides(c, sn, 1, k_k)
     if (sp < 0.0_dp .or. sp > 0.0_dp .or. cp < 1.0_dp) call turn_both_sides(cp, sp, 2, k_k)
   end subroutine rotated
+
+  !> The plane's frame is the macro one: azimuth and angle 0 exactly (cos 1, sin 0), where the
+  !> rotations are the identity (the same values; a flat plane of a RIA whose azimuths are 0).
+  pure logical function flat_frame(cp, sp, c, sn)
+    real(dp), intent(in) :: cp, sp, c, sn
+    flat_frame = cp >= 1.0_dp .and. c >= 1.0_dp .and. abs(sp) <= 0.0_dp .and. abs(sn) <= 0.0_dp
+  end function flat_frame
 
   !> a = T^T a T for the rotation T by (cs, sn) = (cos, sin) of an angle in the plane of the
   !> indices i and i + 1: each column's pair (v_i, v_i+1) -> (cs v_i - sn v_i+1, sn v_i +
