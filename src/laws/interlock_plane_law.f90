@@ -77,7 +77,7 @@ contains
     ! which the compiler could not drop.)
     kpos = mat%kn * pos
     kts = mat%kt * sl_t
-    p%sig_n = normal_traction(mat%kn, p%dmg, sl_n)
+    p%sig_n = normal_traction(mat%kn, sl_n, p%dmg, kpos)
     if (sl_n > 0.0_dp) then
       p%k_nn = (1.0_dp - p%dmg) * mat%kn - kpos * p%gd_n
     else
@@ -89,7 +89,7 @@ contains
     else
       tk = -kts
     end if
-    p%sig_t = tangential_traction(mat%kt, p%dmg, sl_t, p%tauf, friction)
+    p%sig_t = tangential_traction(p%dmg, kts, p%tauf, friction)
     p%k_tn = tk * p%gd_n
     p%k_tt = (1.0_dp - p%dmg) * mat%kt
     if (friction) then
@@ -118,20 +118,21 @@ contains
   end subroutine plane_law
 
   !> The traction of eq. 6 normal to a plane, sigma_kn = K_n s_kn - D K_n <s_kn>_+: the bond
-  !> carries tension in the undamaged part only, contact carries compression in full.
-  elemental real(dp) function normal_traction(kn, dmg, sl_n) result(sig)
-    real(dp), intent(in) :: kn, dmg, sl_n
-    sig = kn * sl_n - dmg * (kn * max(0.0_dp, sl_n))
+  !> carries tension in the undamaged part only, contact carries compression in full. kn_pos =
+  !> K_n <s_kn>_+, which the caller's tangent uses too.
+  elemental real(dp) function normal_traction(kn, sl_n, dmg, kn_pos) result(sig)
+    real(dp), intent(in) :: kn, sl_n, dmg, kn_pos
+    sig = kn * sl_n - dmg * kn_pos
   end function normal_traction
 
   !> The traction of eq. 6 along a plane (one component of its tangential vector in 3D),
   !> sigma_kt = (1 - D) K_t s_kt + D tau_f: the undamaged part elastic, the damaged one
-  !> carrying the friction traction. `friction` false: tau_f = 0, its term left out (not added
-  !> as a zero, which the compiler could not drop).
-  elemental real(dp) function tangential_traction(kt, dmg, sl_t, tauf, friction) result(sig)
-    real(dp), intent(in) :: kt, dmg, sl_t, tauf
+  !> carrying the friction traction; kt_sl = K_t s_kt. `friction` false: tau_f = 0, its term
+  !> left out (not added as a zero, which the compiler could not drop).
+  elemental real(dp) function tangential_traction(dmg, kt_sl, tauf, friction) result(sig)
+    real(dp), intent(in) :: dmg, kt_sl, tauf
     logical, intent(in) :: friction
-    sig = (1.0_dp - dmg) * (kt * sl_t)
+    sig = (1.0_dp - dmg) * kt_sl
     if (friction) sig = sig + dmg * tauf
   end function tangential_traction
 

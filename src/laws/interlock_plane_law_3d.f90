@@ -21,7 +21,7 @@ module interlock_plane_law_3d
   implicit none
   private
   public :: plane_start_3d_t, plane_law_3d_t, plane_law_3d, plane_law_3d_parts, &
-            plane_traction_3d, slides_at_start, local_separation, contact_round_off, to_macro
+            plane_traction_3d, slides_at_start, local_frame, contact_round_off, to_macro
 
   !> One plane's state at the start of a step (SPEC section 9: D, beta, sf(2), zeta, theta,
   !> tauf(2); vectors in the plane's (e, q) frame).
@@ -76,23 +76,25 @@ contains
   !> sl = (m . s, e . s, q . s) of a plane of azimuth frame (cp, sp) = (cos, sin)(phi) at
   !> angle theta (frame c, sn): m = cos(theta) n + sin(theta) d, e = -sin(theta) n +
   !> cos(theta) d, q = -sin(phi) t1 + cos(phi) t2, with the dip direction d = cos(phi) t1 +
-  !> sin(phi) t2.
-  pure function local_separation(cp, sp, c, sn, s) result(sl)
+  !> sin(phi) t2; and the round-off of s_kn = cos(theta) s_N + sin(theta) (cos(phi) s_T1 +
+  !> sin(phi) s_T2), tie = 8 eps times the magnitudes summed: an s_kn up to it is at the tie
+  !> s_kn = 0 for the derivatives (SPEC D13; its values are kept).
+  pure subroutine local_frame(cp, sp, c, sn, s, sl, tie)
     real(dp), intent(in) :: cp, sp, c, sn, s(3)
-    real(dp) :: sl(3)
+    real(dp), intent(out) :: sl(3), tie
     real(dp) :: dip
     dip = cp * s(2) + sp * s(3)
     sl(1) = c * s(1) + sn * dip
     sl(2) = -(sn * s(1)) + c * dip
     sl(3) = -(sp * s(2)) + cp * s(3)
-  end function local_separation
+    tie = 8.0_dp * epsilon(1.0_dp) * (abs(c * s(1)) + abs(sn * dip))
+  end subroutine local_frame
 
-  !> The round-off of s_kn = cos(theta) s_N + sin(theta) (cos(phi) s_T1 + sin(phi) s_T2), 8 eps
-  !> times the magnitudes summed: an s_kn up to it is at the tie s_kn = 0 for the derivatives
-  !> (SPEC D13; its values are kept).
+  !> The round-off of s_kn of local_frame.
   pure real(dp) function contact_round_off(cp, sp, c, sn, s) result(tie)
     real(dp), intent(in) :: cp, sp, c, sn, s(3)
-    tie = 8.0_dp * epsilon(1.0_dp) * (abs(c * s(1)) + abs(sn * (cp * s(2) + sp * s(3))))
+    real(dp) :: sl(3)
+    call local_frame(cp, sp, c, sn, s, sl, tie)
   end function contact_round_off
 
   !> A local vector v (components along m, e, q) in the macro frame (n, t1, t2).
@@ -396,12 +398,12 @@ contains
     ! d sigma_kn = K_n (1 - D <s_kn>_+') ds_kn - K_n <s_kn>_+ dD, d sigma_kt = (1 - D) K_t ds_kt
     ! + D d tau_f + (tau_f - K_t s_kt) dD.
     kpos = mat%kn * p%pos
-    p%sig_loc(1) = normal_traction(mat%kn, p%dmg, p%sl(1))
+    p%sig_loc(1) = normal_traction(mat%kn, p%sl(1), p%dmg, kpos)
     p%k_loc(1, :) = 0.0_dp
     p%k_loc(1, 1) = mat%kn - (p%dmg * mat%kn) * p%dpos
     do i = 1, 2
       kts = mat%kt * p%sl(1 + i)
-      p%sig_loc(1 + i) = tangential_traction(mat%kt, p%dmg, p%sl(1 + i), p%tauf(i), .true.)
+      p%sig_loc(1 + i) = tangential_traction(p%dmg, kts, p%tauf(i), .true.)
       p%k_loc(1 + i, :) = p%dmg * p%g_tauf(:, i)
       p%k_loc(1 + i, 1 + i) = p%k_loc(1 + i, 1 + i) + (1.0_dp - p%dmg) * mat%kt
       if (p%dmg_grows) p%k_loc(1 + i, :) = p%k_loc(1 + i, :) + (p%tauf(i) - kts) * p%g_dmg

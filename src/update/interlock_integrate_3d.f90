@@ -135,16 +135,19 @@ contains
           k_f = mat%kt * (atau / (atau + slip))
         end if
       else
-        ! closed (mu p > 0: sticking at a zero trial traction) or free; the angle the traction
-        ! was computed at: the start one in the explicit scheme
-        if (scheme == scheme_explicit) then
-          call plane_frame(mat, k, old%theta(k), c, sn)
-        else
-          call plane_frame(mat, k, new%theta(k), c, sn)
-        end if
-        sl_n = c * s(1) + sn * s(2)
+        ! closed (mu p > 0: sticking at a zero trial traction, so sf = sf_o) or free; the angle
+        ! the traction was computed at: the start one in the explicit scheme. A free plane
+        ! whose slip changed is open: no frame needed.
         k_f = 0.0_dp
-        if (mat%use_friction .and. sl_n < 0.0_dp) k_f = mat%kt
+        if (mat%use_friction .and. .not. (new%sf(k) < old%sf(k) .or. new%sf(k) > old%sf(k))) then
+          if (scheme == scheme_explicit) then
+            call plane_frame(mat, k, old%theta(k), c, sn)
+          else
+            call plane_frame(mat, k, new%theta(k), c, sn)
+          end if
+          sl_n = c * s(1) + sn * s(2)
+          if (sl_n < 0.0_dp) k_f = mat%kt
+        end if
       end if
       gam = merge(1.0_dp, mat%gamma_hat(k), mat%flat)
       k33 = k33 + gam * area * ((1.0_dp - new%damage(k)) * mat%kt + new%damage(k) * k_f)

@@ -20,7 +20,7 @@ module interlock_step_3d
   use interlock_plane_law, only: plane_frame, wear_weights, start_yield, trapezoidal_weight, &
       wear_angle_error, add_wear_error, wear_error_of
   use interlock_plane_law_3d, only: plane_start_3d_t, plane_law_3d_t, plane_law_3d_parts, &
-      plane_traction_3d, local_separation, contact_round_off, to_macro
+      plane_traction_3d, local_frame, contact_round_off, to_macro
   implicit none
   private
   public :: plane_chain_t, step_3d, chain_bounded
@@ -217,7 +217,7 @@ contains
     type(wear_root_t) :: rt
     real(dp) :: c, sn, dip_o, mu_p_o, mu_p_law, a_w, g_slip, g_trap, drv, g_drv(3), thp, fp, &
                 rot(3, 3), dzeta(3), ksl(3)
-    logical :: coupled, wears, trapezoidal, drivers
+    logical :: coupled, wears, trapezoidal, drivers, flat
     integer :: j
 
     ok = .true.
@@ -249,9 +249,10 @@ contains
     zeta = o%zeta
     c = c_o
     sn = sn_o
+    flat = flat_frame(cp, sp, c, sn)
     ! (the traction with the law where the angle is not solved for)
     call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, drivers, chain, &
-                  .not. (coupled .and. wears), c, sn, p, drv, g_drv)
+                  .not. (coupled .and. wears), c, sn, flat, p, drv, g_drv)
     if (coupled .and. wears) then
       ! F(zeta) = zeta - zeta_o - G(theta(zeta)); at zeta_o the stored angle and its slope, no
       ! exponential.
@@ -263,8 +264,9 @@ contains
           call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, &
                           thp)
           call plane_frame(mat, k, theta, c, sn)
+          flat = flat_frame(cp, sp, c, sn)
           call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, .true., chain, &
-                        .false., c, sn, p, drv, g_drv)
+                        .false., c, sn, flat, p, drv, g_drv)
           fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
           call wear_root_update(rt, rt%x - o%zeta - drv, fp, solver%newton_tol, &
                                 solver%newton_max_iterations)
@@ -285,8 +287,9 @@ contains
           call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, &
                           thp)
           call plane_frame(mat, k, theta, c, sn)
+          flat = flat_frame(cp, sp, c, sn)
           call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, .true., chain, &
-                        .false., c, sn, p, drv, g_drv)
+                        .false., c, sn, flat, p, drv, g_drv)
           fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
         end if
         zeta = rt%x
@@ -303,7 +306,7 @@ contains
     ! the traction, its derivative and the energies at the wear equation's root (not at its
     ! iterates)
     if (coupled .and. wears) call plane_traction_3d(mat, o, chain, p)
-    call rotated(cp, sp, c, sn, p, sig_k, k_k)
+    call rotated(cp, sp, c, sn, flat, p, sig_k, k_k)
     if (wears .and. (coupled .or. chain .or. estimate)) then
       ! d sig_k / d theta at fixed s = sigma_kn e - sigma_kt1 m + R^T K_loc d sl / d theta
       ksl = p%k_loc(:, 1) * p%sl(2) - p%k_loc(:, 2) * p%sl(1)
@@ -449,26 +452,28 @@ contains
     end do
   end subroutine chain_plane
 
-  !> The plane law at the angle of frame (c, sn), with its traction, tangent and energies if
-  !> `traction` (else plane_traction_3d gives them), and the scheme's wear driver G with
+  !> The plane law at the angle of frame (c, sn) (`flat`: the macro one), with its traction,
+  !> tangent and energies if `traction` (else plane_traction_3d gives them), and the scheme's
+  !> wear driver G with
   !> d G / d sl: a_end D |tau_f,1| |d sf_1| + g_slip |d sf_1| (explicit, implicit), a_end
   !> wear_end + g_slip wear_start (trapezoidal: the dip component of D_o mu p_o n at the start);
   !> d G / d sl only with `drivers` (else 0).
   pure subroutine evaluate(mat, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, drivers, &
-                           chain, traction, c, sn, p, drv, g_drv)
+                           chain, traction, c, sn, flat, p, drv, g_drv)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: cp, sp, s(3), mu_p_o, a_end, g_slip, c, sn
     type(plane_start_3d_t), intent(in) :: o
     logical, intent(in) :: trapezoidal, drivers, chain, traction
+    logical, intent(in) :: flat   !< flat_frame(cp, sp, c, sn)
     real(dp), intent(out) :: drv, g_drv(3)
     type(plane_law_3d_t), intent(out) :: p
-    if (flat_frame(cp, sp, c, sn)) then
+    real(dp) :: sl(3), tie
+    if (flat) then
       call plane_law_3d_parts(mat, s, contact_round_off(cp, sp, c, sn, s), o, mu_p_o, drivers, &
                               chain, traction, p)
     else
-      call plane_law_3d_parts(mat, local_separation(cp, sp, c, sn, s), &
-                              contact_round_off(cp, sp, c, sn, s), o, mu_p_o, drivers, chain, &
-                              traction, p)
+      call local_frame(cp, sp, c, sn, s, sl, tie)
+      call plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, traction, p)
     end if
     g_drv = 0.0_dp
     if (trapezoidal) then
@@ -502,11 +507,12 @@ contains
   !> rotation), A by the azimuth in (t1, t2); each turns both sides in one plane of the frame,
   !> the columns (B^T K_loc), then the rows ((B^T K_loc) B); the azimuth's only where phi /= 0,
   !> none for a flat plane.
-  pure subroutine rotated(cp, sp, c, sn, p, sig_k, k_k)
+  pure subroutine rotated(cp, sp, c, sn, flat, p, sig_k, k_k)
     real(dp), intent(in) :: cp, sp, c, sn
+    logical, intent(in) :: flat   !< flat_frame(cp, sp, c, sn)
     type(plane_law_3d_t), intent(in) :: p
     real(dp), intent(out) :: sig_k(3), k_k(3, 3)
-    if (flat_frame(cp, sp, c, sn)) then
+    if (flat) then
       sig_k = p%sig_loc
       k_k = p%k_loc
       return
