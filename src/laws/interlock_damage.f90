@@ -4,7 +4,7 @@ module interlock_damage
   use interlock_kinds, only: dp
   implicit none
   private
-  public :: equivalent_displacement, damage_of_beta, damage_growth
+  public :: equivalent_displacement, damage_of_beta, damage_growth, damage_may_grow
 
 contains
 
@@ -61,6 +61,17 @@ contains
       end if
     end if
   end subroutine damage_growth
+
+  !> Damage may grow: beta_eq^2 = an^2 + at^2, with at^2 given, exceeds beta_old^2 less a
+  !> relative 1e-12. A caller whose at is a norm (|s_kt| / s_0t of a tangential vector) takes its
+  !> square root and damage_growth only where this holds: where it does not, beta_eq^2 computed
+  !> from the rounded norm (a few ulps from at^2) does not exceed beta_old^2 either, and
+  !> damage_growth would return the state unchanged.
+  elemental logical function damage_may_grow(an, at_squared, beta_old)
+    real(dp), intent(in) :: an, at_squared, beta_old
+    real(dp), parameter :: margin = 1.0_dp - 1.0e-12_dp
+    damage_may_grow = an * an + at_squared > margin * (beta_old * beta_old)
+  end function damage_may_grow
 
   !> D(beta) = (beta - 1)/(eta beta) clipped to [0, 1], and dD/dbeta (0 outside (1, 1/(1-eta))).
   !> D = 1 exactly from beta_break = 1/(1 - eta) on, so that a state set to full damage (a

@@ -15,7 +15,7 @@
 module interlock_plane_law_3d
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t
-  use interlock_damage, only: damage_growth
+  use interlock_damage, only: damage_growth, damage_may_grow
   use interlock_friction, only: radial_return
   use interlock_plane_law, only: normal_traction, tangential_traction
   implicit none
@@ -138,7 +138,7 @@ contains
     type(plane_start_3d_t), intent(in) :: o
     logical, intent(in) :: drivers, chain, traction
     type(plane_law_3d_t), intent(out) :: p
-    real(dp) :: pos, dpos, tn, gd_n, gd_t, mu_p, g_mu(3), tr(2), trn, nv(2), g_nv(3, 2), &
+    real(dp) :: pos, dpos, tn, tn2, gd_n, gd_t, mu_p, g_mu(3), tr(2), trn, nv(2), g_nv(3, 2), &
                 n_o(2), n_new(2), g_nn(3, 2), dsf(2), g_dsf(3, 2), slip_norm, g_slip_norm(3), &
                 atau, g_atau(3), share, g_share(3), x, g_x(3), phi_nn(2), phi_slip_norm, phi_x
     integer :: i
@@ -161,12 +161,18 @@ contains
       p%phi_wear_end = 0.0_dp
     end if
     grows = .false.
+    tn = 0.0_dp
+    gd_n = 0.0_dp
+    gd_t = 0.0_dp
     if (mat%use_damage) then
       p%dmg = o%dmg
-      tn = sqrt(sl(2) * sl(2) + sl(3) * sl(3))
-      call damage_growth(pos * mat%inv_s0n, tn * mat%inv_s0t, o%beta, o%dmg, mat%eta, &
-                         mat%inv_eta, mat%beta_break, mat%inv_s0n, mat%inv_s0t, p%beta, p%dmg, &
-                         gd_n, gd_t)
+      tn2 = sl(2) * sl(2) + sl(3) * sl(3)
+      if (damage_may_grow(pos * mat%inv_s0n, tn2 * (mat%inv_s0t * mat%inv_s0t), o%beta)) then
+        tn = sqrt(tn2)
+        call damage_growth(pos * mat%inv_s0n, tn * mat%inv_s0t, o%beta, o%dmg, mat%eta, &
+                           mat%inv_eta, mat%beta_break, mat%inv_s0n, mat%inv_s0t, p%beta, &
+                           p%dmg, gd_n, gd_t)
+      end if
       ! (gd_n, gd_t = 0 unless D grows below 1)
       grows = gd_n > 0.0_dp .or. gd_t > 0.0_dp
       if (chain .and. p%beta > o%beta) then
