@@ -645,9 +645,9 @@ contains
   !> The three-dimensional update against the 2D one on the cost study's histories, interleaved
   !> in one run, for the full model (effect set 5) and each scheme: the 2D update; the 3D update
   !> of the same material with every azimuth 0 and no T2 loading (the histories in the (n, t1)
-  !> plane: target <= 1.5 x the 2D update); the same histories turned by 30 deg in the
-  !> interface plane (T2 loading, the general 3D path); the `azimuthal` RIA with N_a = 3 on
-  !> the turned histories; and the external UMAT with the full model's PROPS: as a 2D element
+  !> plane: target <= 1.2 x the 2D update); the same histories turned by 30 deg in the
+  !> interface plane (T2 loading, the general 3D path: target <= 1.5 x); the `azimuthal` RIA
+  !> with N_a = 3 on the turned histories (target <= 3.5 x); and the external UMAT with the full model's PROPS: as a 2D element
   !> on the histories, as a 3D element (NTENS = 3) on the turned ones. Writes DIR/cost3d.csv.
   subroutine cost_study_3d()
     integer, parameter :: n_kinds = 6
@@ -733,9 +733,13 @@ contains
       write (output_unit, '(a32,3(1x,f12.1,1x,"(",f6.2,")",1x))') kind_names(kind), &
         (ns(kind, scheme), ns(kind, scheme) / ns(1, scheme), scheme = 1, n_schemes)
     end do
-    write (output_unit, '(a)') 'targets: 3D update in the (n, t1) plane <= 1.5 x 2D: ' // &
-      verdict(all(ns(2, :) / ns(1, :) <= 1.5_dp)) // ' (largest ' // &
-      fmt_ratio(maxval(ns(2, :) / ns(1, :))) // ')'
+    write (output_unit, '(a)') 'targets: 3D update in the (n, t1) plane <= 1.2 x 2D: ' // &
+      verdict(all(ns(2, :) / ns(1, :) <= 1.2_dp)) // ' (largest ' // &
+      fmt_ratio(maxval(ns(2, :) / ns(1, :))) // '); turned 30 deg <= 1.5 x: ' // &
+      verdict(all(ns(3, :) / ns(1, :) <= 1.5_dp)) // ' (largest ' // &
+      fmt_ratio(maxval(ns(3, :) / ns(1, :))) // '); azimuthal N_a = 3 turned <= 3.5 x: ' // &
+      verdict(all(ns(4, :) / ns(1, :) <= 3.5_dp)) // ' (largest ' // &
+      fmt_ratio(maxval(ns(4, :) / ns(1, :))) // ')'
     if (fails > 0) then
       write (error_unit, '(a,i0,a)') 'cost study in 3D: ', fails, ' updates failed'
       problems = problems + 1
