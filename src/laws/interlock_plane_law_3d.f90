@@ -391,8 +391,8 @@ contains
   end subroutine plane_law_3d_parts
 
   !> The rest of plane_law_3d from its damage and friction in p: the traction (eq. 6, stated in
-  !> interlock_plane_law) in the plane's frame with its derivative k_loc, with `chain` its d / d D at fixed friction, and the
-  !> energies.
+  !> interlock_plane_law) in the plane's frame with its derivative k_loc, with `chain` its
+  !> d / d D at fixed friction, and the energies.
   pure subroutine plane_traction_3d(mat, o, chain, p)
     type(interlock_material_t), intent(in) :: mat
     type(plane_start_3d_t), intent(in) :: o
