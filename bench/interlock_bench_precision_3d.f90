@@ -8,7 +8,11 @@
 !> runs'), against a reference of its own: the trapezoidal scheme at 8 times the finest run's
 !> steps (204800 and 102400 per segment).
 !> Error: the largest over the run's steps of |sigma_T - ref| / max |sigma_T,ref| (each in-plane
-!> component) and |s_N - ref| / max |s_N,ref|.
+!> component) and |s_N - ref| / max |s_N,ref|. For the trapezoidal scheme it also prints where
+!> that largest error sits (the step and its slip along the path) and the largest error beyond
+!> the first millimetre of slip: on these scenes the error of the start (the flat plane's
+!> cohesive peak, the planes' switches from stick to slip and the turn of their slip direction
+!> within a few friction lengths mu p / K_t) is most of it.
 module interlock_bench_precision_3d
   use, intrinsic :: iso_fortran_env, only: output_unit
   use interlock, only: dp, interlock_material_t, interlock_solver_t, interlock_state_3d_t, &
@@ -21,6 +25,8 @@ module interlock_bench_precision_3d
   public :: precision_study_3d
 
   real(dp), parameter :: deg = acos(-1.0_dp) / 180.0_dp, sigma_n_target = -1.5_dp
+  !> the length of every segment of both paths [mm]
+  real(dp), parameter :: path_length = 8.0_dp
   integer, parameter :: n_scenes = 2, base_steps = 25
   !> the finest run and the reference, 25 x 2^j steps per segment, per scene
   integer, parameter :: j_finest(n_scenes) = [10, 9], j_reference(n_scenes) = [13, 12]
@@ -40,7 +46,8 @@ contains
     real(dp), parameter :: targets(3) = [1.0e-3_dp, 1.0e-4_dp, 1.0e-6_dp]
     integer :: is, scheme, j, jmax, n, n_ref, n_seg, c
     real(dp), allocatable :: ref(:, :), run_n(:, :), run_2n(:, :), rich(:, :)
-    real(dp) :: err(0:10, 6), cpu(0:10, 6), t_run(0:11), cost(3), ratio
+    real(dp) :: err(0:10, 6), cpu(0:10, 6), t_run(0:11), cost(3), ratio, err_late(0:10)
+    integer :: at(0:10)
     logical :: run_ok, extra(3)
     character(len=24) :: labels(6)
 
@@ -67,7 +74,8 @@ contains
         allocate (run_n(3, 0:n_seg * base_steps))
         call timed(is, scheme, base_steps, run_n, run_ok, t_run(0))
         ok = ok .and. run_ok
-        err(0, scheme) = run_error(run_n, ref, base_steps, n_ref, n_seg)
+        call error_profile(run_n, ref, base_steps, n_ref, n_seg, err(0, scheme), at(0), &
+                           err_late(0))
         cpu(0, scheme) = t_run(0)
         do j = 1, jmax + 1
           n = base_steps * 2**j
@@ -75,7 +83,8 @@ contains
           call timed(is, scheme, n, run_2n, run_ok, t_run(j))
           ok = ok .and. run_ok
           if (j <= jmax) then
-            err(j, scheme) = run_error(run_2n, ref, n, n_ref, n_seg)
+            call error_profile(run_2n, ref, n, n_ref, n_seg, err(j, scheme), at(j), &
+                               err_late(j))
             cpu(j, scheme) = t_run(j)
           end if
           ! Richardson of the runs at n/2 and n, on the n/2 grid
@@ -90,6 +99,16 @@ contains
           call move_alloc(run_2n, run_n)
         end do
         deallocate (run_n)
+        if (scheme == scheme_trapezoidal) then
+          write (output_unit, '(/,2x,a,a)') trim(scene_names(is)), ', trapezoidal: where ' // &
+            'the largest error sits (step, slip along the path), the largest beyond 1 mm of slip'
+          do j = 0, jmax
+            n = base_steps * 2**j
+            write (output_unit, '(4x,a,i6,a,es9.2,a,i6,a,f8.4,a,es9.2)') 'n =', n, ': ', &
+              err(j, scheme), ' at step', at(j), ' (', &
+              path_length * real(at(j), dp) / real(n, dp), ' mm); beyond 1 mm', err_late(j)
+          end do
+        end if
       end do
       write (output_unit, '(/,2x,a,a)') trim(scene_names(is)), &
         ': CPU seconds to reach a relative error of 1e-3, 1e-4, 1e-6 (* extrapolated)'
@@ -215,17 +234,36 @@ contains
   pure real(dp) function run_error(q, ref, n, n_ref, n_seg) result(e)
     real(dp), intent(in) :: q(:, 0:), ref(:, 0:)
     integer, intent(in) :: n, n_ref, n_seg
-    real(dp) :: scale_t, scale_n
+    integer :: at
+    real(dp) :: e_late
+    call error_profile(q, ref, n, n_ref, n_seg, e, at, e_late)
+  end function run_error
+
+  !> run_error, the step `at` where it sits and the largest error beyond the first millimetre
+  !> of slip along the path (e_late).
+  pure subroutine error_profile(q, ref, n, n_ref, n_seg, e, at, e_late)
+    real(dp), intent(in) :: q(:, 0:), ref(:, 0:)
+    integer, intent(in) :: n, n_ref, n_seg
+    real(dp), intent(out) :: e, e_late
+    integer, intent(out) :: at
+    real(dp) :: scale_t, scale_n, e_i
     integer :: i, stride
     stride = n_ref / n
     scale_n = maxval(abs(ref(1, :)))
     scale_t = maxval(abs(ref(2:3, :)))
     e = 0.0_dp
+    e_late = 0.0_dp
+    at = 0
     do i = 0, n_seg * n
-      e = max(e, abs(q(1, i) - ref(1, i * stride)) / scale_n, &
-              maxval(abs(q(2:3, i) - ref(2:3, i * stride))) / scale_t)
+      e_i = max(abs(q(1, i) - ref(1, i * stride)) / scale_n, &
+                maxval(abs(q(2:3, i) - ref(2:3, i * stride))) / scale_t)
+      if (e_i > e) then
+        e = e_i
+        at = i
+      end if
+      if (path_length * real(i, dp) > real(n, dp)) e_late = max(e_late, e_i)
     end do
-  end function run_error
+  end subroutine error_profile
 
   !> CPU time to reach `target`: log-log interpolation between the two levels that bracket it
   !> where the runs stay below it from the finer one on; beyond the finest run, extrapolated
