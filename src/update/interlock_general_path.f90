@@ -14,14 +14,14 @@ module interlock_general_path
   use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, n_schemes, &
       scheme_list
   use interlock_numbers, only: format_real, format_integer
-  use interlock_state, only: interlock_state_t, interlock_state_3d_t
+  use interlock_state, only: interlock_state_3d_t
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
   use interlock_step_3d, only: plane_chain_t, step_3d, chain_bounded
   use interlock_substep_control, only: next_sub_increment, count_attempt, after_failure, &
-      keep_trial, next_size, check_chain
+      keep_trial, next_size, check_chain, largest_increments
   implicit none
   private
-  public :: general_update_3d, single_step, substep, largest_increments
+  public :: general_update_3d, single_step, substep
 
 contains
 
@@ -206,19 +206,5 @@ contains
     new = cur
     info%substeps = n_accepted
   end subroutine substep
-
-  !> The largest damage and angle increments over the n planes of an update (its info report).
-  pure subroutine largest_increments(n, old, new, info)
-    integer, intent(in) :: n
-    type(interlock_state_t), intent(in) :: old, new
-    type(interlock_info_t), intent(inout) :: info
-    integer :: k
-    info%max_damage_increment = new%damage(1) - old%damage(1)
-    info%max_angle_increment = abs(new%theta(1) - old%theta(1))
-    do k = 2, n
-      info%max_damage_increment = max(info%max_damage_increment, new%damage(k) - old%damage(k))
-      info%max_angle_increment = max(info%max_angle_increment, abs(new%theta(k) - old%theta(k)))
-    end do
-  end subroutine largest_increments
 
 end module interlock_general_path

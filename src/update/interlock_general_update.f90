@@ -18,7 +18,8 @@ module interlock_general_update
   use interlock_state, only: interlock_state_t, interlock_state_3d_t
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
   use interlock_kernels, only: kernel_step
-  use interlock_general_path, only: single_step, substep, largest_increments
+  use interlock_general_path, only: single_step, substep
+  use interlock_substep_control, only: largest_increments
   implicit none
   private
   public :: general_update, kernel_update
