@@ -3,17 +3,16 @@
 !> (interlock_general_path, the 3D law with s_T2 = 0 and every azimuth 0, whose tangent's
 !> (1:2, 1:2) block is the 2D tangent), optionally with error-controlled substepping, and the
 !> exact algorithmic tangent of what was computed. A failed local solve is retried on
-!> sub-increments before it is reported. interlock_update
-!> (interlock_integrate) calls it, through kernel_update (a specialised kernel without
-!> substepping, with only the checks it needs), for everything but the flat-plane laws it runs
-!> itself. A module of its own, compiled as the UMAT's path rather than as the laws
+!> sub-increments before it is reported. interlock_update (interlock_integrate) calls it,
+!> through kernel_update (a specialised kernel without substepping, with only the checks it
+!> needs), for everything but the flat-plane laws it runs itself. A module of its own, compiled as the UMAT's path rather than as the laws
 !> (src/CMakeLists.txt): general_update is too large to be inlined into the front, where it
 !> would make every call of the small laws pay for saving registers; the small kernel_update
 !> is inlined there.
 module interlock_general_update
   use interlock_kinds, only: dp, is_finite_value, within_separation_bound, separation_bound
-  use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, &
-      n_schemes, scheme_list, kernel_general
+  use interlock_material, only: interlock_material_t, interlock_solver_t, n_schemes, &
+      scheme_list, kernel_general
   use interlock_numbers, only: format_real, format_integer
   use interlock_state, only: interlock_state_t, interlock_state_3d_t
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
