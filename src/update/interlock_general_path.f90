@@ -21,7 +21,7 @@ module interlock_general_path
       keep_trial, next_size, check_chain, largest_increments
   implicit none
   private
-  public :: general_update_3d, single_step, substep, check_setup, report_failure
+  public :: general_update_3d, single_step, substep
 
 contains
 
@@ -36,9 +36,15 @@ contains
     real(dp), intent(out) :: sigma(3), tangent(3, 3)
     type(interlock_info_t), intent(inout) :: info
 
-    call check_setup(mat, solver, info)
-    if (info%status /= status_ok) then
-      call fail(old, new, sigma, tangent, info, info%status, info%message)
+    if (.not. mat%prepared) then
+      call fail(old, new, sigma, tangent, info, status_bad_input, &
+                'the material has not been prepared (call interlock_material_prepare)')
+      return
+    end if
+    if (solver%scheme < 1 .or. solver%scheme > n_schemes) then
+      call fail(old, new, sigma, tangent, info, status_bad_input, 'scheme = ' // &
+                format_integer(solver%scheme) // ' is inadmissible: admissible ' // &
+                scheme_list())
       return
     end if
     if (.not. all(within_separation_bound(s))) then
@@ -73,35 +79,6 @@ contains
     call largest_increments(mat%n_planes, old%interlock_state_t, new%interlock_state_t, info)
   end subroutine general_update_3d
 
-  !> The checks every general update makes first, 2D and 3D (before the bounds of the
-  !> separation, which has 2 or 3 components): the material prepared and the scheme one of the
-  !> library's. On refusal info%status = status_bad_input and info%message names the value.
-  pure subroutine check_setup(mat, solver, info)
-    type(interlock_material_t), intent(in) :: mat
-    type(interlock_solver_t), intent(in) :: solver
-    type(interlock_info_t), intent(inout) :: info
-    if (.not. mat%prepared) then
-      info%status = status_bad_input
-      info%message = 'the material has not been prepared (call interlock_material_prepare)'
-    else if (solver%scheme < 1 .or. solver%scheme > n_schemes) then
-      info%status = status_bad_input
-      info%message = 'scheme = ' // format_integer(solver%scheme) // &
-                     ' is inadmissible: admissible ' // scheme_list()
-    end if
-  end subroutine check_setup
-
-  !> A failed update's report: its status and message, no damage or angle increment (the state
-  !> stays the start state).
-  pure subroutine report_failure(info, code, message)
-    type(interlock_info_t), intent(inout) :: info
-    integer, intent(in) :: code
-    character(len=*), intent(in) :: message
-    info%status = code
-    info%message = message
-    info%max_damage_increment = 0.0_dp
-    info%max_angle_increment = 0.0_dp
-  end subroutine report_failure
-
   !> Report a failure: `new` = `old`, the traction at the start, no tangent.
   pure subroutine fail(old, new, sigma, tangent, info, code, message)
     type(interlock_state_3d_t), intent(in) :: old
@@ -110,7 +87,10 @@ contains
     type(interlock_info_t), intent(inout) :: info
     integer, intent(in) :: code
     character(len=*), intent(in) :: message
-    call report_failure(info, code, message)
+    info%status = code
+    info%message = message
+    info%max_damage_increment = 0.0_dp
+    info%max_angle_increment = 0.0_dp
     new = old
     sigma = [old%sigma(1), old%sigma(2), old%sigma_t2]
     tangent = 0.0_dp

@@ -12,12 +12,12 @@
 module interlock_general_update
   use interlock_kinds, only: dp, is_finite_value, within_separation_bound, separation_bound
   use interlock_material, only: interlock_material_t, interlock_solver_t, n_schemes, &
-      kernel_general
-  use interlock_numbers, only: format_real
+      scheme_list, kernel_general
+  use interlock_numbers, only: format_real, format_integer
   use interlock_state, only: interlock_state_t, interlock_state_3d_t
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
   use interlock_kernels, only: kernel_step
-  use interlock_general_path, only: single_step, substep, check_setup, report_failure
+  use interlock_general_path, only: single_step, substep
   use interlock_substep_control, only: largest_increments
   implicit none
   private
@@ -71,9 +71,15 @@ contains
     logical :: done
     real(dp) :: err, h_first
 
-    call check_setup(mat, solver, info)
-    if (info%status /= status_ok) then
-      call fail(old, new, sigma, tangent, info, info%status, info%message)
+    if (.not. mat%prepared) then
+      call fail(old, new, sigma, tangent, info, status_bad_input, &
+                'the material has not been prepared (call interlock_material_prepare)')
+      return
+    end if
+    if (solver%scheme < 1 .or. solver%scheme > n_schemes) then
+      call fail(old, new, sigma, tangent, info, status_bad_input, 'scheme = ' // &
+                format_integer(solver%scheme) // ' is inadmissible: admissible ' // &
+                scheme_list())
       return
     end if
     if (.not. (within_separation_bound(s(1)) .and. within_separation_bound(s(2)))) then
@@ -140,7 +146,10 @@ contains
     type(interlock_info_t), intent(inout) :: info
     integer, intent(in) :: code
     character(len=*), intent(in) :: message
-    call report_failure(info, code, message)
+    info%status = code
+    info%message = message
+    info%max_damage_increment = 0.0_dp
+    info%max_angle_increment = 0.0_dp
     new = old
     sigma = old%sigma
     tangent = 0.0_dp
