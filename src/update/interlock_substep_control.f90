@@ -1,5 +1,5 @@
-!> The control of substepping (SPEC section 5), shared by the 2D and the 3D update, so that
-!> both take the same sub-increments on the same history: sizes are powers of 2 of the
+!> The control of substepping (SPEC section 5) of the general path (interlock_general_path),
+!> 2D and 3D, and the update's report of its largest increments: sizes are powers of 2 of the
 !> increment (the partition does not vary with s except where a decision switches, so the
 !> chained tangent is the exact derivative of what is computed); with error control a trial
 !> sub-increment is kept when its embedded estimate is within the tolerance, or when it is
@@ -9,11 +9,12 @@
 module interlock_substep_control
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t
+  use interlock_state, only: interlock_state_t
   use interlock_status, only: interlock_info_t, status_local_failure, message_len
   implicit none
   private
   public :: smallest_fraction, next_sub_increment, count_attempt, after_failure, keep_trial, &
-            next_size, stiffness_scale, check_chain
+            next_size, stiffness_scale, check_chain, largest_increments
 
   !> A sub-increment ending this close to the end of the increment ends there.
   real(dp), parameter :: smallest_fraction = 1.0e-12_dp
@@ -126,5 +127,21 @@ contains
     message = 'the update is unstable on small sub-increments (its derivative grows without ' // &
               'bound): use the implicit scheme or a smaller increment'
   end function unstable_message
+
+  !> The largest damage and angle increments over the n planes of an update (its info report,
+  !> which a host's increment control reads). Here, among the update's controls compiled as the
+  !> UMAT's path (src/CMakeLists.txt), so that it is inlined into the update's front.
+  pure subroutine largest_increments(n, old, new, info)
+    integer, intent(in) :: n
+    type(interlock_state_t), intent(in) :: old, new
+    type(interlock_info_t), intent(inout) :: info
+    integer :: k
+    info%max_damage_increment = new%damage(1) - old%damage(1)
+    info%max_angle_increment = abs(new%theta(1) - old%theta(1))
+    do k = 2, n
+      info%max_damage_increment = max(info%max_damage_increment, new%damage(k) - old%damage(k))
+      info%max_angle_increment = max(info%max_angle_increment, abs(new%theta(k) - old%theta(k)))
+    end do
+  end subroutine largest_increments
 
 end module interlock_substep_control

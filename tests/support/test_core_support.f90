@@ -3,7 +3,7 @@
 !> finite-difference tangent, and a portable random-number generator for the random histories.
 module test_core_support
   use interlock
-  use interlock_integrate_3d, only: general_update_3d
+  use interlock_general_path, only: general_update_3d
   use funit, only: assertTrue
   implicit none
   private

@@ -65,7 +65,7 @@ SUPPORT_LAYER = {"test_umat_interface": "umat"}
 TEST_SUFFIXES = (".pf", ".f90", ".F90", ".f")
 # Modules of the general update path, which the kernels' agreement test holds the kernels to:
 # they must not be built on the kernels.
-GENERAL_PATH = {"interlock_microplane", "interlock_schemes", "interlock_ria"}
+GENERAL_PATH = {"interlock_general_path", "interlock_step_3d", "interlock_plane_law_3d"}
 KERNEL_MODULES = {"interlock_kernels"}
 
 MODULE_RE = re.compile(r"^\s*module\s+(?!procedure\b|subroutine\b|function\b)(\w+)\s*(!.*)?$",

@@ -69,7 +69,7 @@ contains
     sigma = [new%sigma(1), new%sigma(2), new%sigma_t2]
   end subroutine dual_step_3d
 
-  !> Sub-increments linear in s, as the 2D update takes them (interlock_general_update:substep,
+  !> Sub-increments linear in s, as the general path takes them (interlock_general_path:substep,
   !> the same control and the same sizes): tol < 0, the whole increment in one step (a failed
   !> solve is reported as status_local_failure, for the caller to retry); tol finite, error
   !> control on the embedded wear estimate; tol = huge, sizes split only as failures require.
