@@ -1,15 +1,14 @@
-!> The law of one microplane over one step, stated once for every path that integrates it: the
-!> flat-plane laws of the front (interlock_integrate), the specialised kernels
-!> (interlock_kernels) and the general path (interlock_microplane, interlock_schemes, which adds
-!> the derivative columns that substepping chains). In the plane's frame: damage (eq. 9-11,
-!> interlock_damage), Coulomb friction on the damaged part (eq. 7, interlock_friction), the
-!> traction of eq. 6 (normal_traction, tangential_traction: also the 3D law's,
-!> interlock_plane_law_3d) and its exact 2x2 tangent, the frictional work, the damage
-!> dissipation and the stored energy (eq. 21); the wear driver of each scheme (eq. 22-25,
-!> decisions D4, D11), the coupled wear equation of the implicit and trapezoidal schemes and the
-!> embedded error estimate of substepping. Small scalar procedures: with link-time
-!> optimisation they are inlined into each caller (src/CMakeLists.txt), where what a caller does
-!> not use is dropped.
+!> The law of one microplane of a 2D interface over one step, for the 2D fast paths: the
+!> flat-plane laws of the front (interlock_integrate) and the specialised kernels
+!> (interlock_kernels); the general path, 2D and 3D, has the 3D plane law
+!> (interlock_plane_law_3d), which calls this module's mechanism pieces. In the plane's
+!> frame: damage (eq. 9-11, interlock_damage), Coulomb friction on the damaged part (eq. 7,
+!> interlock_friction), the traction of eq. 6 (normal_traction, tangential_traction: also the
+!> 3D law's) and its exact 2x2 tangent, the frictional work, the damage dissipation and the
+!> stored energy (eq. 21); the wear driver of each scheme (eq. 22-25, decisions D4, D11), the
+!> coupled wear equation of the implicit and trapezoidal schemes and the embedded error
+!> estimate of substepping. Small scalar procedures: with link-time optimisation they are
+!> inlined into each caller (src/CMakeLists.txt), where what a caller does not use is dropped.
 module interlock_plane_law
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t, scheme_explicit, scheme_implicit

@@ -7,8 +7,8 @@
 !> state (which substepping needs). The explicit scheme freezes each angle within the step,
 !> so with wear it runs the same kernel with the stored angle's sine and cosine, and one
 !> exponential per plane that wore; the coupled schemes add the scalar wear equation per
-!> wearing plane. Each kernel agrees with the general path (interlock_ria) to round-off; a
-!> test checks it.
+!> wearing plane. Each kernel agrees with the general path (interlock_general_path) to round-off;
+!> core_kernels checks it.
 module interlock_kernels
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_explicit, &
@@ -28,8 +28,8 @@ contains
   !> One increment with a specialised kernel. `done` is false when the kernel does not apply
   !> to this increment (a separated RIA, or a coupled wear equation the bounded iteration did
   !> not solve): the caller then takes the general path, which can also sub-increment.
-  !> wear_error: the embedded local error estimate of substepping, as interlock_ria:ria_step
-  !> computes it (every scheme).
+  !> wear_error: the embedded local error estimate of substepping, as the general path's
+  !> one step computes it (interlock_general_path:single_step; every scheme).
   pure subroutine kernel_step(mat, solver, s, old, new, tangent, done, iterations, wear_error)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
