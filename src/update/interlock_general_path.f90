@@ -57,13 +57,14 @@ contains
     end if
 
     if (solver%substep_tol > 0.0_dp) then
-      call substep(mat, solver, s, old, new, tangent, info, solver%substep_tol, 1.0_dp)
+      call substep(mat, solver, s, old, new, tangent, info, solver%substep_tol, 1.0_dp, &
+                   .false.)
     else
       call single_step(mat, solver, s, old, new, tangent, info)
       if (info%status == status_local_failure) then
         ! The one-step solve failed: retry on sub-increments, split only as failures require.
         info%status = status_ok
-        call substep(mat, solver, s, old, new, tangent, info, huge(1.0_dp), 0.5_dp)
+        call substep(mat, solver, s, old, new, tangent, info, huge(1.0_dp), 0.5_dp, .false.)
       end if
     end if
     if (info%status /= status_ok) then
@@ -145,8 +146,11 @@ contains
   !> increment does not vary with s except where a decision switches. Each plane's state
   !> carries its derivatives with respect to the end of the increment from one sub-increment to
   !> the next (interlock_step_3d's chain), so that the tangent is the exact one of the chain.
-  !> `new` is written only on success; nothing is allocated.
-  pure subroutine substep(mat, solver, s, old, new, tangent, info, tol, h_first)
+  !> `in_plane`: an increment of the 2D law (s_T2 = 0, no strike state, every azimuth 0) whose
+  !> caller takes the (1:2, 1:2) block of the tangent alone (step_3d's in_plane). The state
+  !> and the chain of the current and the trial sub-increment take turns in two slots (no
+  !> copies); `new` is written only on success; nothing is allocated.
+  pure subroutine substep(mat, solver, s, old, new, tangent, info, tol, h_first, in_plane)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     real(dp), intent(in) :: s(3), tol, h_first
@@ -154,19 +158,26 @@ contains
     type(interlock_state_3d_t), intent(inout) :: new
     real(dp), intent(out) :: tangent(3, 3)
     type(interlock_info_t), intent(inout) :: info
-    type(interlock_state_3d_t) :: cur, trial
-    type(plane_chain_t) :: jo(max_planes), jn(max_planes)
+    logical, intent(in) :: in_plane
+    type(interlock_state_3d_t) :: st(2)
+    type(plane_chain_t) :: jc(max_planes, 2)
     real(dp) :: ds(3), s_old(3), s_end(3), alpha, h, a_end, err, chain_peak, tangent_trial(3, 3)
-    integer :: it, n_accepted, k
+    integer :: it, n_accepted, k, n, cur, trial
     logical :: solved, stable, control, kept, give_up, allowed
 
     control = tol >= 0.0_dp .and. tol < huge(1.0_dp)
+    n = mat%n_planes
     s_old = [old%s(1), old%s(2), old%s_t2]
     ds = s - s_old
-    cur = old
-    do k = 1, mat%n_planes
-      jo(k) = plane_chain_t(0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp)
+    ! (a trial sub-increment writes every field but the planes beyond n, which stay old's)
+    st(1) = old
+    st(2) = old
+    do k = 1, n
+      jc(k, 1) = plane_chain_t(0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp)
+      jc(k, 2) = jc(k, 1)
     end do
+    cur = 1
+    trial = 2
     alpha = 0.0_dp
     h = h_first
     n_accepted = 0
@@ -179,12 +190,11 @@ contains
       if (a_end >= 1.0_dp) s_end = s
       call count_attempt(info, solver%max_substeps, allowed)
       if (.not. allowed) return
-      trial = cur
-      call step_3d(mat, solver, s_end, cur, trial, tangent_trial, it, solved, .true., alpha, &
-                   a_end, jo, jn, .true., err)
+      call step_3d(mat, solver, s_end, st(cur), st(trial), tangent_trial, it, solved, .true., &
+                   alpha, a_end, jc(1:n, cur), jc(1:n, trial), .true., err, in_plane)
       info%newton_iterations = max(info%newton_iterations, it)
       stable = .true.
-      if (solved) stable = chain_bounded(jn, mat%n_planes)
+      if (solved) stable = chain_bounded(jc(:, trial), n)
       if (.not. (solved .and. stable)) then
         call after_failure(solved, h, info, give_up)
         if (give_up) return
@@ -193,7 +203,7 @@ contains
       kept = keep_trial(control, err, tol, h)
       if (kept) then
         cur = trial
-        jo(1:mat%n_planes) = jn(1:mat%n_planes)
+        trial = 3 - cur
         tangent = tangent_trial
         chain_peak = max(chain_peak, maxval(abs(tangent)))
         alpha = a_end
@@ -203,7 +213,7 @@ contains
     end do
     call check_chain(mat, chain_peak, info, allowed)
     if (.not. allowed) return
-    new = cur
+    new = st(cur)
     info%substeps = n_accepted
   end subroutine substep
 

@@ -179,14 +179,14 @@ contains
     old_3d%sigma_t2 = 0.0_dp
     if (tol > 0.0_dp) then
       call substep(mat, solver, [s(1), s(2), 0.0_dp], old_3d, new_3d, tangent_3d, info, tol, &
-                   h_first)
+                   h_first, .true.)
     else
       new_3d = old_3d
       call single_step(mat, solver, [s(1), s(2), 0.0_dp], old_3d, new_3d, tangent_3d, info)
       if (info%status == status_local_failure) then
         info%status = status_ok
         call substep(mat, solver, [s(1), s(2), 0.0_dp], old_3d, new_3d, tangent_3d, info, &
-                     huge(1.0_dp), 0.5_dp)
+                     huge(1.0_dp), 0.5_dp, .true.)
       end if
     end if
     if (info%status /= status_ok) return

@@ -40,9 +40,14 @@ contains
   !> d sigma / d s at the fixed start state. With `chain`, the step is a sub-increment of an
   !> increment with end separation S, from its fraction h_start to h_end (ds_o / dS = h_start,
   !> ds / dS = h_end); jo(k) are the start planes' derivatives d / dS, and `tangent` = d sigma /
-  !> dS, jn(k) the end planes'. `estimate`: the embedded error estimate of the wear in err.
+  !> dS, jn(k) the end planes' (h_start = 0: the start state is the increment's, jo = 0 is not
+  !> read). `estimate`: the embedded error estimate of the wear in err. `in_plane` (with `chain`; absent: false): the increment lies in the (n, t1) plane (s_T2 = 0
+  !> at its start and end, no strike component in the state, every azimuth 0), where every
+  !> strike derivative is 0, and only the (1:2, 1:2) block of `tangent` is wanted: the chain
+  !> carries the columns S_N and S_T1 alone (the others of jn stay as they come, the rest of
+  !> `tangent` 0).
   pure subroutine step_3d(mat, solver, s, old, new, tangent, iterations, ok, chain, h_start, &
-                          h_end, jo, jn, estimate, err)
+                          h_end, jo, jn, estimate, err, in_plane)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     real(dp), intent(in) :: s(3), h_start, h_end
@@ -54,16 +59,21 @@ contains
     logical, intent(in) :: chain, estimate
     type(plane_chain_t), intent(in) :: jo(:)
     type(plane_chain_t), intent(inout) :: jn(:)
+    logical, intent(in), optional :: in_plane
     type(plane_law_3d_t) :: p
     type(plane_start_3d_t) :: o
     real(dp) :: area, darea, gam, w, sig(3), sig_k(3), k_k(3, 3), s_o(3), old_sig(3), zeta, &
                 theta, e, dsig_dtheta(3), err_angle, err_traction, c_o(max_planes), &
                 sn_o(max_planes)
-    integer :: k, n_eval, it
+    integer :: k, n_eval, it, ncol
     logical :: shared
 
     ok = .true.
     iterations = 0
+    ncol = 3
+    if (present(in_plane)) then
+      if (in_plane) ncol = 2
+    end if
     err = 0.0_dp
     err_angle = 0.0_dp
     err_traction = 0.0_dp
@@ -113,8 +123,9 @@ contains
       do k = 1, n_eval
         o = plane_of(old, k)
         call plane_step(mat, mat%cos_phi(k), mat%sin_phi(k), c_o(k), sn_o(k), solver, k, s, &
-                        s_o, o, estimate, chain, h_start, h_end, jo(min(k, size(jo))), p, &
-                        sig_k, k_k, zeta, theta, jn(min(k, size(jn))), e, dsig_dtheta, it, ok)
+                        s_o, o, estimate, chain, h_start, h_end, jo(min(k, size(jo))), ncol, &
+                        p, sig_k, k_k, zeta, theta, jn(min(k, size(jn))), e, dsig_dtheta, it, &
+                        ok)
         if (.not. ok) return
         iterations = max(iterations, it)
         gam = merge(1.0_dp, mat%gamma_hat(k), shared)
@@ -144,7 +155,9 @@ contains
                                       [sig(1), max(abs(sig(2)), abs(sig(3)))])
   end subroutine step_3d
 
-  !> The chained derivatives of the planes in use stay far from overflow.
+  !> The chained derivatives of the planes in use stay far from overflow: the sum of their
+  !> magnitudes (one comparison per plane; a NaN is not caught here but by the update's
+  !> finiteness check).
   pure logical function chain_bounded(jn, n)
     type(plane_chain_t), intent(in) :: jn(:)
     integer, intent(in) :: n
@@ -152,9 +165,8 @@ contains
     real(dp), parameter :: bound = 1.0e100_dp
     chain_bounded = .true.
     do k = 1, n
-      if (any(abs(jn(k)%beta) > bound) .or. any(abs(jn(k)%dmg) > bound) .or. &
-          any(abs(jn(k)%sf) > bound) .or. any(abs(jn(k)%zeta) > bound) .or. &
-          any(abs(jn(k)%tauf) > bound)) chain_bounded = .false.
+      if (sum(abs(jn(k)%beta)) + sum(abs(jn(k)%dmg)) + sum(abs(jn(k)%sf)) + &
+          sum(abs(jn(k)%zeta)) + sum(abs(jn(k)%tauf)) > bound) chain_bounded = .false.
     end do
   end function chain_bounded
 
@@ -198,8 +210,8 @@ contains
   !> derivatives jn, with `estimate` the wear's embedded error estimate e [rad] and
   !> dsig_dtheta = d sig_k / d theta at fixed s.
   pure subroutine plane_step(mat, cp, sp, c_o, sn_o, solver, k, s, s_o, o, estimate, chain, &
-                             h_start, h_end, jo, p, sig_k, k_k, zeta, theta, jn, e, dsig_dtheta, &
-                             iterations, ok)
+                             h_start, h_end, jo, ncol, p, sig_k, k_k, zeta, theta, jn, e, &
+                             dsig_dtheta, iterations, ok)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: cp, sp   !< cos and sin of the plane's azimuth
     real(dp), intent(in) :: c_o, sn_o   !< cos and sin of its start angle (plane_frame)
@@ -209,6 +221,7 @@ contains
     type(plane_start_3d_t), intent(in) :: o
     logical, intent(in) :: estimate, chain
     type(plane_chain_t), intent(in) :: jo
+    integer, intent(in) :: ncol   !< the columns of the chain (chain_plane)
     type(plane_law_3d_t), intent(out) :: p
     real(dp), intent(out) :: sig_k(3), k_k(3, 3), zeta, theta, e, dsig_dtheta(3)
     type(plane_chain_t), intent(inout) :: jn
@@ -306,7 +319,8 @@ contains
     ! the traction, its derivative and the energies at the wear equation's root (not at its
     ! iterates)
     if (coupled .and. wears) call plane_traction_3d(mat, o, chain, p)
-    call rotated(cp, sp, c, sn, flat, p, sig_k, k_k)
+    ! (with `chain`, chain_plane gives k_k)
+    call rotated(cp, sp, c, sn, flat, .not. chain, p, sig_k, k_k)
     if (wears .and. (coupled .or. chain .or. estimate)) then
       ! d sig_k / d theta at fixed s = sigma_kn e - sigma_kt1 m + R^T K_loc d sl / d theta
       ksl = p%k_loc(:, 1) * p%sl(2) - p%k_loc(:, 2) * p%sl(1)
@@ -317,7 +331,7 @@ contains
     if (chain) then
       call chain_plane(mat, cp, sp, c, sn, c_o, sn_o, s_o, o, jo, p, coupled .and. wears, &
                        wears .and. .not. coupled, trapezoidal, a_w, g_slip, mu_p_o, g_drv, &
-                       thp, fp, h_start, h_end, zeta, k_k, jn)
+                       thp, fp, h_start, h_end, zeta, ncol, k_k, jn)
     else if (coupled .and. wears) then
       ! d zeta / d s = (dG / d s) / F' at the root, d theta / d s = theta' d zeta / d s
       rot = frame_rows(cp, sp, c, sn)
@@ -348,10 +362,13 @@ contains
   !> jo%theta) or the root's, d zeta = (d zeta_o + dG at fixed theta) / F' (`coupled_wear`);
   !> the start weight g_slip's own derivative (explicit D_o |tauf_o,1|, trapezoidal
   !> D_o mu p_o / 2 with mu p_o from the start separation, ds_o = h_start dS, at theta_o).
-  !> Returns d sig_k / dS in k_k and the end state's derivatives jn.
+  !> Returns d sig_k / dS in k_k and the end state's derivatives jn, their columns 1 to ncol
+  !> (the others untouched). On the first sub-increment (h_start = 0) jo = 0 and the start
+  !> state's terms vanish: they are left out. ncol = 2 (in_plane_chain): the (1:2, 1:2) block
+  !> of k_k and no strike rows of jn (which stay 0).
   pure subroutine chain_plane(mat, cp, sp, c, sn, c_o, sn_o, s_o, o, jo, p, coupled_wear, &
                               explicit_wear, trapezoidal, a_w, g_slip, mu_p_o, g_drv, thp, fp, &
-                              h_start, h_end, zeta, k_k, jn)
+                              h_start, h_end, zeta, ncol, k_k, jn)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: cp, sp, c, sn, c_o, sn_o, s_o(3), a_w, g_slip, mu_p_o, &
                             g_drv(3), thp, fp, h_start, h_end, zeta
@@ -359,37 +376,42 @@ contains
     type(plane_chain_t), intent(in) :: jo
     type(plane_law_3d_t), intent(in) :: p
     logical, intent(in) :: coupled_wear, explicit_wear, trapezoidal
+    integer, intent(in) :: ncol
     real(dp), intent(out) :: k_k(3, 3)
     type(plane_chain_t), intent(inout) :: jn
-    real(dp) :: rot(3, 3), dsl(3, 3), jphi(3), dg(3), d_drv(3), dtheta(3), dsig_loc(3, 3), tn2, &
-                dsn_o(3), x_o, q2, h1(2), h2(2), hdmg1, phi1, phi2
-    integer :: i, j
+    real(dp) :: rot(3, 3), dsl(3, 3), jphi(3), dg(3), d_drv(3), dtheta(3), dsig_loc(3), tn2, &
+                dsn_o(3), x_o, q2, h1(2), h2(2), hdmg1, phi1, phi2, gdsl, dsig_dth(3)
+    integer :: i, j, nrow
+    logical :: fresh
 
+    fresh = .not. h_start > 0.0_dp
+    ! (the strike rows of jn: 0 with the columns S_N, S_T1 alone)
+    nrow = ncol - 1
     ! the start direction of slip's angle: d phi_o = n_o' . dtauf_o / |tauf_o|
     jphi = 0.0_dp
-    if (p%mean) then
+    if (p%mean .and. .not. fresh) then
       tn2 = o%tauf(1) * o%tauf(1) + o%tauf(2) * o%tauf(2)
       jphi = (o%tauf(1) * jo%tauf(:, 2) - o%tauf(2) * jo%tauf(:, 1)) / tn2
     end if
-    ! the start weight's derivative
-    dg = 0.0_dp
-    if (explicit_wear) then
-      dg = jo%dmg * abs(o%tauf(1)) + (o%dmg * merge(-1.0_dp, 1.0_dp, o%tauf(1) < 0.0_dp)) * &
-           jo%tauf(:, 1)
-    else if (trapezoidal) then
-      dsn_o = 0.0_dp
-      ! (closed at the tie s_kn = 0, SPEC D13, as the plane law)
-      x_o = -(c_o * s_o(1) + sn_o * (cp * s_o(2) + sp * s_o(3)))
-      if (s_o(1) * mat%inv_h_n < 1.0_dp .and. &
-          .not. -contact_round_off(cp, sp, c_o, sn_o, s_o) > x_o) &
-        dsn_o = -(mat%mu_eff * mat%kn) * (h_start * [c_o, sn_o * cp, sn_o * sp] + &
-                 (-sn_o * s_o(1) + c_o * (cp * s_o(2) + sp * s_o(3))) * jo%theta)
-      dg = 0.5_dp * (jo%dmg * mu_p_o + o%dmg * dsn_o)
-    end if
     ! the wear driver's derivatives through the start state: G = a_w Q1 + g_slip Q2 (a plane
-    ! that wears; the law gives the drivers' derivatives only there)
+    ! that wears; the law gives the drivers' derivatives only there), with the start weight's
+    ! derivative dg
     d_drv = 0.0_dp
-    if (coupled_wear .or. explicit_wear) then
+    if ((coupled_wear .or. explicit_wear) .and. .not. fresh) then
+      dg = 0.0_dp
+      if (explicit_wear) then
+        dg = jo%dmg * abs(o%tauf(1)) + (o%dmg * merge(-1.0_dp, 1.0_dp, o%tauf(1) < 0.0_dp)) * &
+             jo%tauf(:, 1)
+      else if (trapezoidal) then
+        dsn_o = 0.0_dp
+        ! (closed at the tie s_kn = 0, SPEC D13, as the plane law)
+        x_o = -(c_o * s_o(1) + sn_o * (cp * s_o(2) + sp * s_o(3)))
+        if (s_o(1) * mat%inv_h_n < 1.0_dp .and. &
+            .not. -contact_round_off(cp, sp, c_o, sn_o, s_o) > x_o) &
+          dsn_o = -(mat%mu_eff * mat%kn) * (h_start * [c_o, sn_o * cp, sn_o * sp] + &
+                   (-sn_o * s_o(1) + c_o * (cp * s_o(2) + sp * s_o(3))) * jo%theta)
+        dg = 0.5_dp * (jo%dmg * mu_p_o + o%dmg * dsn_o)
+      end if
       if (trapezoidal) then
         h1 = -(p%g_wear_end(2:3) - p%dmg_wear_end * p%g_dmg(2:3))
         hdmg1 = merge(p%dmg_wear_end, 0.0_dp, p%dmg_kept)
@@ -410,45 +432,67 @@ contains
     end if
     ! d sl at fixed angle, then the angle the traction is taken at
     rot = frame_rows(cp, sp, c, sn)
-    do j = 1, 3
+    do j = 1, ncol
       dsl(:, j) = h_end * rot(:, j)
     end do
     if (coupled_wear) then
-      jn%zeta = (jo%zeta + matmul(g_drv, dsl) + d_drv) / fp
-      dtheta = thp * jn%zeta
-      jn%theta = dtheta
+      do j = 1, ncol
+        gdsl = g_drv(1) * dsl(1, j) + g_drv(2) * dsl(2, j) + g_drv(3) * dsl(3, j)
+        if (fresh) then
+          jn%zeta(j) = gdsl / fp
+        else
+          jn%zeta(j) = (jo%zeta(j) + gdsl + d_drv(j)) / fp
+        end if
+        dtheta(j) = thp * jn%zeta(j)
+        jn%theta(j) = dtheta(j)
+      end do
     else
       dtheta = jo%theta
     end if
-    do j = 1, 3
-      dsl(:, j) = dsl(:, j) + [p%sl(2), -p%sl(1), 0.0_dp] * dtheta(j)
+    do j = 1, ncol
+      dsl(1, j) = dsl(1, j) + p%sl(2) * dtheta(j)
+      dsl(2, j) = dsl(2, j) - p%sl(1) * dtheta(j)
     end do
     if (.not. coupled_wear) then
-      jn%zeta = jo%zeta + matmul(g_drv, dsl) + d_drv
-      jn%theta = jo%theta
-      if (explicit_wear .and. zeta > o%zeta) jn%theta = thp * jn%zeta
-    end if
-    ! the end state
-    jn%dmg = matmul(p%g_dmg, dsl)
-    if (p%dmg_kept) jn%dmg = jn%dmg + jo%dmg
-    jn%beta = matmul(p%g_beta, dsl)
-    if (p%beta_kept) jn%beta = jn%beta + jo%beta
-    do i = 1, 2
-      jn%tauf(:, i) = matmul(p%g_tauf(:, i), dsl) - p%g_tauf(2, i) * jo%sf(:, 1) - &
-                      p%g_tauf(3, i) * jo%sf(:, 2) + p%phi_tauf(i) * jphi
-      jn%sf(:, i) = matmul(p%g_sf(:, i), dsl) - p%g_sf(2, i) * jo%sf(:, 1) - &
-                    p%g_sf(3, i) * jo%sf(:, 2) + jo%sf(:, i) + p%phi_sf(i) * jphi
-    end do
-    ! the traction: d sig_loc, then R^T d sig_loc + (d sig_k / d theta at fixed sl) d theta
-    do j = 1, 3
-      dsig_loc(:, j) = matmul(p%k_loc, dsl(:, j))
-      if (p%dmg_kept) dsig_loc(:, j) = dsig_loc(:, j) + p%dmg_sig * jo%dmg(j)
-      do i = 1, 2
-        dsig_loc(1 + i, j) = dsig_loc(1 + i, j) + p%dmg * (jn%tauf(j, i) - &
-                             dot_product(p%g_tauf(:, i), dsl(:, j)))
+      do j = 1, ncol
+        gdsl = g_drv(1) * dsl(1, j) + g_drv(2) * dsl(2, j) + g_drv(3) * dsl(3, j)
+        if (fresh) then
+          jn%zeta(j) = gdsl
+        else
+          jn%zeta(j) = jo%zeta(j) + gdsl + d_drv(j)
+        end if
+        jn%theta(j) = jo%theta(j)
+        if (explicit_wear .and. zeta > o%zeta) jn%theta(j) = thp * jn%zeta(j)
       end do
-      k_k(:, j) = to_macro(cp, sp, c, sn, dsig_loc(:, j)) + &
-                  (p%sig_loc(1) * rot(2, :) - p%sig_loc(2) * rot(1, :)) * dtheta(j)
+    end if
+    ! the end state, and the traction: d sig_loc, then R^T d sig_loc + (d sig_k / d theta at
+    ! fixed sl) d theta
+    dsig_dth = p%sig_loc(1) * rot(2, :) - p%sig_loc(2) * rot(1, :)
+    k_k = 0.0_dp
+    do j = 1, ncol
+      jn%dmg(j) = dot_product(p%g_dmg, dsl(:, j))
+      jn%beta(j) = dot_product(p%g_beta, dsl(:, j))
+      do i = 1, nrow
+        jn%tauf(j, i) = dot_product(p%g_tauf(:, i), dsl(:, j))
+        jn%sf(j, i) = dot_product(p%g_sf(:, i), dsl(:, j))
+      end do
+      dsig_loc = matmul(p%k_loc, dsl(:, j))
+      if (.not. fresh) then
+        if (p%dmg_kept) then
+          jn%dmg(j) = jn%dmg(j) + jo%dmg(j)
+          dsig_loc = dsig_loc + p%dmg_sig * jo%dmg(j)
+        end if
+        if (p%beta_kept) jn%beta(j) = jn%beta(j) + jo%beta(j)
+        do i = 1, nrow
+          jn%tauf(j, i) = jn%tauf(j, i) - p%g_tauf(2, i) * jo%sf(j, 1) - &
+                          p%g_tauf(3, i) * jo%sf(j, 2) + p%phi_tauf(i) * jphi(j)
+          jn%sf(j, i) = jn%sf(j, i) - p%g_sf(2, i) * jo%sf(j, 1) - &
+                        p%g_sf(3, i) * jo%sf(j, 2) + jo%sf(j, i) + p%phi_sf(i) * jphi(j)
+          dsig_loc(1 + i) = dsig_loc(1 + i) + p%dmg * (jn%tauf(j, i) - &
+                            dot_product(p%g_tauf(:, i), dsl(:, j)))
+        end do
+      end if
+      k_k(:, j) = to_macro(cp, sp, c, sn, dsig_loc) + dsig_dth * dtheta(j)
     end do
   end subroutine chain_plane
 
@@ -506,18 +550,20 @@ contains
   !> with R = d sl / d s (rows m, e, q) = B A: B turns by theta in (n, d) (to_macro's first
   !> rotation), A by the azimuth in (t1, t2); each turns both sides in one plane of the frame,
   !> the columns (B^T K_loc), then the rows ((B^T K_loc) B); the azimuth's only where phi /= 0,
-  !> none for a flat plane.
-  pure subroutine rotated(cp, sp, c, sn, flat, p, sig_k, k_k)
+  !> none for a flat plane. k_k only `with_tangent` (else not set).
+  pure subroutine rotated(cp, sp, c, sn, flat, with_tangent, p, sig_k, k_k)
     real(dp), intent(in) :: cp, sp, c, sn
     logical, intent(in) :: flat   !< flat_frame(cp, sp, c, sn)
+    logical, intent(in) :: with_tangent
     type(plane_law_3d_t), intent(in) :: p
     real(dp), intent(out) :: sig_k(3), k_k(3, 3)
     if (flat) then
       sig_k = p%sig_loc
-      k_k = p%k_loc
+      if (with_tangent) k_k = p%k_loc
       return
     end if
     sig_k = to_macro(cp, sp, c, sn, p%sig_loc)
+    if (.not. with_tangent) return
     k_k = p%k_loc
     call turn_both_sides(c, sn, 1, k_k)
     if (sp < 0.0_dp .or. sp > 0.0_dp .or. cp < 1.0_dp) call turn_both_sides(cp, sp, 2, k_k)
