@@ -26,9 +26,11 @@ module interlock_step_3d
   public :: plane_chain_t, step_3d, chain_bounded
 
   !> The derivatives of one plane's state with respect to the end separation S of the
-  !> increment (columns S_N, S_T1, S_T2).
+  !> increment (columns S_N, S_T1, S_T2); atauf1 = d |tau_f,1| / dS, the explicit scheme's start
+  !> weight's (its sign is not the stored tau_f,1's where that is 0 at the tie s_kn = 0).
   type :: plane_chain_t
     real(dp) :: beta(3), dmg(3), sf(3, 2), zeta(3), theta(3), tauf(3, 2)
+    real(dp) :: atauf1(3) = 0.0_dp
   end type plane_chain_t
 
 contains
@@ -108,7 +110,10 @@ contains
         new%theta(k) = old%theta(k)
         new%tauf(k) = 0.0_dp
         new%tauf_strike(k) = 0.0_dp
-        if (chain) jn(k)%tauf = 0.0_dp
+        if (chain) then
+          jn(k)%tauf = 0.0_dp
+          jn(k)%atauf1 = 0.0_dp
+        end if
       end do
     else
       ! Identical flat planes share one history: computed once, copied (SPEC section 7).
@@ -312,8 +317,12 @@ contains
       thp = 0.0_dp
       if (.not. coupled .and. wears) then
         ! explicit (eq. 25): the angle of the worn zeta for the next step
-        if (zeta > o%zeta) call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), &
-                                           mat%inv_zeta0(k), zeta, theta, thp)
+        if (zeta > o%zeta) then
+          call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), zeta, theta, &
+                          thp)
+        else
+          thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), o%theta)
+        end if
       end if
     end if
     ! the traction, its derivative and the energies at the wear equation's root (not at its
@@ -331,7 +340,7 @@ contains
     if (chain) then
       call chain_plane(mat, cp, sp, c, sn, c_o, sn_o, s_o, o, jo, p, coupled .and. wears, &
                        wears .and. .not. coupled, trapezoidal, a_w, g_slip, mu_p_o, g_drv, &
-                       thp, fp, h_start, h_end, zeta, ncol, k_k, jn)
+                       thp, fp, h_start, h_end, ncol, k_k, jn)
     else if (coupled .and. wears) then
       ! d zeta / d s = (dG / d s) / F' at the root, d theta / d s = theta' d zeta / d s
       rot = frame_rows(cp, sp, c, sn)
@@ -368,10 +377,10 @@ contains
   !> of k_k and no strike rows of jn (which stay 0).
   pure subroutine chain_plane(mat, cp, sp, c, sn, c_o, sn_o, s_o, o, jo, p, coupled_wear, &
                               explicit_wear, trapezoidal, a_w, g_slip, mu_p_o, g_drv, thp, fp, &
-                              h_start, h_end, zeta, ncol, k_k, jn)
+                              h_start, h_end, ncol, k_k, jn)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: cp, sp, c, sn, c_o, sn_o, s_o(3), a_w, g_slip, mu_p_o, &
-                            g_drv(3), thp, fp, h_start, h_end, zeta
+                            g_drv(3), thp, fp, h_start, h_end
     type(plane_start_3d_t), intent(in) :: o
     type(plane_chain_t), intent(in) :: jo
     type(plane_law_3d_t), intent(in) :: p
@@ -382,7 +391,7 @@ contains
     real(dp) :: rot(3, 3), dsl(3, 3), jphi(3), dg(3), d_drv(3), dtheta(3), dsig_loc(3), tn2, &
                 dsn_o(3), x_o, q2, h1(2), h2(2), hdmg1, phi1, phi2, gdsl, dsig_dth(3)
     integer :: i, j, nrow
-    logical :: fresh
+    logical :: fresh, negative_tauf1
 
     fresh = .not. h_start > 0.0_dp
     ! (the strike rows of jn: 0 with the columns S_N, S_T1 alone)
@@ -400,8 +409,7 @@ contains
     if ((coupled_wear .or. explicit_wear) .and. .not. fresh) then
       dg = 0.0_dp
       if (explicit_wear) then
-        dg = jo%dmg * abs(o%tauf(1)) + (o%dmg * merge(-1.0_dp, 1.0_dp, o%tauf(1) < 0.0_dp)) * &
-             jo%tauf(:, 1)
+        dg = jo%dmg * abs(o%tauf(1)) + o%dmg * jo%atauf1
       else if (trapezoidal) then
         dsn_o = 0.0_dp
         ! (closed at the tie s_kn = 0, SPEC D13, as the plane law)
@@ -462,11 +470,16 @@ contains
           jn%zeta(j) = jo%zeta(j) + gdsl + d_drv(j)
         end if
         jn%theta(j) = jo%theta(j)
-        if (explicit_wear .and. zeta > o%zeta) jn%theta(j) = thp * jn%zeta(j)
+        if (explicit_wear) jn%theta(j) = thp * jn%zeta(j)
       end do
     end if
     ! the end state, and the traction: d sig_loc, then R^T d sig_loc + (d sig_k / d theta at
-    ! fixed sl) d theta
+    ! fixed sl) d theta. d |tau_f,1| = sign(tau_f,1) d tau_f,1; where tau_f,1 = 0 on a plane
+    ! closed at the tie (SPEC D13: tau_f = mu p n with mu p = 0, mu p >= 0 on the closed side)
+    ! the sign is n_1's, which d tau_f,1 / d s_kn = -mu K_n n_1 carries (a free or sticking
+    ! plane: 0 there)
+    negative_tauf1 = p%tauf(1) < 0.0_dp .or. &
+                     (.not. p%tauf(1) > 0.0_dp .and. p%g_tauf(1, 1) > 0.0_dp)
     dsig_dth = p%sig_loc(1) * rot(2, :) - p%sig_loc(2) * rot(1, :)
     k_k = 0.0_dp
     do j = 1, ncol
@@ -491,6 +504,11 @@ contains
           dsig_loc(1 + i) = dsig_loc(1 + i) + p%dmg * (jn%tauf(j, i) - &
                             dot_product(p%g_tauf(:, i), dsl(:, j)))
         end do
+      end if
+      if (negative_tauf1) then
+        jn%atauf1(j) = -jn%tauf(j, 1)
+      else
+        jn%atauf1(j) = jn%tauf(j, 1)
       end if
       k_k(:, j) = to_macro(cp, sp, c, sn, dsig_loc) + dsig_dth * dtheta(j)
     end do

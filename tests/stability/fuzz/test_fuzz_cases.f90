@@ -11,14 +11,17 @@ program test_fuzz_cases
 
   call run_case('beyond_bound_seed2_surface_path', beyond_bound_seed2_surface_path)
   call run_case('beyond_bound_seed2_tiny_zeta0', beyond_bound_seed2_tiny_zeta0)
+  call run_case('fuzz3d_seed20261126_explicit_planes_at_tie', &
+                fuzz3d_seed20261126_explicit_planes_at_tie)
   if (suite_summary('stability_fuzz_cases') /= 0) error stop 1
 
 contains
 
-  !> Every effect on, the material prepared; the trapezoidal scheme with error control to
-  !> substep_tol; the initial state.
-  subroutine prepare_trapezoidal(mat, substep_tol, solver, old)
+  !> Every effect on, the material prepared; the scheme with error control to substep_tol; the
+  !> initial state.
+  subroutine prepare(mat, scheme, substep_tol, solver, old)
     type(interlock_material_t), intent(inout) :: mat
+    integer, intent(in) :: scheme
     real(dp), intent(in) :: substep_tol
     type(interlock_solver_t), intent(out) :: solver
     type(interlock_state_3d_t), intent(out) :: old
@@ -27,46 +30,108 @@ contains
     mat%effect = .true.
     call interlock_material_prepare(mat, stat, msg)
     call assert_true(stat == status_ok, 'material: ' // trim(msg))
-    solver%scheme = scheme_trapezoidal
+    solver%scheme = scheme
     solver%substep_tol = substep_tol
     call interlock_state_3d_init(mat, old)
-  end subroutine prepare_trapezoidal
+  end subroutine prepare
 
   !> Plane k ends at s_kn = 0 (to round-off) and each column of the tangent is the one-sided
-  !> derivative on the side where s_j moves the plane into contact (SPEC D13), against the
-  !> one-sided difference Richardson-extrapolated from steps h and h/2 (fast wear curves the
-  !> traction within h).
+  !> derivative on the side where s_j moves the plane into contact (SPEC D13).
   subroutine closed_side(mat, solver, old, s, k)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     type(interlock_state_3d_t), intent(in) :: old
     real(dp), intent(in) :: s(3)
     integer, intent(in) :: k
-    type(interlock_state_3d_t) :: new, tmp
+    type(interlock_state_3d_t) :: new
     type(interlock_info_t) :: info
-    real(dp) :: sigma(3), tangent(3, 3), normal(3), f1(3), f2(3), k3(3, 3), sp(3), h, dir, &
-                richardson(3)
+    real(dp) :: sigma(3), tangent(3, 3), normal(3), d(3)
     integer :: j
-    character(len=160) :: what
+    character(len=20) :: what
     call interlock_update_3d(mat, solver, s, old, new, sigma, tangent, info)
-    normal = [cos(new%theta(k)), sin(new%theta(k)) * cos(mat%phi(k)), &
-              sin(new%theta(k)) * sin(mat%phi(k))]
+    normal = plane_normal(mat, new, k)
     call assert_true(abs(dot_product(normal, s)) <= 1.0e-15_dp, 'plane at s_kn = 0')
-    h = 1.0e-7_dp * maxval(abs(s))
     do j = 1, 3
-      dir = -sign(1.0_dp, normal(j))
-      sp = s
-      sp(j) = s(j) + dir * h
-      call interlock_update_3d(mat, solver, sp, old, tmp, f1, k3, info)
-      sp(j) = s(j) + dir * 0.5_dp * h
-      call interlock_update_3d(mat, solver, sp, old, tmp, f2, k3, info)
-      richardson = (2.0_dp * (f2 - sigma) / (0.5_dp * h) - (f1 - sigma) / h) * dir
-      write (what, '(a,i0,a,3es12.4,a,3es12.4)') 'column ', j, ': tangent', tangent(:, j), &
-        ' closing side', richardson
-      call assert_true(maxval(abs(tangent(:, j) - richardson)) <= 1.0e-3_dp * &
-                       max(maxval(abs(richardson)), maxval(abs(tangent(:, j)))), trim(what))
+      d = 0.0_dp
+      d(j) = -sign(1.0_dp, normal(j))
+      write (what, '(a,i0)') 'column ', j
+      call one_sided(mat, solver, old, s, sigma, tangent, d, trim(what))
     end do
   end subroutine closed_side
+
+  !> The planes `ties` end at s_kn = 0 (to round-off) and the tangent's derivative along d =
+  !> -(sum of their normals), which moves every one of them into contact, is the one-sided
+  !> derivative on that side (SPEC D13 for each plane); so is each column j whose s_j moves
+  !> them all into contact on one side.
+  subroutine closed_together(mat, solver, old, s, ties)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    type(interlock_state_3d_t), intent(in) :: old
+    real(dp), intent(in) :: s(3)
+    integer, intent(in) :: ties(:)
+    type(interlock_state_3d_t) :: new
+    type(interlock_info_t) :: info
+    real(dp) :: sigma(3), tangent(3, 3), d(3), normals(3, size(ties))
+    integer :: i, j
+    character(len=20) :: what
+    call interlock_update_3d(mat, solver, s, old, new, sigma, tangent, info)
+    do i = 1, size(ties)
+      normals(:, i) = plane_normal(mat, new, ties(i))
+    end do
+    do j = 1, 3
+      if (all(normals(j, :) > 0.0_dp) .or. all(normals(j, :) < 0.0_dp)) then
+        d = 0.0_dp
+        d(j) = -sign(1.0_dp, normals(j, 1))
+        write (what, '(a,i0)') 'column ', j
+        call one_sided(mat, solver, old, s, sigma, tangent, d, trim(what))
+      end if
+    end do
+    d = 0.0_dp
+    do i = 1, size(ties)
+      call assert_true(abs(dot_product(plane_normal(mat, new, ties(i)), s)) <= 1.0e-15_dp, &
+                       'plane at s_kn = 0')
+      d = d - plane_normal(mat, new, ties(i))
+    end do
+    d = d / norm2(d)
+    do i = 1, size(ties)
+      call assert_true(dot_product(plane_normal(mat, new, ties(i)), d) < 0.0_dp, &
+                       'd moves every plane into contact')
+    end do
+    call one_sided(mat, solver, old, s, sigma, tangent, d, 'closing all')
+  end subroutine closed_together
+
+  !> The normal of plane k at its angle in `state`.
+  pure function plane_normal(mat, state, k) result(normal)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_state_3d_t), intent(in) :: state
+    integer, intent(in) :: k
+    real(dp) :: normal(3)
+    normal = [cos(state%theta(k)), sin(state%theta(k)) * cos(mat%phi(k)), &
+              sin(state%theta(k)) * sin(mat%phi(k))]
+  end function plane_normal
+
+  !> tangent . d is the one-sided derivative of the traction along d (|d| = 1) at s, the
+  !> difference Richardson-extrapolated from steps h and h/2 (fast wear curves the traction
+  !> within h).
+  subroutine one_sided(mat, solver, old, s, sigma, tangent, d, label)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    type(interlock_state_3d_t), intent(in) :: old
+    real(dp), intent(in) :: s(3), sigma(3), tangent(3, 3), d(3)
+    character(len=*), intent(in) :: label
+    type(interlock_state_3d_t) :: tmp
+    type(interlock_info_t) :: info
+    real(dp) :: f1(3), f2(3), k3(3, 3), h, richardson(3), kd(3)
+    character(len=160) :: what
+    h = 1.0e-7_dp * maxval(abs(s))
+    call interlock_update_3d(mat, solver, s + h * d, old, tmp, f1, k3, info)
+    call interlock_update_3d(mat, solver, s + 0.5_dp * h * d, old, tmp, f2, k3, info)
+    richardson = 2.0_dp * (f2 - sigma) / (0.5_dp * h) - (f1 - sigma) / h
+    kd = matmul(tangent, d)
+    write (what, '(a,a,3es12.4,a,3es12.4)') label, ': tangent', kd, ' closing side', richardson
+    call assert_true(maxval(abs(kd - richardson)) <= 1.0e-3_dp * &
+                     max(maxval(abs(richardson)), maxval(abs(kd))), trim(what))
+  end subroutine one_sided
 
   !> The update from `old` to s is accepted and its tangent passes the fuzzers' check.
   subroutine replay_3d(mat, solver, old, s)
@@ -123,7 +188,7 @@ contains
     mat%phi(1:6) = [-1.5041904254583807e+00_dp, 3.9355884750202144e+00_dp, &
       -3.2984527093520466e+00_dp, 4.4449701218400879e+00_dp, -3.1631336213787170e-01_dp, &
       -1.5172545536002575e+00_dp]
-    call prepare_trapezoidal(mat, 6.0100113849687975e-05_dp, solver, old)
+    call prepare(mat, scheme_trapezoidal, 6.0100113849687975e-05_dp, solver, old)
     old%damage(1:6) = 1.0_dp
     old%beta(1:6) = 3.05192449214850740e+03_dp
     old%sf(1:6) = [3.50300908360978713e-03_dp, -4.88046027065697566e-04_dp, &
@@ -184,10 +249,77 @@ contains
     mat%zeta0(6) = 1.0038848328181973e-64_dp
     mat%phi(1:7) = [0.0_dp, 0.0_dp, 0.0_dp, 1.0471975511965976e+00_dp, &
       1.0471975511965976e+00_dp, 2.0943951023931953e+00_dp, 2.0943951023931953e+00_dp]
-    call prepare_trapezoidal(mat, 1.0637710449713071e-03_dp, solver, old)
+    call prepare(mat, scheme_trapezoidal, 1.0637710449713071e-03_dp, solver, old)
     s = [-3.5097549731983784e-05_dp, -1.0471795598336267e-06_dp, -7.2492041785926331e-06_dp]
 
     call replay_3d(mat, solver, old, s)
   end subroutine beyond_bound_seed2_tiny_zeta0
+
+  !> `interlock-fuzz --3d 3000000 --seed 20261126`, update 2173960: seven planes with azimuths,
+  !> pre-fractured, very fast wear (zeta_0 = 1.95e-6 N/mm), the explicit scheme with error
+  !> control (64 sub-increments), a separation path through the origin (the end separation is
+  !> 1.208 times the start one). Planes 5, 6 and 7 wore until they just lost contact and stay at
+  !> s_kn = 0 (within 3e-20 mm) over every sub-increment: the tie, closed for the derivatives
+  !> (SPEC D13). There the friction traction is 0 and its closed-side derivative d(mu p) n
+  !> is not: the next sub-increment's start weight D_o |tau_f,1| has the derivative D_o
+  !> |n_1| d(mu p) (n_1 < 0 here), and the closed side's wear turns the plane, d theta = theta'
+  !> d zeta, though the stored zeta did not grow. Column 3 closes plane 6 on one side and
+  !> planes 5 and 7 on the other: the one-sided differences of sigma_N are -1.0270e3 and
+  !> -1.0291e3 MPa/mm, the tangent (each plane on its closed side) -1.0284e3; taking
+  !> d |tau_f,1| = d tau_f,1 at tau_f,1 = 0 and d theta = 0 there gave -2.4e3. Columns 1 and 2
+  !> close all three planes.
+  subroutine fuzz3d_seed20261126_explicit_planes_at_tie()
+    type(interlock_material_t) :: mat
+    type(interlock_solver_t) :: solver
+    type(interlock_state_3d_t) :: old
+    real(dp) :: s(3)
+
+    mat%sigma0_n = 4.0615255473861717e-01_dp
+    mat%sigma0_t = 5.3898357143188957e-01_dp
+    mat%gc = 1.0352227455559602e-03_dp
+    mat%eta = 9.9607349458362715e-01_dp
+    mat%mu = 1.6251065713046391e+00_dp
+    mat%h_n = 6.5273828885864725e+02_dp
+    mat%prefractured = .true.
+    mat%n_planes = 7
+    mat%gamma_hat(1:7) = [5.0052713788254675e-02_dp, 2.8714266690513968e-01_dp, &
+      1.7830245234328537e-01_dp, 2.9516597333814513e-02_dp, 6.2021408929845194e-02_dp, &
+      2.8691166059369499e-01_dp, 1.0605250010596556e-01_dp]
+    mat%theta0(1:7) = [-5.1693509241682989e-01_dp, -1.0303997836627039e+00_dp, &
+      -4.8791669457364240e-01_dp, -1.2981602344863410e+00_dp, 1.2859260216729662e+00_dp, &
+      1.1850318195720728e+00_dp, 7.8886018712705508e-01_dp]
+    mat%thetaf(1:7) = [-1.8477860703289481e-01_dp, -8.5978115245446907e-01_dp, &
+      -1.6490906702363922e-01_dp, -2.4593519965546479e-01_dp, 1.8914815178015004e-01_dp, &
+      2.5902484822162530e-01_dp, 2.3479242410293280e-01_dp]
+    mat%zeta0(1:7) = 1.9522425237232919e-06_dp
+    mat%phi(1:7) = [6.1354171808468276e+00_dp, -1.1570866537062596e+00_dp, &
+      9.6473294894337736e-01_dp, 2.3794913177950900e+00_dp, -3.5529649046057616e+00_dp, &
+      3.2220330082143795e+00_dp, -3.4128899604694145e+00_dp]
+    call prepare(mat, scheme_explicit, 1.7554254809966024e-04_dp, solver, old)
+    old%damage(1:7) = 1.0_dp
+    old%beta(1:7) = 2.54679388911619128e+02_dp
+    old%sf(1:7) = [1.35956633856067417e-04_dp, 9.92702593237930876e-05_dp, &
+      7.52924092800245817e-05_dp, 4.74899483618645220e-05_dp, -1.34358516217138700e-04_dp, &
+      -1.32841093272367149e-04_dp, -1.36218798302670729e-04_dp]
+    old%zeta(1:7) = [0.0_dp, 4.61049339989048874e-06_dp, 0.0_dp, 0.0_dp, &
+      1.90712564951946953e-06_dp, 1.89436628968878435e-06_dp, 8.53105353943687002e-07_dp]
+    old%theta(1:7) = [-5.16935092416829889e-01_dp, -8.75864608416352608e-01_dp, &
+      -4.87916694573642395e-01_dp, -1.29816023448634099e+00_dp, 6.02063346630184348e-01_dp, &
+      6.09934149725303354e-01_dp, 5.92708885423513965e-01_dp]
+    old%tauf(1:7) = [0.0_dp, 3.17526060171428939e-02_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp]
+    old%sf_strike(1:7) = [-5.79485786259386414e-06_dp, 9.18555211460786507e-05_dp, &
+      -1.04021519408475702e-04_dp, -6.04755770212984922e-05_dp, -2.38832195432153858e-05_dp, &
+      3.12388058994387776e-05_dp, -8.18889765456016388e-06_dp]
+    old%tauf_strike(1:7) = [0.0_dp, 2.93698041835568080e-02_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+      0.0_dp, 0.0_dp]
+    old%s = [7.60931695634928495e-05_dp, 1.11046003287094115e-04_dp]
+    old%s_t2 = -2.23882503908805079e-05_dp
+    old%sigma = [2.10969181480203912e-03_dp, 1.24287063668395755e-02_dp]
+    old%sigma_t2 = -7.33030142011723788e-03_dp
+    s = [9.1915879543450336e-05_dp, 1.3413675787813528e-04_dp, -2.7043632666657424e-05_dp]
+
+    call replay_3d(mat, solver, old, s)
+    call closed_together(mat, solver, old, s, [5, 6, 7])
+  end subroutine fuzz3d_seed20261126_explicit_planes_at_tie
 
 end program test_fuzz_cases
