@@ -21,7 +21,7 @@ module interlock_general_path
       keep_trial, next_size, check_chain, largest_increments
   implicit none
   private
-  public :: general_update_3d, single_step, substep
+  public :: general_update_3d, single_step, integrate_increment
 
 contains
 
@@ -56,17 +56,8 @@ contains
       return
     end if
 
-    if (solver%substep_tol > 0.0_dp) then
-      call substep(mat, solver, s, old, new, tangent, info, solver%substep_tol, 1.0_dp, &
-                   .false.)
-    else
-      call single_step(mat, solver, s, old, new, tangent, info)
-      if (info%status == status_local_failure) then
-        ! The one-step solve failed: retry on sub-increments, split only as failures require.
-        info%status = status_ok
-        call substep(mat, solver, s, old, new, tangent, info, huge(1.0_dp), 0.5_dp, .false.)
-      end if
-    end if
+    call integrate_increment(mat, solver, s, old, new, tangent, info, solver%substep_tol, &
+                             1.0_dp, .false.)
     if (info%status /= status_ok) then
       call fail(old, new, sigma, tangent, info, info%status, info%message)
       return
@@ -79,6 +70,32 @@ contains
     end if
     call largest_increments(mat%n_planes, old%interlock_state_t, new%interlock_state_t, info)
   end subroutine general_update_3d
+
+  !> The increment from `old` to s on the general path: tol > 0, error-controlled
+  !> sub-increments from the fraction h_first; else the whole increment as one step, retried on
+  !> sub-increments (split only as failures require) when its solve fails. `in_plane`: the
+  !> increment lies in the (n, t1) plane of a RIA with every azimuth 0 (substep's 2-column
+  !> chain). info%status says whether `new` and `tangent` were written.
+  pure subroutine integrate_increment(mat, solver, s, old, new, tangent, info, tol, h_first, &
+                                      in_plane)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    real(dp), intent(in) :: s(3), tol, h_first
+    type(interlock_state_3d_t), intent(in) :: old
+    type(interlock_state_3d_t), intent(inout) :: new
+    real(dp), intent(out) :: tangent(3, 3)
+    type(interlock_info_t), intent(inout) :: info
+    logical, intent(in) :: in_plane
+    if (tol > 0.0_dp) then
+      call substep(mat, solver, s, old, new, tangent, info, tol, h_first, in_plane)
+    else
+      call single_step(mat, solver, s, old, new, tangent, info)
+      if (info%status == status_local_failure) then
+        info%status = status_ok
+        call substep(mat, solver, s, old, new, tangent, info, huge(1.0_dp), 0.5_dp, in_plane)
+      end if
+    end if
+  end subroutine integrate_increment
 
   !> Report a failure: `new` = `old`, the traction at the start, no tangent.
   pure subroutine fail(old, new, sigma, tangent, info, code, message)

@@ -17,7 +17,7 @@ module interlock_general_update
   use interlock_state, only: interlock_state_t, interlock_state_3d_t
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
   use interlock_kernels, only: kernel_step
-  use interlock_general_path, only: single_step, substep
+  use interlock_general_path, only: integrate_increment
   use interlock_substep_control, only: largest_increments
   implicit none
   private
@@ -177,18 +177,10 @@ contains
     old_3d%tauf_strike(1:n) = 0.0_dp
     old_3d%s_t2 = 0.0_dp
     old_3d%sigma_t2 = 0.0_dp
-    if (tol > 0.0_dp) then
-      call substep(mat, solver, [s(1), s(2), 0.0_dp], old_3d, new_3d, tangent_3d, info, tol, &
-                   h_first, .true.)
-    else
-      new_3d = old_3d
-      call single_step(mat, solver, [s(1), s(2), 0.0_dp], old_3d, new_3d, tangent_3d, info)
-      if (info%status == status_local_failure) then
-        info%status = status_ok
-        call substep(mat, solver, [s(1), s(2), 0.0_dp], old_3d, new_3d, tangent_3d, info, &
-                     huge(1.0_dp), 0.5_dp, .true.)
-      end if
-    end if
+    ! (single_step writes the material's planes only)
+    if (.not. tol > 0.0_dp) new_3d = old_3d
+    call integrate_increment(mat, solver, [s(1), s(2), 0.0_dp], old_3d, new_3d, tangent_3d, &
+                             info, tol, h_first, .true.)
     if (info%status /= status_ok) return
     new = new_3d%interlock_state_t
     tangent = tangent_3d(1:2, 1:2)
