@@ -6,7 +6,7 @@ module interlock_friction
   use interlock_kinds, only: dp
   implicit none
   private
-  public :: friction_step, radial_return
+  public :: friction_step, radial_return, direction_turn
 
   !> d s_kt / d (s_kn, s_kt1, s_kt2): column i is the unit vector of s_kt,i
   real(dp), parameter :: e_t(3, 2) = reshape([0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], &
@@ -83,5 +83,21 @@ contains
     end do
     slip = (trn - mu_p) * inv_kt
   end subroutine radial_return
+
+  !> The turn of the friction traction's direction over a step from tauf_o to tauf, 1 - cos of
+  !> the angle between them (about half its square): the local error of a first-order rule on
+  !> the slip direction, which substepping's error estimate weighs (in 3D an inclined plane's
+  !> local slip path turns; its direction is the slowest part of the friction to resolve).
+  !> 0 where either traction is 0 and where the direction turns by 90 deg or more: a reversal,
+  !> which passes through sticking and which radial return integrates exactly (every 2D case).
+  pure real(dp) function direction_turn(tauf_o, tauf) result(turn)
+    real(dp), intent(in) :: tauf_o(2), tauf(2)
+    real(dp) :: norms, c
+    turn = 0.0_dp
+    norms = sqrt((tauf_o(1)**2 + tauf_o(2)**2) * (tauf(1)**2 + tauf(2)**2))
+    if (.not. norms > 0.0_dp) return
+    c = (tauf_o(1) * tauf(1) + tauf_o(2) * tauf(2)) / norms
+    if (c > 0.0_dp) turn = 1.0_dp - c
+  end function direction_turn
 
 end module interlock_friction
