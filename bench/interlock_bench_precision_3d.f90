@@ -37,6 +37,7 @@ module interlock_bench_precision_3d
   !> the error-control tolerances, and the schemes run with them
   integer, parameter :: n_tols = 3
   real(dp), parameter :: tols(n_tols) = [1.0e-3_dp, 1.0e-4_dp, 1.0e-5_dp]
+  character(len=*), parameter :: tol_names(n_tols) = ['1e-3', '1e-4', '1e-5']
   integer, parameter :: controlled(1) = [scheme_trapezoidal]
   !> configurations: the schemes uniform (1-3), with Richardson (4-6), then error control
   integer, parameter :: n_configs = 6 + size(controlled) * n_tols
@@ -126,8 +127,7 @@ contains
       do ic = 1, size(controlled)
         do it = 1, n_tols
           c = c + 1
-          write (labels(c), '(a,a,es7.0)') trim(scheme_name(controlled(ic))), ', control', &
-            tols(it)
+          labels(c) = trim(scheme_name(controlled(ic))) // ' substep ' // tol_names(it)
           do j = 0, jmax
             n = base_steps * 2**j
             allocate (run_n(3, 0:n_seg * n))

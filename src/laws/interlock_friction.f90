@@ -85,19 +85,22 @@ contains
   end subroutine radial_return
 
   !> The turn of the friction traction's direction over a step from tauf_o to tauf, 1 - cos of
-  !> the angle between them (about half its square): the local error of a first-order rule on
-  !> the slip direction, which substepping's error estimate weighs (in 3D an inclined plane's
-  !> local slip path turns; its direction is the slowest part of the friction to resolve).
-  !> 0 where either traction is 0 and where the direction turns by 90 deg or more: a reversal,
-  !> which passes through sticking and which radial return integrates exactly (every 2D case).
+  !> the angle a between them (about a^2 / 2): the local error of a first-order rule on the
+  !> slip direction, which substepping's error estimate weighs (in 3D an inclined plane's local
+  !> slip path turns, and its direction is the slowest part of the friction to resolve). 0
+  !> where either traction is 0 and where the direction turns by 90 deg or more: a reversal,
+  !> which passes through sticking and which radial return integrates exactly. Taken as
+  !> sin(a)^2 / (1 + cos a), without cancellation, and exactly 0 for parallel tractions (every
+  !> 2D step).
   pure real(dp) function direction_turn(tauf_o, tauf) result(turn)
     real(dp), intent(in) :: tauf_o(2), tauf(2)
-    real(dp) :: norms, c
+    real(dp) :: squares, c, cross
     turn = 0.0_dp
-    norms = sqrt((tauf_o(1)**2 + tauf_o(2)**2) * (tauf(1)**2 + tauf(2)**2))
-    if (.not. norms > 0.0_dp) return
-    c = (tauf_o(1) * tauf(1) + tauf_o(2) * tauf(2)) / norms
-    if (c > 0.0_dp) turn = 1.0_dp - c
+    squares = (tauf_o(1)**2 + tauf_o(2)**2) * (tauf(1)**2 + tauf(2)**2)
+    if (.not. squares > 0.0_dp) return
+    c = (tauf_o(1) * tauf(1) + tauf_o(2) * tauf(2)) / sqrt(squares)
+    cross = tauf_o(1) * tauf(2) - tauf_o(2) * tauf(1)
+    if (c > 0.0_dp) turn = cross**2 / squares / (1.0_dp + c)
   end function direction_turn
 
 end module interlock_friction
