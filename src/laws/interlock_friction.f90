@@ -94,13 +94,16 @@ contains
   !> 2D step).
   pure real(dp) function direction_turn(tauf_o, tauf) result(turn)
     real(dp), intent(in) :: tauf_o(2), tauf(2)
-    real(dp) :: squares, c, cross
+    real(dp) :: norm_o, norm, u_o(2), u(2), c
     turn = 0.0_dp
-    squares = (tauf_o(1)**2 + tauf_o(2)**2) * (tauf(1)**2 + tauf(2)**2)
-    if (.not. squares > 0.0_dp) return
-    c = (tauf_o(1) * tauf(1) + tauf_o(2) * tauf(2)) / sqrt(squares)
-    cross = tauf_o(1) * tauf(2) - tauf_o(2) * tauf(1)
-    if (c > 0.0_dp) turn = cross**2 / squares / (1.0_dp + c)
+    ! (unit vectors first: any admissible traction, squared, may overflow)
+    norm_o = norm2(tauf_o)
+    norm = norm2(tauf)
+    if (.not. (norm_o > 0.0_dp .and. norm > 0.0_dp)) return
+    u_o = tauf_o / norm_o
+    u = tauf / norm
+    c = u_o(1) * u(1) + u_o(2) * u(2)
+    if (c > 0.0_dp) turn = (u_o(1) * u(2) - u_o(2) * u(1))**2 / (1.0_dp + c)
   end function direction_turn
 
 end module interlock_friction

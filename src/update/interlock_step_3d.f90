@@ -141,7 +141,7 @@ contains
                               abs(dsig_dtheta(3)))], err_angle, err_traction)
           ! the friction direction's turn, on a plane that slides at the end
           if (p%slip_norm > 0.0_dp) err_traction = max(err_traction, w * p%dmg * &
-            sqrt(p%tauf(1)**2 + p%tauf(2)**2) * direction_turn(o%tauf, p%tauf))
+            norm2(p%tauf) * direction_turn(o%tauf, p%tauf))
         end if
         sig = sig + w * sig_k
         tangent = tangent + w * k_k

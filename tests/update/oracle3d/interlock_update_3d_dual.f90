@@ -273,7 +273,7 @@ contains
           ! the friction direction's turn, on a plane that slides at the end
           if (abs(q(k)%sf(1)%v - o(k)%sf(1)%v) + abs(q(k)%sf(2)%v - o(k)%sf(2)%v) > 0.0_dp) &
             err_traction = max(err_traction, w%v * q(k)%dmg%v * &
-              sqrt(q(k)%tauf(1)%v**2 + q(k)%tauf(2)%v**2) * &
+              norm2([q(k)%tauf(1)%v, q(k)%tauf(2)%v]) * &
               direction_turn([o(k)%tauf(1)%v, o(k)%tauf(2)%v], [q(k)%tauf(1)%v, q(k)%tauf(2)%v]))
         end if
         sig = sig + w * p%sig
