@@ -6,7 +6,7 @@ module interlock_friction
   use interlock_kinds, only: dp
   implicit none
   private
-  public :: friction_step, radial_return
+  public :: friction_step, radial_return, direction_turn
 
   !> d s_kt / d (s_kn, s_kt1, s_kt2): column i is the unit vector of s_kt,i
   real(dp), parameter :: e_t(3, 2) = reshape([0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], &
@@ -83,5 +83,27 @@ contains
     end do
     slip = (trn - mu_p) * inv_kt
   end subroutine radial_return
+
+  !> The turn of the friction traction's direction over a step from tauf_o to tauf, 1 - cos of
+  !> the angle a between them (about a^2 / 2): the local error of a first-order rule on the
+  !> slip direction, which substepping's error estimate weighs (in 3D an inclined plane's local
+  !> slip path turns, and its direction is the slowest part of the friction to resolve). 0
+  !> where either traction is 0 and where the direction turns by 90 deg or more: a reversal,
+  !> which passes through sticking and which radial return integrates exactly. Taken as
+  !> sin(a)^2 / (1 + cos a), without cancellation, and exactly 0 for parallel tractions (every
+  !> 2D step).
+  pure real(dp) function direction_turn(tauf_o, tauf) result(turn)
+    real(dp), intent(in) :: tauf_o(2), tauf(2)
+    real(dp) :: norm_o, norm, u_o(2), u(2), c
+    turn = 0.0_dp
+    ! (unit vectors first: any admissible traction, squared, may overflow)
+    norm_o = norm2(tauf_o)
+    norm = norm2(tauf)
+    if (.not. (norm_o > 0.0_dp .and. norm > 0.0_dp)) return
+    u_o = tauf_o / norm_o
+    u = tauf / norm
+    c = u_o(1) * u(1) + u_o(2) * u(2)
+    if (c > 0.0_dp) turn = (u_o(1) * u(2) - u_o(2) * u(1))**2 / (1.0_dp + c)
+  end function direction_turn
 
 end module interlock_friction

@@ -156,10 +156,11 @@ contains
   !> traction error it causes, which cost no further evaluation); it is kept when the estimate
   !> is within `tol` (or when the sub-increment is already the smallest allowed: at a kink the
   !> estimate does not shrink with the size), and the next size follows from the estimate's
-  !> scaling (h^2). Damage and friction need no estimate: on a sub-increment linear in s they
-  !> are exact in every scheme; without wear one sub-increment is the whole increment. Without
-  !> error control (tol = huge: a failed one-step solve) the size is quartered on failure and
-  !> doubled on success. Sizes are powers of 2 (h_first is one), so that the partition of the
+  !> scaling (h^2). Damage needs no estimate: on a sub-increment linear in s it is exact in
+  !> every scheme, and so is friction in 2D; in 3D the direction of slip of an inclined plane
+  !> turns within a step, and each sliding plane adds the turn of its friction direction
+  !> (interlock_friction:direction_turn) to the estimate. Without error control (tol = huge:
+  !> a failed one-step solve) the size is quartered on failure and doubled on success. Sizes are powers of 2 (h_first is one), so that the partition of the
   !> increment does not vary with s except where a decision switches. Each plane's state
   !> carries its derivatives with respect to the end of the increment from one sub-increment to
   !> the next (interlock_step_3d's chain), so that the tangent is the exact one of the chain.

@@ -15,6 +15,7 @@ module interlock_step_3d
       scheme_trapezoidal, max_planes
   use interlock_state, only: interlock_state_3d_t
   use interlock_geometry, only: contact_area
+  use interlock_friction, only: direction_turn
   use interlock_wear, only: worn_angle, worn_angle_slope, wear_root_t, wear_root_begin, &
       wear_root_update
   use interlock_plane_law, only: plane_frame, wear_weights, start_yield, trapezoidal_weight, &
@@ -135,8 +136,13 @@ contains
         iterations = max(iterations, it)
         gam = merge(1.0_dp, mat%gamma_hat(k), shared)
         w = gam * area
-        if (estimate) call add_wear_error(e, w, [dsig_dtheta(1), max(abs(dsig_dtheta(2)), &
-                                          abs(dsig_dtheta(3)))], err_angle, err_traction)
+        if (estimate) then
+          call add_wear_error(e, w, [dsig_dtheta(1), max(abs(dsig_dtheta(2)), &
+                              abs(dsig_dtheta(3)))], err_angle, err_traction)
+          ! the friction direction's turn, on a plane that slides at the end
+          if (p%slip_norm > 0.0_dp) err_traction = max(err_traction, w * p%dmg * &
+            norm2(p%tauf) * direction_turn(o%tauf, p%tauf))
+        end if
         sig = sig + w * sig_k
         tangent = tangent + w * k_k
         if (darea < 0.0_dp) tangent(:, 1) = tangent(:, 1) + (gam * darea * h_end) * sig_k

@@ -16,6 +16,7 @@ module interlock_update_3d_dual
   use interlock_status, only: interlock_info_t, status_ok, status_local_failure
   use interlock_wear, only: wear_root_t, wear_root_begin, wear_root_update, worn_angle_slope
   use interlock_plane_law, only: wear_angle_error, add_wear_error, wear_error_of
+  use interlock_friction, only: direction_turn
   use interlock_plane_law_3d_dual, only: plane_dual_t, plane_response_3d_t, plane_law_3d, &
       plane_angle_frame, worn_angle_3d, start_pressure_3d
   use interlock_substep_control, only: next_sub_increment, count_attempt, after_failure, &
@@ -266,8 +267,15 @@ contains
         iterations = max(iterations, it)
         gam = merge(1.0_dp, mat%gamma_hat(k), mat%flat .and. mat%azimuths_zero)
         w = gam * area
-        if (estimate) call add_wear_error(e, w%v, [dsig_dtheta(1), max(abs(dsig_dtheta(2)), &
-                                          abs(dsig_dtheta(3)))], err_angle, err_traction)
+        if (estimate) then
+          call add_wear_error(e, w%v, [dsig_dtheta(1), max(abs(dsig_dtheta(2)), &
+                              abs(dsig_dtheta(3)))], err_angle, err_traction)
+          ! the friction direction's turn, on a plane that slides at the end
+          if (abs(q(k)%sf(1)%v - o(k)%sf(1)%v) + abs(q(k)%sf(2)%v - o(k)%sf(2)%v) > 0.0_dp) &
+            err_traction = max(err_traction, w%v * q(k)%dmg%v * &
+              norm2([q(k)%tauf(1)%v, q(k)%tauf(2)%v]) * &
+              direction_turn([o(k)%tauf(1)%v, o(k)%tauf(2)%v], [q(k)%tauf(1)%v, q(k)%tauf(2)%v]))
+        end if
         sig = sig + w * p%sig
         new%diss_damage = new%diss_damage + gam * area%v * p%wdmg
         new%diss_friction = new%diss_friction + gam * area%v * p%wfric
