@@ -235,7 +235,7 @@ contains
     type(wear_root_t) :: rt
     real(dp) :: c, sn, dip_o, mu_p_o, mu_p_law, a_w, g_slip, g_trap, drv, g_drv(3), thp, fp, &
                 rot(3, 3), dzeta(3), ksl(3)
-    logical :: coupled, wears, trapezoidal, drivers, flat
+    logical :: coupled, wears, trapezoidal, drivers, flat, terms
     integer :: j
 
     ok = .true.
@@ -244,6 +244,8 @@ contains
     dsig_dtheta = 0.0_dp
     coupled = solver%scheme /= scheme_explicit
     trapezoidal = solver%scheme == scheme_trapezoidal
+    ! (the trapezoidal wear terms: its driver, and the coupled schemes' error estimate)
+    terms = trapezoidal .or. (estimate .and. coupled)
     wears = mat%plane_wears(k)
     drivers = wears .and. (coupled .or. chain)
     ! The scheme's wear weights (wear_weights of the 2D law, with the dip component of the
@@ -269,7 +271,7 @@ contains
     sn = sn_o
     flat = flat_frame(cp, sp, c, sn)
     ! (the traction with the law where the angle is not solved for)
-    call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, drivers, chain, &
+    call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, terms, drivers, chain, &
                   .not. (coupled .and. wears), c, sn, flat, p, drv, g_drv)
     if (coupled .and. wears) then
       ! F(zeta) = zeta - zeta_o - G(theta(zeta)); at zeta_o the stored angle and its slope, no
@@ -283,8 +285,8 @@ contains
                           thp)
           call plane_frame(mat, k, theta, c, sn)
           flat = flat_frame(cp, sp, c, sn)
-          call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, .true., chain, &
-                        .false., c, sn, flat, p, drv, g_drv)
+          call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, terms, .true., &
+                        chain, .false., c, sn, flat, p, drv, g_drv)
           fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
           call wear_root_update(rt, rt%x - o%zeta - drv, fp, solver%newton_tol, &
                                 solver%newton_max_iterations)
@@ -306,8 +308,8 @@ contains
                           thp)
           call plane_frame(mat, k, theta, c, sn)
           flat = flat_frame(cp, sp, c, sn)
-          call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, .true., chain, &
-                        .false., c, sn, flat, p, drv, g_drv)
+          call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, terms, .true., &
+                        chain, .false., c, sn, flat, p, drv, g_drv)
           fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
         end if
         zeta = rt%x
@@ -519,23 +521,24 @@ contains
   !> wear driver G with
   !> d G / d sl: a_end D |tau_f,1| |d sf_1| + g_slip |d sf_1| (explicit, implicit), a_end
   !> wear_end + g_slip wear_start (trapezoidal: the dip component of D_o mu p_o n at the start);
-  !> d G / d sl only with `drivers` (else 0).
-  pure subroutine evaluate(mat, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, drivers, &
-                           chain, traction, c, sn, flat, p, drv, g_drv)
+  !> d G / d sl only with `drivers` (else 0). `terms`: the trapezoidal wear terms are wanted
+  !> (plane_law_3d_parts; with `trapezoidal`).
+  pure subroutine evaluate(mat, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, terms, &
+                           drivers, chain, traction, c, sn, flat, p, drv, g_drv)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: cp, sp, s(3), mu_p_o, a_end, g_slip, c, sn
     type(plane_start_3d_t), intent(in) :: o
-    logical, intent(in) :: trapezoidal, drivers, chain, traction
+    logical, intent(in) :: trapezoidal, terms, drivers, chain, traction
     logical, intent(in) :: flat   !< flat_frame(cp, sp, c, sn)
     real(dp), intent(out) :: drv, g_drv(3)
     type(plane_law_3d_t), intent(out) :: p
     real(dp) :: sl(3), tie
     if (flat) then
       call plane_law_3d_parts(mat, s, contact_round_off(cp, sp, c, sn, s), o, mu_p_o, drivers, &
-                              chain, traction, p)
+                              chain, traction, terms, p)
     else
       call local_frame(cp, sp, c, sn, s, sl, tie)
-      call plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, traction, p)
+      call plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, traction, terms, p)
     end if
     g_drv = 0.0_dp
     if (trapezoidal) then
