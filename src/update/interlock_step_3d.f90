@@ -533,13 +533,14 @@ contains
     real(dp), intent(out) :: drv, g_drv(3)
     type(plane_law_3d_t), intent(out) :: p
     real(dp) :: sl(3), tie
+    ! (one call of the law: inlined once)
     if (flat) then
-      call plane_law_3d_parts(mat, s, contact_round_off(cp, sp, c, sn, s), o, mu_p_o, drivers, &
-                              chain, traction, terms, p)
+      sl = s
+      tie = contact_round_off(cp, sp, c, sn, s)
     else
       call local_frame(cp, sp, c, sn, s, sl, tie)
-      call plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, traction, terms, p)
     end if
+    call plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, traction, terms, p)
     g_drv = 0.0_dp
     if (trapezoidal) then
       drv = a_end * p%wear_end + g_slip * p%wear_start
