@@ -58,7 +58,8 @@ module interlock_plane_law_3d
     !> direction n at the end. Along a straight local path (radial return) |d sf_1| times the
     !> direction's dip share and wfric_dip.
     real(dp) :: wear_start, wear_end
-    !> their derivatives, where the caller asks for them (`drivers`)
+    !> their derivatives, where the caller asks for them (`drivers`; g_wfric_dip not where D14's
+    !> mean direction was taken, whose driver is wear_start and wear_end)
     real(dp) :: g_slip_dip(3), g_wfric_dip(3), g_wear_start(3), g_wear_end(3)
     real(dp) :: pos, dpos    !< <s_kn>_+ and its slope (0 at the tie)
     real(dp) :: slip_norm    !< |d sf|, the slip of the step [mm]
@@ -383,8 +384,8 @@ contains
       p%wear_end = p%wfric_dip
     end if
     if (drivers) then
-      p%g_wfric_dip = (p%g_dmg * atau + p%dmg * g_atau) * p%slip_dip + &
-                      (p%dmg * atau) * p%g_slip_dip
+      if (.not. mean_direction) p%g_wfric_dip = (p%g_dmg * atau + p%dmg * g_atau) * p%slip_dip + &
+                                                (p%dmg * atau) * p%g_slip_dip
       if (trapezoidal_terms .and. .not. mean_direction) then
         g_share = 0.0_dp
         if (slip_norm > 0.0_dp) g_share = (p%g_slip_dip - share * g_slip_norm) / slip_norm
