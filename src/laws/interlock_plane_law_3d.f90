@@ -58,10 +58,12 @@ module interlock_plane_law_3d
     !> direction n at the end. Along a straight local path (radial return) |d sf_1| times the
     !> direction's dip share and wfric_dip.
     real(dp) :: wear_start, wear_end
-    !> their derivatives, where the caller asks for them (`drivers`)
+    !> their derivatives, where the caller asks for them (`drivers`; g_wfric_dip not where D14's
+    !> mean direction was taken, whose driver is wear_start and wear_end)
     real(dp) :: g_slip_dip(3), g_wfric_dip(3), g_wear_start(3), g_wear_end(3)
     real(dp) :: pos, dpos    !< <s_kn>_+ and its slope (0 at the tie)
     real(dp) :: slip_norm    !< |d sf|, the slip of the step [mm]
+    real(dp) :: tauf_norm    !< |tau_f| [MPa]: mu p sliding, |tau_tr| sticking, 0 free
     logical :: dmg_grows     !< D grows below 1 (g_dmg applies)
     real(dp) :: wfric   !< frictional work on the damaged part, D |tau_f| |d sf| [N/mm]
     real(dp) :: wdmg    !< energy dissipated by damage in the step [N/mm]
@@ -119,9 +121,9 @@ contains
     logical, intent(in) :: drivers, chain
     type(plane_law_3d_t), intent(out) :: p
     if (present(tie)) then
-      call plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, .true., p)
+      call plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, .true., .true., p)
     else
-      call plane_law_3d_parts(mat, sl, 0.0_dp, o, mu_p_o, drivers, chain, .true., p)
+      call plane_law_3d_parts(mat, sl, 0.0_dp, o, mu_p_o, drivers, chain, .true., .true., p)
     end if
   end subroutine plane_law_3d
 
@@ -131,12 +133,16 @@ contains
   !> (interlock_plane_law's start_yield with the start separation's dip component) where the
   !> slip direction follows D14's mean-direction rule (the trapezoidal scheme), 0 for radial
   !> return alone. `drivers`: the derivatives of the wear drivers are wanted (a scheme whose
-  !> angle is coupled to the end of the step, on a plane that wears).
-  pure subroutine plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, traction, p)
+  !> angle is coupled to the end of the step, on a plane that wears). `trapezoidal_terms`: the
+  !> trapezoidal scheme's wear terms wear_start and wear_end are wanted (true where mu_p_o > 0;
+  !> else they are not set, nor the slip of a free plane's step, which its energies do not need:
+  !> slip_norm 0 there).
+  pure subroutine plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, traction, &
+                                     trapezoidal_terms, p)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: sl(3), tie, mu_p_o
     type(plane_start_3d_t), intent(in) :: o
-    logical, intent(in) :: drivers, chain, traction
+    logical, intent(in) :: drivers, chain, traction, trapezoidal_terms
     type(plane_law_3d_t), intent(out) :: p
     real(dp) :: pos, dpos, tn, tn2, gd_n, gd_t, mu_p, g_mu(3), tr(2), trn, nv(2), g_nv(3, 2), &
                 n_o(2), n_new(2), g_nn(3, 2), dsf(2), g_dsf(3, 2), slip_norm, g_slip_norm(3), &
@@ -218,6 +224,7 @@ contains
         p%sf = o%sf
         if (chain) p%g_sf = 0.0_dp
         p%tauf = tr
+        p%tauf_norm = trn
         p%g_tauf = mat%kt * e_t
         p%slip_dip = 0.0_dp
         p%g_slip_dip = 0.0_dp
@@ -226,6 +233,8 @@ contains
       else
         if (mu_p_o > 0.0_dp) call mean_direction_return(mat, o%tauf, mu_p_o, tr, mu_p, g_mu, &
                                                         mean_direction, n_o, n_new, g_nn, phi_nn)
+        ! |tau_f| = mu p sliding, in either direction rule
+        p%tauf_norm = mu_p
         if (mean_direction) then
           ! D14: the slip increment along the mean of the start and end directions, |tau_f| =
           ! mu p along n_new; the slip of the step is what the trial traction exceeds it by.
@@ -290,11 +299,13 @@ contains
       p%sf(2) = sl(3)
       if (chain) p%g_sf = e_t
       p%tauf = 0.0_dp
+      p%tauf_norm = 0.0_dp
       p%g_tauf = 0.0_dp
       dsf(1) = p%sf(1) - o%sf(1)
       dsf(2) = p%sf(2) - o%sf(2)
       p%slip_dip = abs(dsf(1))
-      slip_norm = vector_norm(dsf)
+      slip_norm = 0.0_dp
+      if (trapezoidal_terms .or. drivers) slip_norm = vector_norm(dsf)
       if (drivers) then
         p%g_slip_dip = sign_of(dsf(1)) * e_t(:, 1)
         g_slip_norm = norm_gradient(dsf, slip_norm, e_t)
@@ -367,15 +378,15 @@ contains
     ! The wear drivers in the dip direction.
     p%wfric_dip = p%dmg * atau * p%slip_dip
     share = 1.0_dp
-    if (.not. mean_direction) then
+    if (trapezoidal_terms .and. .not. mean_direction) then
       if (slip_norm > 0.0_dp) share = p%slip_dip / slip_norm
       p%wear_start = p%slip_dip * share
       p%wear_end = p%wfric_dip
     end if
     if (drivers) then
-      p%g_wfric_dip = (p%g_dmg * atau + p%dmg * g_atau) * p%slip_dip + &
-                      (p%dmg * atau) * p%g_slip_dip
-      if (.not. mean_direction) then
+      if (.not. mean_direction) p%g_wfric_dip = (p%g_dmg * atau + p%dmg * g_atau) * p%slip_dip + &
+                                                (p%dmg * atau) * p%g_slip_dip
+      if (trapezoidal_terms .and. .not. mean_direction) then
         g_share = 0.0_dp
         if (slip_norm > 0.0_dp) g_share = (p%g_slip_dip - share * g_slip_norm) / slip_norm
         p%g_wear_start = p%g_slip_dip * share + p%slip_dip * g_share
@@ -424,7 +435,7 @@ contains
     ! Energies, as the 2D law's (interlock_plane_law) with vectors: the frictional work on the
     ! damaged part, the damage dissipation Y dD (the elastic part exact, the friction part at
     ! first order), the stored energy (sigma_k . s_k - D tau_f . sf) / 2.
-    tauf_norm = sqrt(p%tauf(1)**2 + p%tauf(2)**2)
+    tauf_norm = p%tauf_norm
     p%wfric = p%dmg * tauf_norm * p%slip_norm
     p%wdmg = 0.0_dp
     if (p%dmg > o%dmg) then

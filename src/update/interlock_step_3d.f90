@@ -241,8 +241,8 @@ contains
     type(wear_root_t) :: rt
     real(dp) :: c, sn, dip_o, mu_p_o, mu_p_law, a_w, g_slip, g_trap, drv, g_drv(3), thp, fp, &
                 rot(3, 3), dzeta(3), ksl(3)
-    logical :: coupled, wears, trapezoidal, drivers, flat
-    integer :: j
+    logical :: coupled, wears, trapezoidal, drivers, flat, terms
+    integer :: j, phase
 
     ok = .true.
     iterations = 0
@@ -250,6 +250,8 @@ contains
     dsig_dtheta = 0.0_dp
     coupled = solver%scheme /= scheme_explicit
     trapezoidal = solver%scheme == scheme_trapezoidal
+    ! (the trapezoidal wear terms: its driver, and the coupled schemes' error estimate)
+    terms = trapezoidal .or. (estimate .and. coupled)
     wears = mat%plane_wears(k)
     drivers = wears .and. (coupled .or. chain)
     ! The scheme's wear weights (wear_weights of the 2D law, with the dip component of the
@@ -274,50 +276,52 @@ contains
     c = c_o
     sn = sn_o
     flat = flat_frame(cp, sp, c, sn)
-    ! (the traction with the law where the angle is not solved for)
-    call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, drivers, chain, &
-                  .not. (coupled .and. wears), c, sn, flat, p, drv, g_drv)
-    if (coupled .and. wears) then
-      ! F(zeta) = zeta - zeta_o - G(theta(zeta)); at zeta_o the stored angle and its slope, no
-      ! exponential.
-      thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), o%theta)
+    ! The law at the start angle (the traction with it where the angle is not solved for);
+    ! where the angle is coupled to the end of the step, the wear equation F(zeta) = zeta -
+    ! zeta_o - G(theta(zeta)) from there (at zeta_o the stored angle and its slope, no
+    ! exponential) by the iteration's points, and where the root is at the kink where the plane
+    ! just loses contact, once more at the closed side's last point: one evaluation site, so
+    ! that the law is inlined once.
+    phase = 0
+    do
+      if (phase > 0) then
+        call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, &
+                        thp)
+        call plane_frame(mat, k, theta, c, sn)
+        flat = flat_frame(cp, sp, c, sn)
+      end if
+      call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, terms, drivers, &
+                    chain, .not. (coupled .and. wears), c, sn, flat, p, drv, g_drv)
+      if (.not. (coupled .and. wears)) exit
+      if (phase == 0) thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), o%theta)
       fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
-      if (drv > 0.0_dp) then
+      if (phase == 0) then
+        if (.not. drv > 0.0_dp) exit
         call wear_root_begin(rt, o%zeta, drv)
-        do
-          call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, &
-                          thp)
-          call plane_frame(mat, k, theta, c, sn)
-          flat = flat_frame(cp, sp, c, sn)
-          call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, .true., chain, &
-                        .false., c, sn, flat, p, drv, g_drv)
-          fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
-          call wear_root_update(rt, rt%x - o%zeta - drv, fp, solver%newton_tol, &
-                                solver%newton_max_iterations)
-          if (rt%done) exit
-        end do
+        phase = 1
+      else if (phase == 1) then
+        call wear_root_update(rt, rt%x - o%zeta - drv, fp, solver%newton_tol, &
+                              solver%newton_max_iterations)
+        if (.not. rt%done) cycle
         iterations = rt%iterations
         ok = rt%ok
         if (.not. ok) return
-        if (.not. (drv > 0.0_dp .or. abs(p%tauf(1)) + abs(p%tauf(2)) > 0.0_dp)) then
-          ! The root is where the plane just loses contact (very fast wear turns it until
-          ! then), within round-off of that kink, and the last point is on the open side (no
-          ! friction traction; a plane that sticks there has its root where it switches to
-          ! sliding, and the last point is that root): take the closed side's last point, rt%lo
-          ! (F < 0 there, so some work: the plane is in contact), a few ulps from the root, so
-          ! that the angle's derivative and the traction's come from the same side (mixed,
-          ! they are neither one-sided derivative).
-          rt%x = rt%lo
-          call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, &
-                          thp)
-          call plane_frame(mat, k, theta, c, sn)
-          flat = flat_frame(cp, sp, c, sn)
-          call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, .true., chain, &
-                        .false., c, sn, flat, p, drv, g_drv)
-          fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
-        end if
-        zeta = rt%x
+        if (drv > 0.0_dp .or. abs(p%tauf(1)) + abs(p%tauf(2)) > 0.0_dp) exit
+        ! The root is where the plane just loses contact (very fast wear turns it until
+        ! then), within round-off of that kink, and the last point is on the open side (no
+        ! friction traction; a plane that sticks there has its root where it switches to
+        ! sliding, and the last point is that root): take the closed side's last point, rt%lo
+        ! (F < 0 there, so some work: the plane is in contact), a few ulps from the root, so
+        ! that the angle's derivative and the traction's come from the same side (mixed,
+        ! they are neither one-sided derivative).
+        rt%x = rt%lo
+        phase = 2
+      else
+        exit
       end if
+    end do
+    if (coupled .and. wears) then
+      if (phase > 0) zeta = rt%x
     else
       zeta = o%zeta + drv
       thp = 0.0_dp
@@ -525,24 +529,26 @@ contains
   !> wear driver G with
   !> d G / d sl: a_end D |tau_f,1| |d sf_1| + g_slip |d sf_1| (explicit, implicit), a_end
   !> wear_end + g_slip wear_start (trapezoidal: the dip component of D_o mu p_o n at the start);
-  !> d G / d sl only with `drivers` (else 0).
-  pure subroutine evaluate(mat, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, drivers, &
-                           chain, traction, c, sn, flat, p, drv, g_drv)
+  !> d G / d sl only with `drivers` (else 0). `terms`: the trapezoidal wear terms are wanted
+  !> (plane_law_3d_parts; with `trapezoidal`).
+  pure subroutine evaluate(mat, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, terms, &
+                           drivers, chain, traction, c, sn, flat, p, drv, g_drv)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: cp, sp, s(3), mu_p_o, a_end, g_slip, c, sn
     type(plane_start_3d_t), intent(in) :: o
-    logical, intent(in) :: trapezoidal, drivers, chain, traction
+    logical, intent(in) :: trapezoidal, terms, drivers, chain, traction
     logical, intent(in) :: flat   !< flat_frame(cp, sp, c, sn)
     real(dp), intent(out) :: drv, g_drv(3)
     type(plane_law_3d_t), intent(out) :: p
     real(dp) :: sl(3), tie
+    ! (one call of the law: inlined once)
     if (flat) then
-      call plane_law_3d_parts(mat, s, contact_round_off(cp, sp, c, sn, s), o, mu_p_o, drivers, &
-                              chain, traction, p)
+      sl = s
+      tie = contact_round_off(cp, sp, c, sn, s)
     else
       call local_frame(cp, sp, c, sn, s, sl, tie)
-      call plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, traction, p)
     end if
+    call plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, traction, terms, p)
     g_drv = 0.0_dp
     if (trapezoidal) then
       drv = a_end * p%wear_end + g_slip * p%wear_start
