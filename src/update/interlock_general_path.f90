@@ -211,7 +211,7 @@ contains
                    alpha, a_end, jc(1:n, cur), jc(1:n, trial), .true., err, in_plane)
       info%newton_iterations = max(info%newton_iterations, it)
       stable = .true.
-      if (solved) stable = chain_bounded(jc(:, trial), n)
+      if (solved) stable = chain_bounded(jc(:, trial), n, merge(2, 3, in_plane))
       if (.not. (solved .and. stable)) then
         call after_failure(solved, h, info, give_up)
         if (give_up) return

@@ -138,7 +138,12 @@ contains
         if (estimate) call add_wear_error(e, w, [dsig_dtheta(1), max(abs(dsig_dtheta(2)), &
                                           abs(dsig_dtheta(3)))], err_angle, err_traction)
         sig = sig + w * sig_k
-        tangent = tangent + w * k_k
+        if (ncol > 2) then
+          tangent = tangent + w * k_k
+        else
+          ! (the (1:2, 1:2) block alone: chain_plane's k_k has no more)
+          tangent(1:2, 1:2) = tangent(1:2, 1:2) + w * k_k(1:2, 1:2)
+        end if
         if (darea < 0.0_dp) tangent(:, 1) = tangent(:, 1) + (gam * darea * h_end) * sig_k
         new%diss_damage = new%diss_damage + gam * area * p%wdmg
         new%diss_friction = new%diss_friction + gam * area * p%wfric
@@ -162,16 +167,26 @@ contains
 
   !> The chained derivatives of the planes in use stay far from overflow: the sum of their
   !> magnitudes (one comparison per plane; a NaN is not caught here but by the update's
-  !> finiteness check).
-  pure logical function chain_bounded(jn, n)
+  !> finiteness check). ncol = 2: a chain in the plane (n, t1) (step_3d's in_plane), whose
+  !> other entries are 0.
+  pure logical function chain_bounded(jn, n, ncol)
     type(plane_chain_t), intent(in) :: jn(:)
-    integer, intent(in) :: n
+    integer, intent(in) :: n, ncol
     integer :: k
     real(dp), parameter :: bound = 1.0e100_dp
+    real(dp) :: total
     chain_bounded = .true.
     do k = 1, n
-      if (sum(abs(jn(k)%beta)) + sum(abs(jn(k)%dmg)) + sum(abs(jn(k)%sf)) + &
-          sum(abs(jn(k)%zeta)) + sum(abs(jn(k)%tauf)) > bound) chain_bounded = .false.
+      if (ncol > 2) then
+        total = sum(abs(jn(k)%beta)) + sum(abs(jn(k)%dmg)) + sum(abs(jn(k)%sf)) + &
+                sum(abs(jn(k)%zeta)) + sum(abs(jn(k)%tauf))
+      else
+        total = abs(jn(k)%beta(1)) + abs(jn(k)%beta(2)) + abs(jn(k)%dmg(1)) + &
+                abs(jn(k)%dmg(2)) + abs(jn(k)%sf(1, 1)) + abs(jn(k)%sf(2, 1)) + &
+                abs(jn(k)%zeta(1)) + abs(jn(k)%zeta(2)) + abs(jn(k)%tauf(1, 1)) + &
+                abs(jn(k)%tauf(2, 1))
+      end if
+      if (total > bound) chain_bounded = .false.
     end do
   end function chain_bounded
 
@@ -270,7 +285,7 @@ contains
     flat = flat_frame(cp, sp, c, sn)
     ! (the traction with the law where the angle is not solved for)
     call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, drivers, chain, &
-                  .not. (coupled .and. wears), c, sn, flat, p, drv, g_drv)
+                  .not. (coupled .and. wears), ncol < 3, c, sn, flat, p, drv, g_drv)
     if (coupled .and. wears) then
       ! F(zeta) = zeta - zeta_o - G(theta(zeta)); at zeta_o the stored angle and its slope, no
       ! exponential.
@@ -284,7 +299,7 @@ contains
           call plane_frame(mat, k, theta, c, sn)
           flat = flat_frame(cp, sp, c, sn)
           call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, .true., chain, &
-                        .false., c, sn, flat, p, drv, g_drv)
+                        .false., ncol < 3, c, sn, flat, p, drv, g_drv)
           fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
           call wear_root_update(rt, rt%x - o%zeta - drv, fp, solver%newton_tol, &
                                 solver%newton_max_iterations)
@@ -307,7 +322,7 @@ contains
           call plane_frame(mat, k, theta, c, sn)
           flat = flat_frame(cp, sp, c, sn)
           call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, .true., chain, &
-                        .false., c, sn, flat, p, drv, g_drv)
+                        .false., ncol < 3, c, sn, flat, p, drv, g_drv)
           fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
         end if
         zeta = rt%x
@@ -389,13 +404,14 @@ contains
     real(dp), intent(out) :: k_k(3, 3)
     type(plane_chain_t), intent(inout) :: jn
     real(dp) :: rot(3, 3), dsl(3, 3), jphi(3), dg(3), d_drv(3), dtheta(3), dsig_loc(3), tn2, &
-                dsn_o(3), x_o, q2, h1(2), h2(2), hdmg1, phi1, phi2, gdsl, dsig_dth(3)
+                dsn_o(3), x_o, q2, h1(2), h2(2), hdmg1, phi1, phi2, gdsl, dsig_dth(3), gtau(2)
     integer :: i, j, nrow
-    logical :: fresh, negative_tauf1
+    logical :: fresh, negative_tauf1, strike
 
     fresh = .not. h_start > 0.0_dp
-    ! (the strike rows of jn: 0 with the columns S_N, S_T1 alone)
+    ! (the strike rows of jn: 0 with the columns S_N, S_T1 alone, where d s_kt2 = 0 too)
     nrow = ncol - 1
+    strike = ncol > 2
     ! the start direction of slip's angle: d phi_o = n_o' . dtauf_o / |tauf_o|
     jphi = 0.0_dp
     if (p%mean .and. .not. fresh) then
@@ -435,8 +451,14 @@ contains
         phi2 = 0.0_dp
         q2 = p%slip_dip
       end if
-      d_drv = a_w * (h1(1) * jo%sf(:, 1) + h1(2) * jo%sf(:, 2) + phi1 * jphi + hdmg1 * jo%dmg) + &
-              g_slip * (h2(1) * jo%sf(:, 1) + h2(2) * jo%sf(:, 2) + phi2 * jphi) + dg * q2
+      if (strike) then
+        d_drv = a_w * (h1(1) * jo%sf(:, 1) + h1(2) * jo%sf(:, 2) + phi1 * jphi + hdmg1 * jo%dmg) + &
+                g_slip * (h2(1) * jo%sf(:, 1) + h2(2) * jo%sf(:, 2) + phi2 * jphi) + dg * q2
+      else
+        ! (no strike slip, no start direction's turn)
+        d_drv(1:2) = a_w * (h1(1) * jo%sf(1:2, 1) + hdmg1 * jo%dmg(1:2)) + &
+                     g_slip * (h2(1) * jo%sf(1:2, 1)) + dg(1:2) * q2
+      end if
     end if
     ! d sl at fixed angle, then the angle the traction is taken at
     rot = frame_rows(cp, sp, c, sn)
@@ -445,7 +467,7 @@ contains
     end do
     if (coupled_wear) then
       do j = 1, ncol
-        gdsl = g_drv(1) * dsl(1, j) + g_drv(2) * dsl(2, j) + g_drv(3) * dsl(3, j)
+        gdsl = dot_local(g_drv, dsl(:, j), strike)
         if (fresh) then
           jn%zeta(j) = gdsl / fp
         else
@@ -463,7 +485,7 @@ contains
     end do
     if (.not. coupled_wear) then
       do j = 1, ncol
-        gdsl = g_drv(1) * dsl(1, j) + g_drv(2) * dsl(2, j) + g_drv(3) * dsl(3, j)
+        gdsl = dot_local(g_drv, dsl(:, j), strike)
         if (fresh) then
           jn%zeta(j) = gdsl
         else
@@ -481,15 +503,19 @@ contains
     negative_tauf1 = p%tauf(1) < 0.0_dp .or. &
                      (.not. p%tauf(1) > 0.0_dp .and. p%g_tauf(1, 1) > 0.0_dp)
     dsig_dth = p%sig_loc(1) * rot(2, :) - p%sig_loc(2) * rot(1, :)
-    k_k = 0.0_dp
+    if (strike) k_k = 0.0_dp
+    dsig_loc(3) = 0.0_dp
     do j = 1, ncol
-      jn%dmg(j) = dot_product(p%g_dmg, dsl(:, j))
-      jn%beta(j) = dot_product(p%g_beta, dsl(:, j))
+      jn%dmg(j) = dot_local(p%g_dmg, dsl(:, j), strike)
+      jn%beta(j) = dot_local(p%g_beta, dsl(:, j), strike)
       do i = 1, nrow
-        jn%tauf(j, i) = dot_product(p%g_tauf(:, i), dsl(:, j))
-        jn%sf(j, i) = dot_product(p%g_sf(:, i), dsl(:, j))
+        gtau(i) = dot_local(p%g_tauf(:, i), dsl(:, j), strike)
+        jn%tauf(j, i) = gtau(i)
+        jn%sf(j, i) = dot_local(p%g_sf(:, i), dsl(:, j), strike)
       end do
-      dsig_loc = matmul(p%k_loc, dsl(:, j))
+      do i = 1, ncol
+        dsig_loc(i) = dot_local(p%k_loc(i, :), dsl(:, j), strike)
+      end do
       if (.not. fresh) then
         if (p%dmg_kept) then
           jn%dmg(j) = jn%dmg(j) + jo%dmg(j)
@@ -497,12 +523,16 @@ contains
         end if
         if (p%beta_kept) jn%beta(j) = jn%beta(j) + jo%beta(j)
         do i = 1, nrow
-          jn%tauf(j, i) = jn%tauf(j, i) - p%g_tauf(2, i) * jo%sf(j, 1) - &
-                          p%g_tauf(3, i) * jo%sf(j, 2) + p%phi_tauf(i) * jphi(j)
-          jn%sf(j, i) = jn%sf(j, i) - p%g_sf(2, i) * jo%sf(j, 1) - &
-                        p%g_sf(3, i) * jo%sf(j, 2) + jo%sf(j, i) + p%phi_sf(i) * jphi(j)
-          dsig_loc(1 + i) = dsig_loc(1 + i) + p%dmg * (jn%tauf(j, i) - &
-                            dot_product(p%g_tauf(:, i), dsl(:, j)))
+          jn%tauf(j, i) = jn%tauf(j, i) - p%g_tauf(2, i) * jo%sf(j, 1)
+          jn%sf(j, i) = jn%sf(j, i) - p%g_sf(2, i) * jo%sf(j, 1)
+          if (strike) then
+            jn%tauf(j, i) = jn%tauf(j, i) - p%g_tauf(3, i) * jo%sf(j, 2) + p%phi_tauf(i) * jphi(j)
+            jn%sf(j, i) = jn%sf(j, i) - p%g_sf(3, i) * jo%sf(j, 2) + jo%sf(j, i) + &
+                          p%phi_sf(i) * jphi(j)
+          else
+            jn%sf(j, i) = jn%sf(j, i) + jo%sf(j, i)
+          end if
+          dsig_loc(1 + i) = dsig_loc(1 + i) + p%dmg * (jn%tauf(j, i) - gtau(i))
         end do
       end if
       if (negative_tauf1) then
@@ -514,6 +544,15 @@ contains
     end do
   end subroutine chain_plane
 
+  !> g . v of two local vectors (the order of dot_product); without `strike` (a chain in the
+  !> plane (n, t1), where v(3) = 0) the first two terms alone.
+  pure real(dp) function dot_local(g, v, strike) result(d)
+    real(dp), intent(in) :: g(3), v(3)
+    logical, intent(in) :: strike
+    d = g(1) * v(1) + g(2) * v(2)
+    if (strike) d = d + g(3) * v(3)
+  end function dot_local
+
   !> The plane law at the angle of frame (c, sn) (`flat`: the macro one), with its traction,
   !> tangent and energies if `traction` (else plane_traction_3d gives them), and the scheme's
   !> wear driver G with
@@ -521,23 +560,23 @@ contains
   !> wear_end + g_slip wear_start (trapezoidal: the dip component of D_o mu p_o n at the start);
   !> d G / d sl only with `drivers` (else 0).
   pure subroutine evaluate(mat, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, drivers, &
-                           chain, traction, c, sn, flat, p, drv, g_drv)
+                           chain, traction, in_plane, c, sn, flat, p, drv, g_drv)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: cp, sp, s(3), mu_p_o, a_end, g_slip, c, sn
     type(plane_start_3d_t), intent(in) :: o
     logical, intent(in) :: trapezoidal, drivers, chain, traction
+    logical, intent(in) :: in_plane   !< plane_law_3d_parts'
     logical, intent(in) :: flat   !< flat_frame(cp, sp, c, sn)
     real(dp), intent(out) :: drv, g_drv(3)
     type(plane_law_3d_t), intent(out) :: p
     real(dp) :: sl(3), tie
     if (flat) then
       call plane_law_3d_parts(mat, s, contact_round_off(cp, sp, c, sn, s), o, mu_p_o, drivers, &
-                              chain, traction, p)
+                              chain, traction, in_plane, p)
     else
       call local_frame(cp, sp, c, sn, s, sl, tie)
-      call plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, traction, p)
+      call plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, traction, in_plane, p)
     end if
-    g_drv = 0.0_dp
     if (trapezoidal) then
       drv = a_end * p%wear_end + g_slip * p%wear_start
       if (drivers) g_drv = a_end * p%g_wear_end + g_slip * p%g_wear_start
@@ -545,6 +584,7 @@ contains
       drv = a_end * p%wfric_dip + g_slip * p%slip_dip
       if (drivers) g_drv = a_end * p%g_wfric_dip + g_slip * p%g_slip_dip
     end if
+    if (.not. drivers) g_drv = 0.0_dp
   end subroutine evaluate
 
   !> dG / d theta at fixed s of a driver with d G / d sl = g_drv: g_drv . d sl / d theta, d sl /
