@@ -290,7 +290,10 @@ contains
           end if
           p%slip_dip = abs(nv(1)) * slip_norm
           if (drivers) then
-            g_slip_norm = (nv(1) * e_t(:, 1) + nv(2) * e_t(:, 2) - g_mu * mat%inv_kt)
+            ! n - d(mu p) / K_t
+            g_slip_norm(1) = -(g_mu(1) * mat%inv_kt)
+            g_slip_norm(2) = nv(1) - g_mu(2) * mat%inv_kt
+            g_slip_norm(3) = nv(2) - g_mu(3) * mat%inv_kt
             if (in_plane) then
               p%g_slip_dip = g_slip_norm
             else
@@ -447,7 +450,11 @@ contains
     ! Energies, as the 2D law's (interlock_plane_law) with vectors: the frictional work on the
     ! damaged part, the damage dissipation Y dD (the elastic part exact, the friction part at
     ! first order), the stored energy (sigma_k . s_k - D tau_f . sf) / 2.
-    tauf_norm = sqrt(p%tauf(1)**2 + p%tauf(2)**2)
+    if (abs(p%tauf(2)) > 0.0_dp) then
+      tauf_norm = sqrt(p%tauf(1)**2 + p%tauf(2)**2)
+    else
+      tauf_norm = abs(p%tauf(1))
+    end if
     p%wfric = p%dmg * tauf_norm * p%slip_norm
     p%wdmg = 0.0_dp
     if (p%dmg > o%dmg) then

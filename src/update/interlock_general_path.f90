@@ -166,7 +166,8 @@ contains
   !> `in_plane`: an increment of the 2D law (s_T2 = 0, no strike state, every azimuth 0) whose
   !> caller takes the (1:2, 1:2) block of the tangent alone (step_3d's in_plane). The state
   !> and the chain of the current and the trial sub-increment take turns in two slots (no
-  !> copies); `new` is written only on success; nothing is allocated.
+  !> copies); `new` is written only on success (the planes beyond n_planes not); nothing is
+  !> allocated.
   pure subroutine substep(mat, solver, s, old, new, tangent, info, tol, h_first, in_plane)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
@@ -186,9 +187,9 @@ contains
     n = mat%n_planes
     s_old = [old%s(1), old%s(2), old%s_t2]
     ds = s - s_old
-    ! (a trial sub-increment writes every field but the planes beyond n, which stay old's)
-    st(1) = old
-    st(2) = old
+    ! (a trial sub-increment writes every value but those of the planes beyond n, which no
+    ! step reads and `new` does not take)
+    call take_state(n, old, st(1))
     do k = 1, n
       jc(k, 1) = plane_chain_t(0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp)
       jc(k, 2) = jc(k, 1)
@@ -230,8 +231,35 @@ contains
     end do
     call check_chain(mat, chain_peak, info, allowed)
     if (.not. allowed) return
-    new = st(cur)
+    call take_state(n, st(cur), new)
     info%substeps = n_accepted
   end subroutine substep
+
+  !> `to` = `from` in every value but those of the planes beyond n, which stay `to`'s (an update
+  !> defines the values of the material's planes alone: interlock_state).
+  pure subroutine take_state(n, from, to)
+    integer, intent(in) :: n
+    type(interlock_state_3d_t), intent(in) :: from
+    type(interlock_state_3d_t), intent(inout) :: to
+    integer :: k
+    do k = 1, n
+      to%damage(k) = from%damage(k)
+      to%beta(k) = from%beta(k)
+      to%sf(k) = from%sf(k)
+      to%zeta(k) = from%zeta(k)
+      to%theta(k) = from%theta(k)
+      to%tauf(k) = from%tauf(k)
+      to%sf_strike(k) = from%sf_strike(k)
+      to%tauf_strike(k) = from%tauf_strike(k)
+    end do
+    to%s = from%s
+    to%sigma = from%sigma
+    to%work = from%work
+    to%stored = from%stored
+    to%diss_damage = from%diss_damage
+    to%diss_friction = from%diss_friction
+    to%s_t2 = from%s_t2
+    to%sigma_t2 = from%sigma_t2
+  end subroutine take_state
 
 end module interlock_general_path

@@ -158,8 +158,8 @@ contains
   !> The general path (interlock_general_path) of a 2D increment, in the (n, t1) plane of the
   !> 3D law: tol > 0, error-controlled sub-increments from the fraction h_first; tol = 0, the
   !> whole increment as one step, retried on sub-increments (split only as failures require)
-  !> when its solve fails. Only the material's planes are converted (the others are `old`'s in
-  !> `new`, as every update leaves them); `new` is written only on success.
+  !> when its solve fails. Only the material's planes are converted and written (an update
+  !> defines the values of those alone: interlock_state); `new` is written only on success.
   pure subroutine general_path(mat, solver, s, old, new, tangent, info, tol, h_first)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
@@ -170,19 +170,32 @@ contains
     type(interlock_info_t), intent(inout) :: info
     type(interlock_state_3d_t) :: old_3d, new_3d
     real(dp) :: tangent_3d(3, 3)
-    integer :: n
+    integer :: n, k
     n = mat%n_planes
     old_3d%interlock_state_t = old
-    old_3d%sf_strike(1:n) = 0.0_dp
-    old_3d%tauf_strike(1:n) = 0.0_dp
+    do k = 1, n
+      old_3d%sf_strike(k) = 0.0_dp
+      old_3d%tauf_strike(k) = 0.0_dp
+    end do
     old_3d%s_t2 = 0.0_dp
     old_3d%sigma_t2 = 0.0_dp
-    ! (single_step writes the material's planes only)
-    if (.not. tol > 0.0_dp) new_3d = old_3d
     call integrate_increment(mat, solver, [s(1), s(2), 0.0_dp], old_3d, new_3d, tangent_3d, &
                              info, tol, h_first, .true.)
     if (info%status /= status_ok) return
-    new = new_3d%interlock_state_t
+    do k = 1, n
+      new%damage(k) = new_3d%damage(k)
+      new%beta(k) = new_3d%beta(k)
+      new%sf(k) = new_3d%sf(k)
+      new%zeta(k) = new_3d%zeta(k)
+      new%theta(k) = new_3d%theta(k)
+      new%tauf(k) = new_3d%tauf(k)
+    end do
+    new%s = new_3d%s
+    new%sigma = new_3d%sigma
+    new%work = new_3d%work
+    new%stored = new_3d%stored
+    new%diss_damage = new_3d%diss_damage
+    new%diss_friction = new_3d%diss_friction
     tangent = tangent_3d(1:2, 1:2)
   end subroutine general_path
 

@@ -502,9 +502,9 @@ contains
     ! plane: 0 there)
     negative_tauf1 = p%tauf(1) < 0.0_dp .or. &
                      (.not. p%tauf(1) > 0.0_dp .and. p%g_tauf(1, 1) > 0.0_dp)
-    dsig_dth = p%sig_loc(1) * rot(2, :) - p%sig_loc(2) * rot(1, :)
+    dsig_dth(1:2) = p%sig_loc(1) * rot(2, 1:2) - p%sig_loc(2) * rot(1, 1:2)
+    if (strike) dsig_dth(3) = p%sig_loc(1) * rot(2, 3) - p%sig_loc(2) * rot(1, 3)
     if (strike) k_k = 0.0_dp
-    dsig_loc(3) = 0.0_dp
     do j = 1, ncol
       jn%dmg(j) = dot_local(p%g_dmg, dsl(:, j), strike)
       jn%beta(j) = dot_local(p%g_beta, dsl(:, j), strike)
@@ -519,7 +519,8 @@ contains
       if (.not. fresh) then
         if (p%dmg_kept) then
           jn%dmg(j) = jn%dmg(j) + jo%dmg(j)
-          dsig_loc = dsig_loc + p%dmg_sig * jo%dmg(j)
+          dsig_loc(1:2) = dsig_loc(1:2) + p%dmg_sig(1:2) * jo%dmg(j)
+          if (strike) dsig_loc(3) = dsig_loc(3) + p%dmg_sig(3) * jo%dmg(j)
         end if
         if (p%beta_kept) jn%beta(j) = jn%beta(j) + jo%beta(j)
         do i = 1, nrow
@@ -540,7 +541,13 @@ contains
       else
         jn%atauf1(j) = jn%tauf(j, 1)
       end if
-      k_k(:, j) = to_macro(cp, sp, c, sn, dsig_loc) + dsig_dth * dtheta(j)
+      if (strike) then
+        k_k(:, j) = to_macro(cp, sp, c, sn, dsig_loc) + dsig_dth * dtheta(j)
+      else
+        ! (every azimuth 0: to_macro's turn by theta in (n, t1) alone)
+        k_k(1, j) = (c * dsig_loc(1) - sn * dsig_loc(2)) + dsig_dth(1) * dtheta(j)
+        k_k(2, j) = (sn * dsig_loc(1) + c * dsig_loc(2)) + dsig_dth(2) * dtheta(j)
+      end if
     end do
   end subroutine chain_plane
 
@@ -579,7 +586,12 @@ contains
     end if
     if (trapezoidal) then
       drv = a_end * p%wear_end + g_slip * p%wear_start
-      if (drivers) g_drv = a_end * p%g_wear_end + g_slip * p%g_wear_start
+      if (drivers) then
+        ! (in the plane (n, t1) the s_kt2 entry is not wanted)
+        g_drv(1:2) = a_end * p%g_wear_end(1:2) + g_slip * p%g_wear_start(1:2)
+        g_drv(3) = 0.0_dp
+        if (.not. in_plane) g_drv(3) = a_end * p%g_wear_end(3) + g_slip * p%g_wear_start(3)
+      end if
     else
       drv = a_end * p%wfric_dip + g_slip * p%slip_dip
       if (drivers) g_drv = a_end * p%g_wfric_dip + g_slip * p%g_slip_dip
@@ -631,7 +643,9 @@ contains
   !> rotations are the identity (the same values; a flat plane of a RIA whose azimuths are 0).
   pure logical function flat_frame(cp, sp, c, sn)
     real(dp), intent(in) :: cp, sp, c, sn
-    flat_frame = cp >= 1.0_dp .and. c >= 1.0_dp .and. abs(sp) <= 0.0_dp .and. abs(sn) <= 0.0_dp
+    ! (sn first: most planes are inclined)
+    flat_frame = .false.
+    if (abs(sn) <= 0.0_dp) flat_frame = cp >= 1.0_dp .and. c >= 1.0_dp .and. abs(sp) <= 0.0_dp
   end function flat_frame
 
   !> a = T^T a T for the rotation T by (cs, sn) = (cos, sin) of an angle in the plane of the
