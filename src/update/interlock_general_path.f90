@@ -14,7 +14,7 @@ module interlock_general_path
   use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, n_schemes, &
       scheme_list
   use interlock_numbers, only: format_real, format_integer
-  use interlock_state, only: interlock_state_3d_t
+  use interlock_state, only: interlock_state_3d_t, state_3d_take
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
   use interlock_step_3d, only: plane_chain_t, step_3d, chain_bounded
   use interlock_substep_control, only: next_sub_increment, count_attempt, after_failure, &
@@ -189,9 +189,9 @@ contains
     ds = s - s_old
     ! (a trial sub-increment writes every value but those of the planes beyond n, which no
     ! step reads and `new` does not take)
-    call take_state(n, old, st(1))
+    call state_3d_take(n, old, st(1))
     do k = 1, n
-      jc(k, 1) = plane_chain_t(0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp)
+      jc(k, 1) = plane_chain_t(0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp)
       jc(k, 2) = jc(k, 1)
     end do
     cur = 1
@@ -223,7 +223,12 @@ contains
         cur = trial
         trial = 3 - cur
         tangent = tangent_trial
-        chain_peak = max(chain_peak, maxval(abs(tangent)))
+        if (in_plane) then
+          ! (the rest of the tangent is 0 there)
+          chain_peak = max(chain_peak, maxval(abs(tangent(1:2, 1:2))))
+        else
+          chain_peak = max(chain_peak, maxval(abs(tangent)))
+        end if
         alpha = a_end
         n_accepted = n_accepted + 1
       end if
@@ -231,35 +236,8 @@ contains
     end do
     call check_chain(mat, chain_peak, info, allowed)
     if (.not. allowed) return
-    call take_state(n, st(cur), new)
+    call state_3d_take(n, st(cur), new)
     info%substeps = n_accepted
   end subroutine substep
-
-  !> `to` = `from` in every value but those of the planes beyond n, which stay `to`'s (an update
-  !> defines the values of the material's planes alone: interlock_state).
-  pure subroutine take_state(n, from, to)
-    integer, intent(in) :: n
-    type(interlock_state_3d_t), intent(in) :: from
-    type(interlock_state_3d_t), intent(inout) :: to
-    integer :: k
-    do k = 1, n
-      to%damage(k) = from%damage(k)
-      to%beta(k) = from%beta(k)
-      to%sf(k) = from%sf(k)
-      to%zeta(k) = from%zeta(k)
-      to%theta(k) = from%theta(k)
-      to%tauf(k) = from%tauf(k)
-      to%sf_strike(k) = from%sf_strike(k)
-      to%tauf_strike(k) = from%tauf_strike(k)
-    end do
-    to%s = from%s
-    to%sigma = from%sigma
-    to%work = from%work
-    to%stored = from%stored
-    to%diss_damage = from%diss_damage
-    to%diss_friction = from%diss_friction
-    to%s_t2 = from%s_t2
-    to%sigma_t2 = from%sigma_t2
-  end subroutine take_state
 
 end module interlock_general_path

@@ -14,7 +14,7 @@ module interlock_general_update
   use interlock_material, only: interlock_material_t, interlock_solver_t, n_schemes, &
       scheme_list, kernel_general
   use interlock_numbers, only: format_real, format_integer
-  use interlock_state, only: interlock_state_t, interlock_state_3d_t
+  use interlock_state, only: interlock_state_t, interlock_state_3d_t, state_take
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
   use interlock_kernels, only: kernel_step
   use interlock_general_path, only: integrate_increment
@@ -182,20 +182,7 @@ contains
     call integrate_increment(mat, solver, [s(1), s(2), 0.0_dp], old_3d, new_3d, tangent_3d, &
                              info, tol, h_first, .true.)
     if (info%status /= status_ok) return
-    do k = 1, n
-      new%damage(k) = new_3d%damage(k)
-      new%beta(k) = new_3d%beta(k)
-      new%sf(k) = new_3d%sf(k)
-      new%zeta(k) = new_3d%zeta(k)
-      new%theta(k) = new_3d%theta(k)
-      new%tauf(k) = new_3d%tauf(k)
-    end do
-    new%s = new_3d%s
-    new%sigma = new_3d%sigma
-    new%work = new_3d%work
-    new%stored = new_3d%stored
-    new%diss_damage = new_3d%diss_damage
-    new%diss_friction = new_3d%diss_friction
+    call state_take(n, new_3d%interlock_state_t, new)
     tangent = tangent_3d(1:2, 1:2)
   end subroutine general_path
 

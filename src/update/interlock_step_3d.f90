@@ -30,7 +30,7 @@ module interlock_step_3d
   !> weight's (its sign is not the stored tau_f,1's where that is 0 at the tie s_kn = 0).
   type :: plane_chain_t
     real(dp) :: beta(3), dmg(3), sf(3, 2), zeta(3), theta(3), tauf(3, 2)
-    real(dp) :: atauf1(3) = 0.0_dp
+    real(dp) :: atauf1(3)
   end type plane_chain_t
 
 contains
@@ -502,8 +502,7 @@ contains
     ! plane: 0 there)
     negative_tauf1 = p%tauf(1) < 0.0_dp .or. &
                      (.not. p%tauf(1) > 0.0_dp .and. p%g_tauf(1, 1) > 0.0_dp)
-    dsig_dth(1:2) = p%sig_loc(1) * rot(2, 1:2) - p%sig_loc(2) * rot(1, 1:2)
-    if (strike) dsig_dth(3) = p%sig_loc(1) * rot(2, 3) - p%sig_loc(2) * rot(1, 3)
+    dsig_dth = p%sig_loc(1) * rot(2, :) - p%sig_loc(2) * rot(1, :)
     if (strike) k_k = 0.0_dp
     do j = 1, ncol
       jn%dmg(j) = dot_local(p%g_dmg, dsl(:, j), strike)
