@@ -550,10 +550,11 @@ contains
     end do
   end subroutine chain_plane
 
-  !> g . v of two local vectors (the order of dot_product); without `strike` (a chain in the
-  !> plane (n, t1), where v(3) = 0) the first two terms alone.
+  !> g . v of two local vectors (the order of dot_product; any stride: a row of k_loc without a
+  !> copy); without `strike` (a chain in the plane (n, t1), where v(3) = 0) the first two terms
+  !> alone.
   pure real(dp) function dot_local(g, v, strike) result(d)
-    real(dp), intent(in) :: g(3), v(3)
+    real(dp), intent(in) :: g(:), v(:)
     logical, intent(in) :: strike
     d = g(1) * v(1) + g(2) * v(2)
     if (strike) d = d + g(3) * v(3)
