@@ -66,21 +66,40 @@ contains
   !> the step |d sf| = (|tr| - mu p) / K_t. Derivatives with respect to the local separation
   !> (s_kn, s_kt1, s_kt2), g_x(j) = d x / d sl(j): g_mu the bound's, g_nv(:, i) = d n_i =
   !> (K_t / |tr|) (e_i - n_i n) . d s_kt, g_tauf(:, i) = n_i g_mu + mu p g_nv(:, i). In one
-  !> dimension this is friction_step's slide.
+  !> dimension this is friction_step's slide. `in_plane` (absent: false): tr(2) = 0, and only the
+  !> derivatives of the first components with respect to (s_kn, s_kt1) are wanted: n = (+-1, 0),
+  !> whose derivative there (the projector's 1-1 entry) is 0, tau_f,2 = 0; the derivatives of the
+  !> second components are left 0.
   pure subroutine radial_return(mu_p, g_mu, kt, inv_kt, st, tr, trn, nv, g_nv, sf, tauf, &
-                                g_tauf, slip)
+                                g_tauf, slip, in_plane)
     real(dp), intent(in) :: mu_p, g_mu(3), kt, inv_kt, st(2), tr(2), trn
     real(dp), intent(out) :: nv(2), g_nv(3, 2), sf(2), tauf(2), g_tauf(3, 2), slip
+    logical, intent(in), optional :: in_plane
     integer :: i
-    do i = 1, 2
-      nv(i) = tr(i) / trn
-    end do
-    do i = 1, 2
-      g_nv(:, i) = (kt / trn) * (e_t(:, i) - nv(i) * (nv(1) * e_t(:, 1) + nv(2) * e_t(:, 2)))
-      tauf(i) = mu_p * nv(i)
-      g_tauf(:, i) = nv(i) * g_mu + mu_p * g_nv(:, i)
-      sf(i) = st(i) - tauf(i) * inv_kt
-    end do
+    logical :: plane_nt
+    plane_nt = .false.
+    if (present(in_plane)) plane_nt = in_plane
+    if (plane_nt) then
+      nv(1) = sign(1.0_dp, tr(1))
+      nv(2) = 0.0_dp
+      g_nv = 0.0_dp
+      g_tauf(:, 2) = 0.0_dp
+      tauf(2) = 0.0_dp
+      sf(2) = st(2)
+      tauf(1) = mu_p * nv(1)
+      g_tauf(:, 1) = nv(1) * g_mu
+      sf(1) = st(1) - tauf(1) * inv_kt
+    else
+      do i = 1, 2
+        nv(i) = tr(i) / trn
+      end do
+      do i = 1, 2
+        g_nv(:, i) = (kt / trn) * (e_t(:, i) - nv(i) * (nv(1) * e_t(:, 1) + nv(2) * e_t(:, 2)))
+        tauf(i) = mu_p * nv(i)
+        g_tauf(:, i) = nv(i) * g_mu + mu_p * g_nv(:, i)
+        sf(i) = st(i) - tauf(i) * inv_kt
+      end do
+    end if
     slip = (trn - mu_p) * inv_kt
   end subroutine radial_return
 

@@ -121,9 +121,11 @@ contains
     logical, intent(in) :: drivers, chain
     type(plane_law_3d_t), intent(out) :: p
     if (present(tie)) then
-      call plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, .true., .true., p)
+      call plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, .true., .true., .false., &
+                              p)
     else
-      call plane_law_3d_parts(mat, sl, 0.0_dp, o, mu_p_o, drivers, chain, .true., .true., p)
+      call plane_law_3d_parts(mat, sl, 0.0_dp, o, mu_p_o, drivers, chain, .true., .true., .false., &
+                              p)
     end if
   end subroutine plane_law_3d
 
@@ -136,13 +138,17 @@ contains
   !> angle is coupled to the end of the step, on a plane that wears). `trapezoidal_terms`: the
   !> trapezoidal scheme's wear terms wear_start and wear_end are wanted (true where mu_p_o > 0;
   !> else they are not set, nor the slip of a free plane's step, which its energies do not need:
-  !> slip_norm 0 there).
+  !> slip_norm 0 there). `in_plane`: the strike components vanish (s_kt2 = 0, sf_o,2 = tauf_o,2
+  !> = 0) and only the derivatives of the (s_kn, s_kt1) components with respect to (s_kn, s_kt1)
+  !> are wanted (the others' are left 0 or as they come): the slip is along the dip (D14's mean
+  !> direction is the start direction, tau_tr's: radial return gives its values), |tau_tr| =
+  !> |tau_tr,1|, no projector.
   pure subroutine plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, traction, &
-                                     trapezoidal_terms, p)
+                                     trapezoidal_terms, in_plane, p)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: sl(3), tie, mu_p_o
     type(plane_start_3d_t), intent(in) :: o
-    logical, intent(in) :: drivers, chain, traction, trapezoidal_terms
+    logical, intent(in) :: drivers, chain, traction, trapezoidal_terms, in_plane
     type(plane_law_3d_t), intent(out) :: p
     real(dp) :: pos, dpos, tn, tn2, gd_n, gd_t, mu_p, g_mu(3), tr(2), trn, nv(2), g_nv(3, 2), &
                 n_o(2), n_new(2), g_nn(3, 2), dsf(2), g_dsf(3, 2), slip_norm, g_slip_norm(3), &
@@ -218,7 +224,11 @@ contains
     if (mu_p > 0.0_dp) then
       tr(1) = mat%kt * (sl(2) - o%sf(1))
       tr(2) = mat%kt * (sl(3) - o%sf(2))
-      trn = vector_norm(tr)
+      if (in_plane) then
+        trn = abs(tr(1))
+      else
+        trn = vector_norm(tr)
+      end if
       if (trn <= mu_p) then
         ! stick
         p%sf = o%sf
@@ -231,8 +241,9 @@ contains
         slip_norm = 0.0_dp
         g_slip_norm = 0.0_dp
       else
-        if (mu_p_o > 0.0_dp) call mean_direction_return(mat, o%tauf, mu_p_o, tr, mu_p, g_mu, &
-                                                        mean_direction, n_o, n_new, g_nn, phi_nn)
+        if (mu_p_o > 0.0_dp .and. .not. in_plane) &
+          call mean_direction_return(mat, o%tauf, mu_p_o, tr, mu_p, g_mu, mean_direction, n_o, &
+                                     n_new, g_nn, phi_nn)
         ! |tau_f| = mu p sliding, in either direction rule
         p%tauf_norm = mu_p
         if (mean_direction) then
@@ -281,16 +292,23 @@ contains
           ! radial return (interlock_friction): sf - sf_o = n (|tau_tr| - mu p) / K_t along
           ! n = tau_tr / |tau_tr|
           call radial_return(mu_p, g_mu, mat%kt, mat%inv_kt, sl(2:3), tr, trn, nv, g_nv, p%sf, &
-                             p%tauf, p%g_tauf, slip_norm)
+                             p%tauf, p%g_tauf, slip_norm, in_plane)
           if (chain) then
-            do i = 1, 2
+            do i = 1, merge(1, 2, in_plane)
               p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
             end do
           end if
           p%slip_dip = abs(nv(1)) * slip_norm
           if (drivers) then
-            g_slip_norm = (nv(1) * e_t(:, 1) + nv(2) * e_t(:, 2) - g_mu * mat%inv_kt)
-            p%g_slip_dip = sign_of(nv(1)) * g_nv(:, 1) * slip_norm + abs(nv(1)) * g_slip_norm
+            ! n - d(mu p) / K_t
+            g_slip_norm(1) = -(g_mu(1) * mat%inv_kt)
+            g_slip_norm(2) = nv(1) - g_mu(2) * mat%inv_kt
+            g_slip_norm(3) = nv(2) - g_mu(3) * mat%inv_kt
+            if (in_plane) then
+              p%g_slip_dip = g_slip_norm
+            else
+              p%g_slip_dip = sign_of(nv(1)) * g_nv(:, 1) * slip_norm + abs(nv(1)) * g_slip_norm
+            end if
           end if
         end if
       end if
@@ -318,7 +336,7 @@ contains
         tr(1) = mat%kt * (sl(2) - o%sf(1))
         tr(2) = mat%kt * (sl(3) - o%sf(2))
         trn = vector_norm(tr)
-        if (trn > 0.0_dp .and. mu_p_o > 0.0_dp) &
+        if (trn > 0.0_dp .and. mu_p_o > 0.0_dp .and. .not. in_plane) &
           call mean_direction_return(mat, o%tauf, mu_p_o, tr, mu_p, g_mu, mean_direction, n_o, &
                                      n_new, g_nn, phi_nn)
         if (mean_direction) then
@@ -377,16 +395,27 @@ contains
 
     ! The wear drivers in the dip direction.
     p%wfric_dip = p%dmg * atau * p%slip_dip
+    ! (in the plane (n, t1) the slip is along the dip: share 1, d share 0)
     share = 1.0_dp
     if (trapezoidal_terms .and. .not. mean_direction) then
-      if (slip_norm > 0.0_dp) share = p%slip_dip / slip_norm
+      if (slip_norm > 0.0_dp .and. .not. in_plane) share = p%slip_dip / slip_norm
       p%wear_start = p%slip_dip * share
       p%wear_end = p%wfric_dip
     end if
     if (drivers) then
-      if (.not. mean_direction) p%g_wfric_dip = (p%g_dmg * atau + p%dmg * g_atau) * p%slip_dip + &
-                                                (p%dmg * atau) * p%g_slip_dip
-      if (trapezoidal_terms .and. .not. mean_direction) then
+      if (.not. mean_direction) then
+        if (grows) then
+          p%g_wfric_dip = (p%g_dmg * atau + p%dmg * g_atau) * p%slip_dip + &
+                          (p%dmg * atau) * p%g_slip_dip
+        else
+          ! (g_dmg = 0)
+          p%g_wfric_dip = (p%dmg * g_atau) * p%slip_dip + (p%dmg * atau) * p%g_slip_dip
+        end if
+      end if
+      if (trapezoidal_terms .and. in_plane) then
+        p%g_wear_start = p%g_slip_dip
+        p%g_wear_end = p%g_wfric_dip
+      else if (trapezoidal_terms .and. .not. mean_direction) then
         g_share = 0.0_dp
         if (slip_norm > 0.0_dp) g_share = (p%g_slip_dip - share * g_slip_norm) / slip_norm
         p%g_wear_start = p%g_slip_dip * share + p%slip_dip * g_share

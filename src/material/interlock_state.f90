@@ -7,6 +7,7 @@ module interlock_state
   implicit none
   private
   public :: interlock_state_t, interlock_state_init, interlock_state_3d_t, interlock_state_3d_init
+  public :: state_take, state_3d_take
 
   !> The per-plane values have no default value (interlock_state_init sets every one, the
   !> update every one of the material's planes), so that a state declared on every call, the
@@ -64,5 +65,43 @@ contains
     state%sf_strike = 0.0_dp
     state%tauf_strike = 0.0_dp
   end subroutine interlock_state_3d_init
+
+  !> `to` = `from` in every value but those of the planes beyond n, which stay `to`'s (an update
+  !> defines the values of the material's planes alone).
+  pure subroutine state_take(n, from, to)
+    integer, intent(in) :: n
+    type(interlock_state_t), intent(in) :: from
+    type(interlock_state_t), intent(inout) :: to
+    integer :: k
+    do k = 1, n
+      to%damage(k) = from%damage(k)
+      to%beta(k) = from%beta(k)
+      to%sf(k) = from%sf(k)
+      to%zeta(k) = from%zeta(k)
+      to%theta(k) = from%theta(k)
+      to%tauf(k) = from%tauf(k)
+    end do
+    to%s = from%s
+    to%sigma = from%sigma
+    to%work = from%work
+    to%stored = from%stored
+    to%diss_damage = from%diss_damage
+    to%diss_friction = from%diss_friction
+  end subroutine state_take
+
+  !> state_take of a three-dimensional point.
+  pure subroutine state_3d_take(n, from, to)
+    integer, intent(in) :: n
+    type(interlock_state_3d_t), intent(in) :: from
+    type(interlock_state_3d_t), intent(inout) :: to
+    integer :: k
+    call state_take(n, from%interlock_state_t, to%interlock_state_t)
+    do k = 1, n
+      to%sf_strike(k) = from%sf_strike(k)
+      to%tauf_strike(k) = from%tauf_strike(k)
+    end do
+    to%s_t2 = from%s_t2
+    to%sigma_t2 = from%sigma_t2
+  end subroutine state_3d_take
 
 end module interlock_state

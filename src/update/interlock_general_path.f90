@@ -14,7 +14,7 @@ module interlock_general_path
   use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes, n_schemes, &
       scheme_list
   use interlock_numbers, only: format_real, format_integer
-  use interlock_state, only: interlock_state_3d_t
+  use interlock_state, only: interlock_state_3d_t, state_3d_take
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
   use interlock_step_3d, only: plane_chain_t, step_3d, chain_bounded
   use interlock_substep_control, only: next_sub_increment, count_attempt, after_failure, &
@@ -167,7 +167,8 @@ contains
   !> `in_plane`: an increment of the 2D law (s_T2 = 0, no strike state, every azimuth 0) whose
   !> caller takes the (1:2, 1:2) block of the tangent alone (step_3d's in_plane). The state
   !> and the chain of the current and the trial sub-increment take turns in two slots (no
-  !> copies); `new` is written only on success; nothing is allocated.
+  !> copies); `new` is written only on success (the planes beyond n_planes not); nothing is
+  !> allocated.
   pure subroutine substep(mat, solver, s, old, new, tangent, info, tol, h_first, in_plane)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
@@ -187,11 +188,11 @@ contains
     n = mat%n_planes
     s_old = [old%s(1), old%s(2), old%s_t2]
     ds = s - s_old
-    ! (a trial sub-increment writes every field but the planes beyond n, which stay old's)
-    st(1) = old
-    st(2) = old
+    ! (a trial sub-increment writes every value but those of the planes beyond n, which no
+    ! step reads and `new` does not take)
+    call state_3d_take(n, old, st(1))
     do k = 1, n
-      jc(k, 1) = plane_chain_t(0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp)
+      jc(k, 1) = plane_chain_t(0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp)
       jc(k, 2) = jc(k, 1)
     end do
     cur = 1
@@ -212,7 +213,7 @@ contains
                    alpha, a_end, jc(1:n, cur), jc(1:n, trial), .true., err, in_plane)
       info%newton_iterations = max(info%newton_iterations, it)
       stable = .true.
-      if (solved) stable = chain_bounded(jc(:, trial), n)
+      if (solved) stable = chain_bounded(jc(:, trial), n, merge(2, 3, in_plane))
       if (.not. (solved .and. stable)) then
         call after_failure(solved, h, info, give_up)
         if (give_up) return
@@ -223,7 +224,12 @@ contains
         cur = trial
         trial = 3 - cur
         tangent = tangent_trial
-        chain_peak = max(chain_peak, maxval(abs(tangent)))
+        if (in_plane) then
+          ! (the rest of the tangent is 0 there)
+          chain_peak = max(chain_peak, maxval(abs(tangent(1:2, 1:2))))
+        else
+          chain_peak = max(chain_peak, maxval(abs(tangent)))
+        end if
         alpha = a_end
         n_accepted = n_accepted + 1
       end if
@@ -231,7 +237,7 @@ contains
     end do
     call check_chain(mat, chain_peak, info, allowed)
     if (.not. allowed) return
-    new = st(cur)
+    call state_3d_take(n, st(cur), new)
     info%substeps = n_accepted
   end subroutine substep
 

@@ -14,7 +14,7 @@ module interlock_general_update
   use interlock_material, only: interlock_material_t, interlock_solver_t, n_schemes, &
       scheme_list, kernel_general
   use interlock_numbers, only: format_real, format_integer
-  use interlock_state, only: interlock_state_t, interlock_state_3d_t
+  use interlock_state, only: interlock_state_t, interlock_state_3d_t, state_take
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
   use interlock_kernels, only: kernel_step
   use interlock_general_path, only: integrate_increment
@@ -158,8 +158,8 @@ contains
   !> The general path (interlock_general_path) of a 2D increment, in the (n, t1) plane of the
   !> 3D law: tol > 0, error-controlled sub-increments from the fraction h_first; tol = 0, the
   !> whole increment as one step, retried on sub-increments (split only as failures require)
-  !> when its solve fails. Only the material's planes are converted (the others are `old`'s in
-  !> `new`, as every update leaves them); `new` is written only on success.
+  !> when its solve fails. Only the material's planes are converted and written (an update
+  !> defines the values of those alone: interlock_state); `new` is written only on success.
   pure subroutine general_path(mat, solver, s, old, new, tangent, info, tol, h_first)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
@@ -170,19 +170,19 @@ contains
     type(interlock_info_t), intent(inout) :: info
     type(interlock_state_3d_t) :: old_3d, new_3d
     real(dp) :: tangent_3d(3, 3)
-    integer :: n
+    integer :: n, k
     n = mat%n_planes
     old_3d%interlock_state_t = old
-    old_3d%sf_strike(1:n) = 0.0_dp
-    old_3d%tauf_strike(1:n) = 0.0_dp
+    do k = 1, n
+      old_3d%sf_strike(k) = 0.0_dp
+      old_3d%tauf_strike(k) = 0.0_dp
+    end do
     old_3d%s_t2 = 0.0_dp
     old_3d%sigma_t2 = 0.0_dp
-    ! (single_step writes the material's planes only)
-    if (.not. tol > 0.0_dp) new_3d = old_3d
     call integrate_increment(mat, solver, [s(1), s(2), 0.0_dp], old_3d, new_3d, tangent_3d, &
                              info, tol, h_first, .true.)
     if (info%status /= status_ok) return
-    new = new_3d%interlock_state_t
+    call state_take(n, new_3d%interlock_state_t, new)
     tangent = tangent_3d(1:2, 1:2)
   end subroutine general_path
 

@@ -31,7 +31,7 @@ module interlock_step_3d
   !> weight's (its sign is not the stored tau_f,1's where that is 0 at the tie s_kn = 0).
   type :: plane_chain_t
     real(dp) :: beta(3), dmg(3), sf(3, 2), zeta(3), theta(3), tauf(3, 2)
-    real(dp) :: atauf1(3) = 0.0_dp
+    real(dp) :: atauf1(3)
   end type plane_chain_t
 
 contains
@@ -144,7 +144,12 @@ contains
             norm2(p%tauf) * direction_turn(o%tauf, p%tauf))
         end if
         sig = sig + w * sig_k
-        tangent = tangent + w * k_k
+        if (ncol > 2) then
+          tangent = tangent + w * k_k
+        else
+          ! (the (1:2, 1:2) block alone: chain_plane's k_k has no more)
+          tangent(1:2, 1:2) = tangent(1:2, 1:2) + w * k_k(1:2, 1:2)
+        end if
         if (darea < 0.0_dp) tangent(:, 1) = tangent(:, 1) + (gam * darea * h_end) * sig_k
         new%diss_damage = new%diss_damage + gam * area * p%wdmg
         new%diss_friction = new%diss_friction + gam * area * p%wfric
@@ -168,16 +173,26 @@ contains
 
   !> The chained derivatives of the planes in use stay far from overflow: the sum of their
   !> magnitudes (one comparison per plane; a NaN is not caught here but by the update's
-  !> finiteness check).
-  pure logical function chain_bounded(jn, n)
+  !> finiteness check). ncol = 2: a chain in the plane (n, t1) (step_3d's in_plane), whose
+  !> other entries are 0.
+  pure logical function chain_bounded(jn, n, ncol)
     type(plane_chain_t), intent(in) :: jn(:)
-    integer, intent(in) :: n
+    integer, intent(in) :: n, ncol
     integer :: k
     real(dp), parameter :: bound = 1.0e100_dp
+    real(dp) :: total
     chain_bounded = .true.
     do k = 1, n
-      if (sum(abs(jn(k)%beta)) + sum(abs(jn(k)%dmg)) + sum(abs(jn(k)%sf)) + &
-          sum(abs(jn(k)%zeta)) + sum(abs(jn(k)%tauf)) > bound) chain_bounded = .false.
+      if (ncol > 2) then
+        total = sum(abs(jn(k)%beta)) + sum(abs(jn(k)%dmg)) + sum(abs(jn(k)%sf)) + &
+                sum(abs(jn(k)%zeta)) + sum(abs(jn(k)%tauf))
+      else
+        total = abs(jn(k)%beta(1)) + abs(jn(k)%beta(2)) + abs(jn(k)%dmg(1)) + &
+                abs(jn(k)%dmg(2)) + abs(jn(k)%sf(1, 1)) + abs(jn(k)%sf(2, 1)) + &
+                abs(jn(k)%zeta(1)) + abs(jn(k)%zeta(2)) + abs(jn(k)%tauf(1, 1)) + &
+                abs(jn(k)%tauf(2, 1))
+      end if
+      if (total > bound) chain_bounded = .false.
     end do
   end function chain_bounded
 
@@ -291,7 +306,7 @@ contains
         flat = flat_frame(cp, sp, c, sn)
       end if
       call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, terms, drivers, &
-                    chain, .not. (coupled .and. wears), c, sn, flat, p, drv, g_drv)
+                    chain, .not. (coupled .and. wears), ncol < 3, c, sn, flat, p, drv, g_drv)
       if (.not. (coupled .and. wears)) exit
       if (phase == 0) thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), o%theta)
       fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
@@ -399,13 +414,14 @@ contains
     real(dp), intent(out) :: k_k(3, 3)
     type(plane_chain_t), intent(inout) :: jn
     real(dp) :: rot(3, 3), dsl(3, 3), jphi(3), dg(3), d_drv(3), dtheta(3), dsig_loc(3), tn2, &
-                dsn_o(3), x_o, q2, h1(2), h2(2), hdmg1, phi1, phi2, gdsl, dsig_dth(3)
+                dsn_o(3), x_o, q2, h1(2), h2(2), hdmg1, phi1, phi2, gdsl, dsig_dth(3), gtau(2)
     integer :: i, j, nrow
-    logical :: fresh, negative_tauf1
+    logical :: fresh, negative_tauf1, strike
 
     fresh = .not. h_start > 0.0_dp
-    ! (the strike rows of jn: 0 with the columns S_N, S_T1 alone)
+    ! (the strike rows of jn: 0 with the columns S_N, S_T1 alone, where d s_kt2 = 0 too)
     nrow = ncol - 1
+    strike = ncol > 2
     ! the start direction of slip's angle: d phi_o = n_o' . dtauf_o / |tauf_o|
     jphi = 0.0_dp
     if (p%mean .and. .not. fresh) then
@@ -445,8 +461,14 @@ contains
         phi2 = 0.0_dp
         q2 = p%slip_dip
       end if
-      d_drv = a_w * (h1(1) * jo%sf(:, 1) + h1(2) * jo%sf(:, 2) + phi1 * jphi + hdmg1 * jo%dmg) + &
-              g_slip * (h2(1) * jo%sf(:, 1) + h2(2) * jo%sf(:, 2) + phi2 * jphi) + dg * q2
+      if (strike) then
+        d_drv = a_w * (h1(1) * jo%sf(:, 1) + h1(2) * jo%sf(:, 2) + phi1 * jphi + hdmg1 * jo%dmg) + &
+                g_slip * (h2(1) * jo%sf(:, 1) + h2(2) * jo%sf(:, 2) + phi2 * jphi) + dg * q2
+      else
+        ! (no strike slip, no start direction's turn)
+        d_drv(1:2) = a_w * (h1(1) * jo%sf(1:2, 1) + hdmg1 * jo%dmg(1:2)) + &
+                     g_slip * (h2(1) * jo%sf(1:2, 1)) + dg(1:2) * q2
+      end if
     end if
     ! d sl at fixed angle, then the angle the traction is taken at
     rot = frame_rows(cp, sp, c, sn)
@@ -455,7 +477,7 @@ contains
     end do
     if (coupled_wear) then
       do j = 1, ncol
-        gdsl = g_drv(1) * dsl(1, j) + g_drv(2) * dsl(2, j) + g_drv(3) * dsl(3, j)
+        gdsl = dot_local(g_drv, dsl(:, j), strike)
         if (fresh) then
           jn%zeta(j) = gdsl / fp
         else
@@ -473,7 +495,7 @@ contains
     end do
     if (.not. coupled_wear) then
       do j = 1, ncol
-        gdsl = g_drv(1) * dsl(1, j) + g_drv(2) * dsl(2, j) + g_drv(3) * dsl(3, j)
+        gdsl = dot_local(g_drv, dsl(:, j), strike)
         if (fresh) then
           jn%zeta(j) = gdsl
         else
@@ -491,28 +513,36 @@ contains
     negative_tauf1 = p%tauf(1) < 0.0_dp .or. &
                      (.not. p%tauf(1) > 0.0_dp .and. p%g_tauf(1, 1) > 0.0_dp)
     dsig_dth = p%sig_loc(1) * rot(2, :) - p%sig_loc(2) * rot(1, :)
-    k_k = 0.0_dp
+    if (strike) k_k = 0.0_dp
     do j = 1, ncol
-      jn%dmg(j) = dot_product(p%g_dmg, dsl(:, j))
-      jn%beta(j) = dot_product(p%g_beta, dsl(:, j))
+      jn%dmg(j) = dot_local(p%g_dmg, dsl(:, j), strike)
+      jn%beta(j) = dot_local(p%g_beta, dsl(:, j), strike)
       do i = 1, nrow
-        jn%tauf(j, i) = dot_product(p%g_tauf(:, i), dsl(:, j))
-        jn%sf(j, i) = dot_product(p%g_sf(:, i), dsl(:, j))
+        gtau(i) = dot_local(p%g_tauf(:, i), dsl(:, j), strike)
+        jn%tauf(j, i) = gtau(i)
+        jn%sf(j, i) = dot_local(p%g_sf(:, i), dsl(:, j), strike)
       end do
-      dsig_loc = matmul(p%k_loc, dsl(:, j))
+      do i = 1, ncol
+        dsig_loc(i) = dot_local(p%k_loc(i, :), dsl(:, j), strike)
+      end do
       if (.not. fresh) then
         if (p%dmg_kept) then
           jn%dmg(j) = jn%dmg(j) + jo%dmg(j)
-          dsig_loc = dsig_loc + p%dmg_sig * jo%dmg(j)
+          dsig_loc(1:2) = dsig_loc(1:2) + p%dmg_sig(1:2) * jo%dmg(j)
+          if (strike) dsig_loc(3) = dsig_loc(3) + p%dmg_sig(3) * jo%dmg(j)
         end if
         if (p%beta_kept) jn%beta(j) = jn%beta(j) + jo%beta(j)
         do i = 1, nrow
-          jn%tauf(j, i) = jn%tauf(j, i) - p%g_tauf(2, i) * jo%sf(j, 1) - &
-                          p%g_tauf(3, i) * jo%sf(j, 2) + p%phi_tauf(i) * jphi(j)
-          jn%sf(j, i) = jn%sf(j, i) - p%g_sf(2, i) * jo%sf(j, 1) - &
-                        p%g_sf(3, i) * jo%sf(j, 2) + jo%sf(j, i) + p%phi_sf(i) * jphi(j)
-          dsig_loc(1 + i) = dsig_loc(1 + i) + p%dmg * (jn%tauf(j, i) - &
-                            dot_product(p%g_tauf(:, i), dsl(:, j)))
+          jn%tauf(j, i) = jn%tauf(j, i) - p%g_tauf(2, i) * jo%sf(j, 1)
+          jn%sf(j, i) = jn%sf(j, i) - p%g_sf(2, i) * jo%sf(j, 1)
+          if (strike) then
+            jn%tauf(j, i) = jn%tauf(j, i) - p%g_tauf(3, i) * jo%sf(j, 2) + p%phi_tauf(i) * jphi(j)
+            jn%sf(j, i) = jn%sf(j, i) - p%g_sf(3, i) * jo%sf(j, 2) + jo%sf(j, i) + &
+                          p%phi_sf(i) * jphi(j)
+          else
+            jn%sf(j, i) = jn%sf(j, i) + jo%sf(j, i)
+          end if
+          dsig_loc(1 + i) = dsig_loc(1 + i) + p%dmg * (jn%tauf(j, i) - gtau(i))
         end do
       end if
       if (negative_tauf1) then
@@ -520,9 +550,25 @@ contains
       else
         jn%atauf1(j) = jn%tauf(j, 1)
       end if
-      k_k(:, j) = to_macro(cp, sp, c, sn, dsig_loc) + dsig_dth * dtheta(j)
+      if (strike) then
+        k_k(:, j) = to_macro(cp, sp, c, sn, dsig_loc) + dsig_dth * dtheta(j)
+      else
+        ! (every azimuth 0: to_macro's turn by theta in (n, t1) alone)
+        k_k(1, j) = (c * dsig_loc(1) - sn * dsig_loc(2)) + dsig_dth(1) * dtheta(j)
+        k_k(2, j) = (sn * dsig_loc(1) + c * dsig_loc(2)) + dsig_dth(2) * dtheta(j)
+      end if
     end do
   end subroutine chain_plane
+
+  !> g . v of two local vectors (the order of dot_product; any stride: a row of k_loc without a
+  !> copy); without `strike` (a chain in the plane (n, t1), where v(3) = 0) the first two terms
+  !> alone.
+  pure real(dp) function dot_local(g, v, strike) result(d)
+    real(dp), intent(in) :: g(:), v(:)
+    logical, intent(in) :: strike
+    d = g(1) * v(1) + g(2) * v(2)
+    if (strike) d = d + g(3) * v(3)
+  end function dot_local
 
   !> The plane law at the angle of frame (c, sn) (`flat`: the macro one), with its traction,
   !> tangent and energies if `traction` (else plane_traction_3d gives them), and the scheme's
@@ -532,11 +578,12 @@ contains
   !> d G / d sl only with `drivers` (else 0). `terms`: the trapezoidal wear terms are wanted
   !> (plane_law_3d_parts; with `trapezoidal`).
   pure subroutine evaluate(mat, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, terms, &
-                           drivers, chain, traction, c, sn, flat, p, drv, g_drv)
+                           drivers, chain, traction, in_plane, c, sn, flat, p, drv, g_drv)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: cp, sp, s(3), mu_p_o, a_end, g_slip, c, sn
     type(plane_start_3d_t), intent(in) :: o
     logical, intent(in) :: trapezoidal, terms, drivers, chain, traction
+    logical, intent(in) :: in_plane   !< plane_law_3d_parts'
     logical, intent(in) :: flat   !< flat_frame(cp, sp, c, sn)
     real(dp), intent(out) :: drv, g_drv(3)
     type(plane_law_3d_t), intent(out) :: p
@@ -548,15 +595,21 @@ contains
     else
       call local_frame(cp, sp, c, sn, s, sl, tie)
     end if
-    call plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, traction, terms, p)
-    g_drv = 0.0_dp
+    call plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, traction, terms, in_plane, &
+                            p)
     if (trapezoidal) then
       drv = a_end * p%wear_end + g_slip * p%wear_start
-      if (drivers) g_drv = a_end * p%g_wear_end + g_slip * p%g_wear_start
+      if (drivers) then
+        ! (in the plane (n, t1) the s_kt2 entry is not wanted)
+        g_drv(1:2) = a_end * p%g_wear_end(1:2) + g_slip * p%g_wear_start(1:2)
+        g_drv(3) = 0.0_dp
+        if (.not. in_plane) g_drv(3) = a_end * p%g_wear_end(3) + g_slip * p%g_wear_start(3)
+      end if
     else
       drv = a_end * p%wfric_dip + g_slip * p%slip_dip
       if (drivers) g_drv = a_end * p%g_wfric_dip + g_slip * p%g_slip_dip
     end if
+    if (.not. drivers) g_drv = 0.0_dp
   end subroutine evaluate
 
   !> dG / d theta at fixed s of a driver with d G / d sl = g_drv: g_drv . d sl / d theta, d sl /
@@ -603,7 +656,9 @@ contains
   !> rotations are the identity (the same values; a flat plane of a RIA whose azimuths are 0).
   pure logical function flat_frame(cp, sp, c, sn)
     real(dp), intent(in) :: cp, sp, c, sn
-    flat_frame = cp >= 1.0_dp .and. c >= 1.0_dp .and. abs(sp) <= 0.0_dp .and. abs(sn) <= 0.0_dp
+    ! (sn first: most planes are inclined)
+    flat_frame = .false.
+    if (abs(sn) <= 0.0_dp) flat_frame = cp >= 1.0_dp .and. c >= 1.0_dp .and. abs(sp) <= 0.0_dp
   end function flat_frame
 
   !> a = T^T a T for the rotation T by (cs, sn) = (cos, sin) of an angle in the plane of the
