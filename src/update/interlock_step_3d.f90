@@ -139,9 +139,10 @@ contains
         if (estimate) then
           call add_wear_error(e, w, [dsig_dtheta(1), max(abs(dsig_dtheta(2)), &
                               abs(dsig_dtheta(3)))], err_angle, err_traction)
-          ! the friction direction's turn, on a plane that slides at the end
-          if (p%slip_norm > 0.0_dp) err_traction = max(err_traction, w * p%dmg * &
-            norm2(p%tauf) * direction_turn(o%tauf, p%tauf))
+          ! the friction direction's turn, on a plane that slides at the end (none in the
+          ! plane (n, t1) of a 2D increment: the direction cannot turn)
+          if (ncol > 2 .and. p%slip_norm > 0.0_dp) err_traction = max(err_traction, w * &
+            p%dmg * norm2(p%tauf) * direction_turn(o%tauf, p%tauf))
         end if
         sig = sig + w * sig_k
         if (ncol > 2) then
