@@ -16,6 +16,9 @@ module interlock_wear
     real(dp) :: zeta_o = 0.0_dp, x = 0.0_dp, lo = 0.0_dp, hi = 0.0_dp, width = 0.0_dp
     real(dp) :: scale = 0.0_dp
     logical :: bracketed = .false., done = .false., ok = .true.
+    !> done where the bracket closed on a jump of F (the residual not at round-off): F changes
+    !> sign there without a zero, and the root stays at that point as the data move
+    logical :: at_jump = .false.
     integer :: iterations = 0, expansions = 0
   end type wear_root_t
 
@@ -81,6 +84,7 @@ contains
         rt%hi = rt%x
       end if
       if (rt%hi - rt%lo <= 4.0_dp * epsilon(1.0_dp) * abs(rt%x)) then
+        rt%at_jump = .true.
         call finish(rt, fp > 0.0_dp)
         return
       end if

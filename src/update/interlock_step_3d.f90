@@ -257,13 +257,14 @@ contains
     type(wear_root_t) :: rt
     real(dp) :: c, sn, dip_o, mu_p_o, mu_p_law, a_w, g_slip, g_trap, drv, g_drv(3), thp, fp, &
                 rot(3, 3), dzeta(3), ksl(3)
-    logical :: coupled, wears, trapezoidal, drivers, flat, terms
+    logical :: coupled, wears, trapezoidal, drivers, flat, terms, pinned
     integer :: j, phase
 
     ok = .true.
     iterations = 0
     e = 0.0_dp
     dsig_dtheta = 0.0_dp
+    thp = 0.0_dp
     coupled = solver%scheme /= scheme_explicit
     trapezoidal = solver%scheme == scheme_trapezoidal
     ! (the trapezoidal wear terms: its driver, and the coupled schemes' error estimate)
@@ -336,6 +337,14 @@ contains
         exit
       end if
     end do
+    ! A root where the plane loses contact, on a jump of F (the trapezoidal driver's start term
+    ! follows the start direction of slip on the closed side, the step's slip on the open one:
+    ! where the open side wears less, F jumps from < 0 to > 0 there), stays there as s moves:
+    ! the angle follows the plane's contact, s_kn(theta, s) = 0, so that d theta / d s = -m /
+    ! s_kt1 (d s_kn / d theta = s_kt1), not the wear equation's slope.
+    pinned = .false.
+    if (phase > 0) pinned = rt%at_jump .and. abs(p%sl(2)) > 0.0_dp .and. abs(thp) > 0.0_dp .and. &
+                            .not. abs(p%sl(1)) > contact_round_off(cp, sp, c, sn, s)
     if (coupled .and. wears) then
       if (phase > 0) zeta = rt%x
     else
@@ -366,13 +375,17 @@ contains
     if (chain) then
       call chain_plane(mat, cp, sp, c, sn, c_o, sn_o, s_o, o, jo, p, coupled .and. wears, &
                        wears .and. .not. coupled, trapezoidal, a_w, g_slip, mu_p_o, g_drv, &
-                       thp, fp, h_start, h_end, ncol, k_k, jn)
+                       thp, fp, h_start, h_end, ncol, pinned, k_k, jn)
     else if (coupled .and. wears) then
       ! d zeta / d s = (dG / d s) / F' at the root, d theta / d s = theta' d zeta / d s
       rot = frame_rows(cp, sp, c, sn)
       do j = 1, 3
-        dzeta(j) = (g_drv(1) * rot(1, j) + g_drv(2) * rot(2, j) + g_drv(3) * rot(3, j)) * &
-                   (thp / fp)
+        if (pinned) then
+          dzeta(j) = -rot(1, j) / p%sl(2)
+        else
+          dzeta(j) = (g_drv(1) * rot(1, j) + g_drv(2) * rot(2, j) + g_drv(3) * rot(3, j)) * &
+                     (thp / fp)
+        end if
       end do
       do j = 1, 3
         k_k(:, j) = k_k(:, j) + dsig_dtheta * dzeta(j)
@@ -403,7 +416,7 @@ contains
   !> of k_k and no strike rows of jn (which stay 0).
   pure subroutine chain_plane(mat, cp, sp, c, sn, c_o, sn_o, s_o, o, jo, p, coupled_wear, &
                               explicit_wear, trapezoidal, a_w, g_slip, mu_p_o, g_drv, thp, fp, &
-                              h_start, h_end, ncol, k_k, jn)
+                              h_start, h_end, ncol, pinned, k_k, jn)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: cp, sp, c, sn, c_o, sn_o, s_o(3), a_w, g_slip, mu_p_o, &
                             g_drv(3), thp, fp, h_start, h_end
@@ -412,6 +425,7 @@ contains
     type(plane_law_3d_t), intent(in) :: p
     logical, intent(in) :: coupled_wear, explicit_wear, trapezoidal
     integer, intent(in) :: ncol
+    logical, intent(in) :: pinned   !< the root stays at the contact kink (plane_step)
     real(dp), intent(out) :: k_k(3, 3)
     type(plane_chain_t), intent(inout) :: jn
     real(dp) :: rot(3, 3), dsl(3, 3), jphi(3), dg(3), d_drv(3), dtheta(3), dsig_loc(3), tn2, &
@@ -478,13 +492,18 @@ contains
     end do
     if (coupled_wear) then
       do j = 1, ncol
-        gdsl = dot_local(g_drv, dsl(:, j), strike)
-        if (fresh) then
-          jn%zeta(j) = gdsl / fp
+        if (pinned) then
+          dtheta(j) = -dsl(1, j) / p%sl(2)
+          jn%zeta(j) = dtheta(j) / thp
         else
-          jn%zeta(j) = (jo%zeta(j) + gdsl + d_drv(j)) / fp
+          gdsl = dot_local(g_drv, dsl(:, j), strike)
+          if (fresh) then
+            jn%zeta(j) = gdsl / fp
+          else
+            jn%zeta(j) = (jo%zeta(j) + gdsl + d_drv(j)) / fp
+          end if
+          dtheta(j) = thp * jn%zeta(j)
         end if
-        dtheta(j) = thp * jn%zeta(j)
         jn%theta(j) = dtheta(j)
       end do
     else
