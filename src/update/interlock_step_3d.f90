@@ -343,8 +343,10 @@ contains
     ! the angle follows the plane's contact, s_kn(theta, s) = 0, so that d theta / d s = -m /
     ! s_kt1 (d s_kn / d theta = s_kt1), not the wear equation's slope.
     pinned = .false.
-    if (phase > 0) pinned = rt%at_jump .and. abs(p%sl(2)) > 0.0_dp .and. abs(thp) > 0.0_dp .and. &
-                            .not. abs(p%sl(1)) > contact_round_off(cp, sp, c, sn, s)
+    if (phase > 0) then
+      if (rt%at_jump) pinned = abs(p%sl(2)) > 0.0_dp .and. abs(thp) > 0.0_dp .and. &
+                               .not. abs(p%sl(1)) > contact_round_off(cp, sp, c, sn, s)
+    end if
     if (coupled .and. wears) then
       if (phase > 0) zeta = rt%x
     else
