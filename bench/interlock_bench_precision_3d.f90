@@ -1,8 +1,9 @@
 !> Work-precision in three dimensions (docs/bench.md, part 3b): what an accuracy costs on the two
 !> 3D scenes of granite on the `azimuthal` RIA, N_a = 3, under sigma_N = -1.5 MPa (SPEC D8: the
 !> normal traction applied first at zero slip, then the slip path at constant sigma_N, s_N by
-!> Newton's method on the exact tangent at every step): 8 mm at 45 deg between t1 and t2; 8 mm
-!> along t1 and back, then along t2 and back. Every scheme with uniform steps (n per segment,
+!> Newton's method on the exact tangent at every step, from the last step's increment
+!> extrapolated): 8 mm at 45 deg between t1 and t2; 8 mm along t1 and back, then along t2 and
+!> back. Every scheme with uniform steps (n per segment,
 !> 25 x 2^j) and with global Richardson extrapolation of the runs at n and 2n (2 u(2n) - u(n)
 !> for the first-order schemes, (4 u(2n) - u(n)) / 3 for the trapezoidal one; its cost is both
 !> runs'), and the trapezoidal scheme with error control (substep_tol 1e-3, 1e-4,
@@ -206,7 +207,7 @@ contains
     type(scene_t) :: sc
     type(interlock_solver_t) :: solver
     type(interlock_state_3d_t) :: old, new
-    real(dp) :: corners(2, 5), t(2), sigma(3)
+    real(dp) :: corners(2, 5), t(2), sigma(3), tangent(3, 3), s_n, s_n_prev
     integer :: j, i, n_seg, stat
     character(len=message_len) :: msg
     ! the 2D work-precision's granite (interlock_bench_scenes) on the azimuthal RIA
@@ -230,14 +231,27 @@ contains
       corners = reshape([0.0_dp, 0.0_dp, 8.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 8.0_dp, &
                          0.0_dp, 0.0_dp], [2, 5])
     end if
-    call solve_normal(mat, solver, old, [0.0_dp, 0.0_dp], new, sigma, ok)
+    call solve_normal(mat, solver, old, [0.0_dp, 0.0_dp], old%s(1), new, sigma, tangent, ok)
     if (.not. ok) return
     old = new
     q(:, 0) = [old%s(1), sigma(2), sigma(3)]
+    s_n_prev = old%s(1)
     do j = 1, n_seg
       do i = 1, n
         t = corners(:, j) + (corners(:, j + 1) - corners(:, j)) * (real(i, dp) / real(n, dp))
-        call solve_normal(mat, solver, old, t, new, sigma, ok)
+        ! The first iterate of s_N: the last step's increment repeated (as FE codes extrapolate
+        ! the last increment); on a segment's first step, whose direction is new, the start's
+        ! s_N moved along the last step's tangent at constant sigma_N.
+        if (i > 1) then
+          s_n = 2.0_dp * old%s(1) - s_n_prev
+        else if (tangent(1, 1) > 0.0_dp) then
+          s_n = old%s(1) - (tangent(1, 2) * (t(1) - old%s(2)) + &
+                            tangent(1, 3) * (t(2) - old%s_t2)) / tangent(1, 1)
+        else
+          s_n = old%s(1)
+        end if
+        s_n_prev = old%s(1)
+        call solve_normal(mat, solver, old, t, s_n, new, sigma, tangent, ok)
         if (.not. ok) return
         old = new
         q(:, (j - 1) * n + i) = [old%s(1), sigma(2), sigma(3)]
@@ -245,22 +259,23 @@ contains
     end do
   end subroutine run_path
 
-  !> s_N with sigma_N(s_N, s_T) = -1.5 MPa from `old` by Newton's method on the tangent, to
-  !> 1e-12; with error control, where sigma_N(s_N) jumps by about the tolerance (the partition
+  !> s_N with sigma_N(s_N, s_T) = -1.5 MPa from the first iterate s_n by Newton's method on the
+  !> tangent, to 1e-12 (`tangent`: the last iterate's); with error control, where sigma_N(s_N) jumps by about the tolerance (the partition
   !> into sub-increments switches) and the iteration cycles, the last iterate within the
   !> tolerance is taken.
-  subroutine solve_normal(mat, solver, old, s_t, new, sigma, ok)
+  subroutine solve_normal(mat, solver, old, s_t, s_n, new, sigma, tangent, ok)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     type(interlock_state_3d_t), intent(in) :: old
     real(dp), intent(in) :: s_t(2)
+    real(dp), intent(in) :: s_n   !< the first iterate
     type(interlock_state_3d_t), intent(inout) :: new
-    real(dp), intent(out) :: sigma(3)
+    real(dp), intent(out) :: sigma(3), tangent(3, 3)
     logical, intent(out) :: ok
     type(interlock_info_t) :: info
-    real(dp) :: s(3), tangent(3, 3)
+    real(dp) :: s(3)
     integer :: it
-    s = [old%s(1), s_t(1), s_t(2)]
+    s = [s_n, s_t(1), s_t(2)]
     ok = .false.
     do it = 1, 60
       call interlock_update_3d(mat, solver, s, old, new, sigma, tangent, info)

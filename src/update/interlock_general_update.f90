@@ -18,7 +18,7 @@ module interlock_general_update
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
   use interlock_kernels, only: kernel_step
   use interlock_general_path, only: integrate_increment
-  use interlock_substep_control, only: largest_increments
+  use interlock_substep_control, only: largest_increments, size_after_whole
   implicit none
   private
   public :: general_update, kernel_update
@@ -102,8 +102,7 @@ contains
         if (.not. done) err = 0.0_dp
         if (err > solver%substep_tol) then
           done = .false.
-          h_first = max(0.1_dp, 0.9_dp * sqrt(solver%substep_tol / err))
-          h_first = scale(1.0_dp, exponent(h_first) - 1)
+          h_first = size_after_whole(err, solver%substep_tol)
         end if
       end if
       if (.not. done) call general_path(mat, solver, s, old, new, tangent, info, &

@@ -14,7 +14,7 @@ module interlock_substep_control
   implicit none
   private
   public :: smallest_fraction, next_sub_increment, count_attempt, after_failure, keep_trial, &
-            next_size, stiffness_scale, check_chain, largest_increments
+            next_size, size_after_whole, stiffness_scale, check_chain, largest_increments
 
   !> A sub-increment ending this close to the end of the increment ends there.
   real(dp), parameter :: smallest_fraction = 1.0e-12_dp
@@ -93,11 +93,24 @@ contains
     else
       h = h * max(0.1_dp, 0.9_dp * sqrt(tol / err))
     end if
-    h = scale(1.0_dp, exponent(h) - 1)
+    h = power_of_2_below(h)
     ! Error control takes no size below the smallest it accepts whatever the estimate (below
     ! it, kept trials whose estimate stays above the tolerance would never grow back)
     if (control) h = max(h, smallest_controlled_fraction)
   end subroutine next_size
+
+  !> The size of the next trial after the whole increment was tried as one step with the
+  !> estimate err > tol (next_size of a trial of size 1 not kept).
+  pure real(dp) function size_after_whole(err, tol) result(h)
+    real(dp), intent(in) :: err, tol
+    h = power_of_2_below(max(0.1_dp, 0.9_dp * sqrt(tol / err)))
+  end function size_after_whole
+
+  !> The power of 2 at most h (h > 0; h itself where it is one).
+  elemental real(dp) function power_of_2_below(h)
+    real(dp), intent(in) :: h
+    power_of_2_below = scale(1.0_dp, exponent(h) - 1)
+  end function power_of_2_below
 
   !> The largest stiffness the law can show (penalty, or traction over the asperity depth).
   pure real(dp) function stiffness_scale(mat)
