@@ -18,7 +18,7 @@ module interlock_general_path
   use interlock_status, only: interlock_info_t, status_ok, status_bad_input, status_local_failure
   use interlock_step_3d, only: plane_chain_t, step_3d, chain_bounded
   use interlock_substep_control, only: next_sub_increment, count_attempt, after_failure, &
-      keep_trial, next_size, size_after_whole, check_chain, largest_increments
+      keep_trial, next_size, check_chain, largest_increments
   implicit none
   private
   public :: general_update_3d, single_step, integrate_increment
@@ -76,13 +76,6 @@ contains
   !> sub-increments (split only as failures require) when its solve fails. `in_plane`: the
   !> increment lies in the (n, t1) plane of a RIA with every azimuth 0 (substep's 2-column
   !> chain). info%status says whether `new` and `tangent` were written.
-  !> With error control from the whole increment (h_first = 1) in 3D, its first trial is the
-  !> one step with the estimate (single_step): the same values, estimate and tangent as one
-  !> chained sub-increment from the start (core_oracle3d), without the chain's derivatives of
-  !> the start state, which a kept whole increment does not need; where the estimate exceeds
-  !> the tolerance the sub-increments start at the size next_size takes after that trial, and
-  !> where the step fails, substepping takes the increment from its start. (A 2D increment
-  !> comes here after its specialised kernel's one step, with h_first from its estimate.)
   pure subroutine integrate_increment(mat, solver, s, old, new, tangent, info, tol, h_first, &
                                       in_plane)
     type(interlock_material_t), intent(in) :: mat
@@ -93,27 +86,12 @@ contains
     real(dp), intent(out) :: tangent(3, 3)
     type(interlock_info_t), intent(inout) :: info
     logical, intent(in) :: in_plane
-    real(dp) :: err, h
     if (tol > 0.0_dp) then
-      h = h_first
-      info%attempts = 0
-      if (.not. in_plane .and. h_first >= 1.0_dp .and. tol < huge(1.0_dp)) then
-        call single_step(mat, solver, s, old, new, tangent, info, err)
-        if (info%status == status_ok) then
-          if (.not. err > tol) return
-          h = size_after_whole(err, tol)
-        else
-          info%status = status_ok
-          info%message = ''
-          info%attempts = 0
-        end if
-      end if
-      call substep(mat, solver, s, old, new, tangent, info, tol, h, in_plane)
+      call substep(mat, solver, s, old, new, tangent, info, tol, h_first, in_plane)
     else
       call single_step(mat, solver, s, old, new, tangent, info)
       if (info%status == status_local_failure) then
         info%status = status_ok
-        info%attempts = 0
         call substep(mat, solver, s, old, new, tangent, info, huge(1.0_dp), 0.5_dp, in_plane)
       end if
     end if
@@ -222,6 +200,7 @@ contains
     alpha = 0.0_dp
     h = h_first
     n_accepted = 0
+    info%attempts = 0
     tangent = 0.0_dp
     chain_peak = 0.0_dp
     do while (alpha < 1.0_dp)
