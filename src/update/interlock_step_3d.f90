@@ -314,7 +314,11 @@ contains
       fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
       if (phase == 0) then
         if (.not. drv > 0.0_dp) exit
-        call wear_root_begin(rt, o%zeta, drv)
+        if (chain .and. h_start > 0.0_dp) then
+          call wear_root_begin(rt, o%zeta, drv, fp)
+        else
+          call wear_root_begin(rt, o%zeta, drv)
+        end if
         phase = 1
       else if (phase == 1) then
         call wear_root_update(rt, rt%x - o%zeta - drv, fp, solver%newton_tol, &
