@@ -314,7 +314,7 @@ contains
       fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
       if (phase == 0) then
         if (.not. drv > 0.0_dp) exit
-        if (chain .and. h_start > 0.0_dp) then
+        if (chain .and. (h_start > 0.0_dp .or. h_end < 1.0_dp)) then
           call wear_root_begin(rt, o%zeta, drv, fp)
         else
           call wear_root_begin(rt, o%zeta, drv)
