@@ -163,7 +163,9 @@ contains
   !> a failed one-step solve) the size is quartered on failure and doubled on success. Sizes are powers of 2 (h_first is one), so that the partition of the
   !> increment does not vary with s except where a decision switches. Each plane's state
   !> carries its derivatives with respect to the end of the increment from one sub-increment to
-  !> the next (interlock_step_3d's chain), so that the tangent is the exact one of the chain.
+  !> the next (interlock_step_3d's chain), so that the tangent is the exact one of the chain; a
+  !> trial over the whole increment (the first where h_first = 1) is the one-step law's, without
+  !> the chain: its tangent at the fixed start state is the chain's.
   !> `in_plane`: an increment of the 2D law (s_T2 = 0, no strike state, every azimuth 0) whose
   !> caller takes the (1:2, 1:2) block of the tangent alone (step_3d's in_plane). The state
   !> and the chain of the current and the trial sub-increment take turns in two slots (no
