@@ -10,8 +10,9 @@ module interlock_wear
   !> The backward-Euler wear equation of one plane, F(zeta) = zeta - zeta_o - g(theta(zeta)) = 0
   !> (g the frictional work in the step, >= 0), solved by reverse communication: the caller
   !> evaluates F and F' at `x` and calls wear_root_update until `done`. F(zeta_o) = -g0 <= 0;
-  !> the root is bracketed from zeta_o upwards (doubling steps) and found by Newton's method
-  !> safeguarded by bisection, so it cannot diverge. `ok` is false when a bound was reached.
+  !> the root is bracketed from zeta_o upwards (doubling steps, or Newton's steps from below
+  !> where the first point was Newton's from zeta_o) and found by Newton's method safeguarded
+  !> by bisection, so it cannot diverge. `ok` is false when a bound was reached.
   type :: wear_root_t
     real(dp) :: zeta_o = 0.0_dp, x = 0.0_dp, lo = 0.0_dp, hi = 0.0_dp, width = 0.0_dp
     real(dp) :: scale = 0.0_dp
@@ -19,6 +20,8 @@ module interlock_wear
     !> done where the bracket closed on a jump of F (the residual not at round-off): F changes
     !> sign there without a zero, and the root stays at that point as the data move
     logical :: at_jump = .false.
+    !> the first point was Newton's from zeta_o (wear_root_begin with the slope there)
+    logical :: newton_start = .false.
     integer :: iterations = 0, expansions = 0
   end type wear_root_t
 
@@ -42,15 +45,25 @@ contains
     worn_angle_slope = -(theta - thetaf) * inv_zeta0
   end function worn_angle_slope
 
-  !> Start from F(zeta_o) = -g0 (g0 > 0): the first point to evaluate is zeta_o + g0.
-  pure subroutine wear_root_begin(rt, zeta_o, g0)
+  !> Start from F(zeta_o) = -g0 (g0 > 0): the first point to evaluate is zeta_o + g0, or, given
+  !> the slope F'(zeta_o) = fp_o > 0, Newton's point zeta_o + g0 / fp_o (the same where F is
+  !> linear with slope 1: a fully worn plane); the root is then within the square of the step's
+  !> curvature term of it, so that the first point often meets the tolerance.
+  pure subroutine wear_root_begin(rt, zeta_o, g0, fp_o)
     type(wear_root_t), intent(out) :: rt
     real(dp), intent(in) :: zeta_o, g0
+    real(dp), intent(in), optional :: fp_o
     rt%zeta_o = zeta_o
     rt%lo = zeta_o
     rt%width = g0
     rt%scale = g0
     rt%x = zeta_o + g0
+    if (present(fp_o)) then
+      if (fp_o > 0.0_dp) then
+        rt%x = zeta_o + g0 / fp_o
+        rt%newton_start = .true.
+      end if
+    end if
   end subroutine wear_root_begin
 
   !> F = f and F' = fp at rt%x: the next point in rt%x, or rt%done (root at rt%x when rt%ok).
@@ -67,6 +80,22 @@ contains
       return
     end if
     if (.not. rt%bracketed) then
+      if (f < 0.0_dp .and. rt%newton_start .and. fp > 0.0_dp) then
+        ! below the root from Newton's first point: Newton's step upwards (F' > 0) where it
+        ! moves, else the doubling steps
+        xn = rt%x - f / fp
+        if (xn > rt%x) then
+          rt%lo = rt%x
+          rt%iterations = rt%iterations + 1
+          if (rt%iterations > max_iterations) then
+            call finish(rt, .false.)
+            return
+          end if
+          rt%x = xn
+          rt%width = xn - rt%zeta_o
+          return
+        end if
+      end if
       if (f < 0.0_dp) then
         rt%lo = rt%x
         rt%width = 2.0_dp * rt%width

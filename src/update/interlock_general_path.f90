@@ -163,7 +163,9 @@ contains
   !> a failed one-step solve) the size is quartered on failure and doubled on success. Sizes are powers of 2 (h_first is one), so that the partition of the
   !> increment does not vary with s except where a decision switches. Each plane's state
   !> carries its derivatives with respect to the end of the increment from one sub-increment to
-  !> the next (interlock_step_3d's chain), so that the tangent is the exact one of the chain.
+  !> the next (interlock_step_3d's chain), so that the tangent is the exact one of the chain; a
+  !> trial over the whole increment (the first where h_first = 1) is the one-step law's, without
+  !> the chain: its tangent at the fixed start state is the chain's.
   !> `in_plane`: an increment of the 2D law (s_T2 = 0, no strike state, every azimuth 0) whose
   !> caller takes the (1:2, 1:2) block of the tangent alone (step_3d's in_plane). The state
   !> and the chain of the current and the trial sub-increment take turns in two slots (no
@@ -182,7 +184,7 @@ contains
     type(plane_chain_t) :: jc(max_planes, 2)
     real(dp) :: ds(3), s_old(3), s_end(3), alpha, h, a_end, err, chain_peak, tangent_trial(3, 3)
     integer :: it, n_accepted, k, n, cur, trial
-    logical :: solved, stable, control, kept, give_up, allowed
+    logical :: solved, stable, control, kept, give_up, allowed, whole
 
     control = tol >= 0.0_dp .and. tol < huge(1.0_dp)
     n = mat%n_planes
@@ -209,11 +211,19 @@ contains
       if (a_end >= 1.0_dp) s_end = s
       call count_attempt(info, solver%max_substeps, allowed)
       if (.not. allowed) return
-      call step_3d(mat, solver, s_end, st(cur), st(trial), tangent_trial, it, solved, .true., &
-                   alpha, a_end, jc(1:n, cur), jc(1:n, trial), .true., err, in_plane)
+      ! (the whole increment as one trial: its tangent at the fixed start state is the chain's,
+      ! and no later sub-increment needs its derivatives: the one-step law, without the chain)
+      whole = .not. alpha > 0.0_dp .and. a_end >= 1.0_dp
+      if (whole) then
+        call step_3d(mat, solver, s_end, st(cur), st(trial), tangent_trial, it, solved, &
+                     .false., alpha, a_end, jc(1:n, cur), jc(1:n, trial), .true., err, in_plane)
+      else
+        call step_3d(mat, solver, s_end, st(cur), st(trial), tangent_trial, it, solved, &
+                     .true., alpha, a_end, jc(1:n, cur), jc(1:n, trial), .true., err, in_plane)
+      end if
       info%newton_iterations = max(info%newton_iterations, it)
       stable = .true.
-      if (solved) stable = chain_bounded(jc(:, trial), n, merge(2, 3, in_plane))
+      if (solved .and. .not. whole) stable = chain_bounded(jc(:, trial), n, merge(2, 3, in_plane))
       if (.not. (solved .and. stable)) then
         call after_failure(solved, h, info, give_up)
         if (give_up) return

@@ -44,11 +44,16 @@ contains
   !> increment with end separation S, from its fraction h_start to h_end (ds_o / dS = h_start,
   !> ds / dS = h_end); jo(k) are the start planes' derivatives d / dS, and `tangent` = d sigma /
   !> dS, jn(k) the end planes' (h_start = 0: the start state is the increment's, jo = 0 is not
-  !> read). `estimate`: the embedded error estimate of the wear in err. `in_plane` (with `chain`; absent: false): the increment lies in the (n, t1) plane (s_T2 = 0
+  !> read). `estimate`: the embedded error estimate of the wear in err. `in_plane` (absent:
+  !> false): the increment lies in the (n, t1) plane (s_T2 = 0
   !> at its start and end, no strike component in the state, every azimuth 0), where every
-  !> strike derivative is 0, and only the (1:2, 1:2) block of `tangent` is wanted: the chain
-  !> carries the columns S_N and S_T1 alone (the others of jn stay as they come, the rest of
-  !> `tangent` 0).
+  !> strike derivative is 0, and only the (1:2, 1:2) block of `tangent` is wanted (the rest of
+  !> `tangent` 0); with `chain` the chain carries the columns S_N and S_T1 alone (the others of
+  !> jn stay as they come). On a sub-increment smaller than the increment (`chain`, h_start > 0
+  !> or h_end < 1) a wear equation's iteration starts at Newton's point from zeta_o (F' there
+  !> comes with the start angle's evaluation; on small sub-increments it usually meets the
+  !> tolerance at once); on the whole increment at the one-step law's first point (the
+  !> specialised kernels' too).
   pure subroutine step_3d(mat, solver, s, old, new, tangent, iterations, ok, chain, h_start, &
                           h_end, jo, jn, estimate, err, in_plane)
     type(interlock_material_t), intent(in) :: mat
@@ -314,7 +319,12 @@ contains
       fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
       if (phase == 0) then
         if (.not. drv > 0.0_dp) exit
-        call wear_root_begin(rt, o%zeta, drv)
+        if (chain .and. (h_start > 0.0_dp .or. h_end < 1.0_dp)) then
+          ! (Newton's first point: see step_3d)
+          call wear_root_begin(rt, o%zeta, drv, fp)
+        else
+          call wear_root_begin(rt, o%zeta, drv)
+        end if
         phase = 1
       else if (phase == 1) then
         call wear_root_update(rt, rt%x - o%zeta - drv, fp, solver%newton_tol, &

@@ -369,7 +369,13 @@ contains
       fp = 1.0_dp - drv%d(4)
       zeta = o%zeta
       if (drv%v > 0.0_dp) then
-        call wear_root_begin(rt, o%zeta%v, drv%v)
+        ! (a sub-increment smaller than the increment, d s_o / dS > 0 or d s / dS < 1: the first
+        ! point Newton's from zeta_o, as the plain path's)
+        if (s_o(1)%d(1) > 0.0_dp .or. s(1)%d(1) < 1.0_dp) then
+          call wear_root_begin(rt, o%zeta%v, drv%v, fp)
+        else
+          call wear_root_begin(rt, o%zeta%v, drv%v)
+        end if
         do
           z = constant(rt%x)
           z%d(4) = 1.0_dp
