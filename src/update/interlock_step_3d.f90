@@ -655,13 +655,15 @@ contains
   !> with R = d sl / d s (rows m, e, q) = B A: B turns by theta in (n, d) (to_macro's first
   !> rotation), A by the azimuth in (t1, t2); each turns both sides in one plane of the frame,
   !> the columns (B^T K_loc), then the rows ((B^T K_loc) B); the azimuth's only where phi /= 0,
-  !> none for a flat plane. k_k only `with_tangent` (else not set).
+  !> none for a flat plane. The entries are turned as scalars (in registers, not through
+  !> memory). k_k only `with_tangent` (else not set).
   pure subroutine rotated(cp, sp, c, sn, flat, with_tangent, p, sig_k, k_k)
     real(dp), intent(in) :: cp, sp, c, sn
     logical, intent(in) :: flat   !< flat_frame(cp, sp, c, sn)
     logical, intent(in) :: with_tangent
     type(plane_law_3d_t), intent(in) :: p
     real(dp), intent(out) :: sig_k(3), k_k(3, 3)
+    real(dp) :: a11, a21, a31, a12, a22, a32, a13, a23, a33
     if (flat) then
       sig_k = p%sig_loc
       if (with_tangent) k_k = p%k_loc
@@ -669,9 +671,40 @@ contains
     end if
     sig_k = to_macro(cp, sp, c, sn, p%sig_loc)
     if (.not. with_tangent) return
-    k_k = p%k_loc
-    call turn_both_sides(c, sn, 1, k_k)
-    if (sp < 0.0_dp .or. sp > 0.0_dp .or. cp < 1.0_dp) call turn_both_sides(cp, sp, 2, k_k)
+    a11 = p%k_loc(1, 1)
+    a21 = p%k_loc(2, 1)
+    a31 = p%k_loc(3, 1)
+    a12 = p%k_loc(1, 2)
+    a22 = p%k_loc(2, 2)
+    a32 = p%k_loc(3, 2)
+    a13 = p%k_loc(1, 3)
+    a23 = p%k_loc(2, 3)
+    a33 = p%k_loc(3, 3)
+    ! by theta in the plane of the indices 1 and 2: each column's pair, then each row's
+    call turn_pair(c, sn, a11, a21)
+    call turn_pair(c, sn, a12, a22)
+    call turn_pair(c, sn, a13, a23)
+    call turn_pair(c, sn, a11, a12)
+    call turn_pair(c, sn, a21, a22)
+    call turn_pair(c, sn, a31, a32)
+    if (sp < 0.0_dp .or. sp > 0.0_dp .or. cp < 1.0_dp) then
+      ! by the azimuth in the plane of the indices 2 and 3
+      call turn_pair(cp, sp, a21, a31)
+      call turn_pair(cp, sp, a22, a32)
+      call turn_pair(cp, sp, a23, a33)
+      call turn_pair(cp, sp, a12, a13)
+      call turn_pair(cp, sp, a22, a23)
+      call turn_pair(cp, sp, a32, a33)
+    end if
+    k_k(1, 1) = a11
+    k_k(2, 1) = a21
+    k_k(3, 1) = a31
+    k_k(1, 2) = a12
+    k_k(2, 2) = a22
+    k_k(3, 2) = a32
+    k_k(1, 3) = a13
+    k_k(2, 3) = a23
+    k_k(3, 3) = a33
   end subroutine rotated
 
   !> The plane's frame is the macro one: azimuth and angle 0 exactly (cos 1, sin 0), where the
@@ -683,27 +716,15 @@ contains
     if (abs(sn) <= 0.0_dp) flat_frame = cp >= 1.0_dp .and. c >= 1.0_dp .and. abs(sp) <= 0.0_dp
   end function flat_frame
 
-  !> a = T^T a T for the rotation T by (cs, sn) = (cos, sin) of an angle in the plane of the
-  !> indices i and i + 1: each column's pair (v_i, v_i+1) -> (cs v_i - sn v_i+1, sn v_i +
-  !> cs v_i+1), then each row's.
-  pure subroutine turn_both_sides(cs, sn, i, a)
+  !> The pair (x, y) of a vector turned by (cs, sn) = (cos, sin) of an angle in its plane: (cs x
+  !> - sn y, sn x + cs y).
+  pure subroutine turn_pair(cs, sn, x, y)
     real(dp), intent(in) :: cs, sn
-    integer, intent(in) :: i
-    real(dp), intent(inout) :: a(3, 3)
-    real(dp) :: x, y
-    integer :: j
-    do j = 1, 3
-      x = a(i, j)
-      y = a(i + 1, j)
-      a(i, j) = cs * x - sn * y
-      a(i + 1, j) = sn * x + cs * y
-    end do
-    do j = 1, 3
-      x = a(j, i)
-      y = a(j, i + 1)
-      a(j, i) = cs * x - sn * y
-      a(j, i + 1) = sn * x + cs * y
-    end do
-  end subroutine turn_both_sides
+    real(dp), intent(inout) :: x, y
+    real(dp) :: x_o
+    x_o = x
+    x = cs * x_o - sn * y
+    y = sn * x_o + cs * y
+  end subroutine turn_pair
 
 end module interlock_step_3d
