@@ -399,8 +399,9 @@ contains
       else
         dzeta = 0.0_dp
       end if
-      call add_turned(cp, sp, c, sn, flat, p%k_loc, coupled .and. wears, dsig_dtheta, dzeta, &
-                      w, tangent)
+      ! (K_loc's normal row: plane_traction_3d)
+      call add_turned(cp, sp, c, sn, flat, p%k_loc, .not. p%dmg_grows, coupled .and. wears, &
+                      dsig_dtheta, dzeta, w, tangent)
     end if
 
     if (estimate .and. wears) then
@@ -666,11 +667,13 @@ contains
   !> azimuth in (t1, t2); each turns both sides in one plane of the frame, the columns
   !> (B^T K_loc), then the rows ((B^T K_loc) B); the azimuth's only where phi /= 0, none for a
   !> flat plane. The entries are turned and added as scalars (in registers, not through a
-  !> 3x3 array in memory).
-  pure subroutine add_turned(cp, sp, c, sn, flat, k_loc, angle, u, v, w, tangent)
+  !> 3x3 array in memory); where the normal row of K_loc is 0 off its diagonal (`normal_row`:
+  !> damage does not grow), its products are left out (the same values).
+  pure subroutine add_turned(cp, sp, c, sn, flat, k_loc, normal_row, angle, u, v, w, tangent)
     real(dp), intent(in) :: cp, sp, c, sn
     logical, intent(in) :: flat   !< flat_frame(cp, sp, c, sn)
     real(dp), intent(in) :: k_loc(3, 3)
+    logical, intent(in) :: normal_row   !< k_loc(1, 2:3) = 0
     logical, intent(in) :: angle
     real(dp), intent(in) :: u(3), v(3), w
     real(dp), intent(inout) :: tangent(3, 3)
@@ -687,8 +690,16 @@ contains
     if (.not. flat) then
       ! by theta in the plane of the indices 1 and 2: each column's pair, then each row's
       call turn_pair(c, sn, a11, a21)
-      call turn_pair(c, sn, a12, a22)
-      call turn_pair(c, sn, a13, a23)
+      if (normal_row) then
+        ! (turn_pair's values with a12 = a13 = 0)
+        a12 = 0.0_dp - sn * a22
+        a22 = c * a22
+        a13 = 0.0_dp - sn * a23
+        a23 = c * a23
+      else
+        call turn_pair(c, sn, a12, a22)
+        call turn_pair(c, sn, a13, a23)
+      end if
       call turn_pair(c, sn, a11, a12)
       call turn_pair(c, sn, a21, a22)
       call turn_pair(c, sn, a31, a32)
