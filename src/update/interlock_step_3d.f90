@@ -272,14 +272,21 @@ contains
     ! start separation); mu p_o, the start state's friction bound, also decides whether the
     ! plane slides at the start (D14's mean-direction rule), and the trapezoidal start weight
     ! D_o mu p_o / 2 is the error estimate's reference.
-    ! (the start angle's frame: also the frame of the law's first evaluation)
-    dip_o = cp * s_o(2) + sp * s_o(3)
+    ! (the start angle's frame: also the frame of the law's first evaluation; the start
+    ! separation's dip component only where a start yield is taken: the explicit and implicit
+    ! weights have none)
+    dip_o = 0.0_dp
+    if (trapezoidal .or. estimate) dip_o = cp * s_o(2) + sp * s_o(3)
     call wear_weights(mat, solver%scheme, o%dmg, o%tauf(1), c_o, sn_o, s_o(1), dip_o, a_w, &
                       g_slip)
     mu_p_o = 0.0_dp
     mu_p_law = 0.0_dp
     g_trap = 0.0_dp
-    if (trapezoidal .or. estimate) then
+    if (trapezoidal) then
+      mu_p_o = start_yield(mat, c_o, sn_o, s_o(1), dip_o)
+      ! (wear_weights' start weight)
+      g_trap = g_slip
+    else if (estimate) then
       mu_p_o = start_yield(mat, c_o, sn_o, s_o(1), dip_o)
       g_trap = trapezoidal_weight(mat, o%dmg, c_o, sn_o, s_o(1), dip_o)
     end if
