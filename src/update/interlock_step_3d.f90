@@ -361,7 +361,8 @@ contains
         if (zeta > o%zeta) then
           call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), zeta, theta, &
                           thp)
-        else
+        else if (chain) then
+          ! (the slope for the chain alone)
           thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), o%theta)
         end if
       end if
