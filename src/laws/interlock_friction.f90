@@ -8,10 +8,6 @@ module interlock_friction
   private
   public :: friction_step, radial_return, direction_turn
 
-  !> d s_kt / d (s_kn, s_kt1, s_kt2): column i is the unit vector of s_kt,i
-  real(dp), parameter :: e_t(3, 2) = reshape([0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], &
-                                             [3, 2])
-
 contains
 
   !> The return mapping (scalars only, the material's inverse 1/K_t): mu_p = mu K_n <-s_n>_- is the bound (0 on an open plane or with friction
@@ -75,6 +71,7 @@ contains
     real(dp), intent(in) :: mu_p, g_mu(3), kt, inv_kt, st(2), tr(2), trn
     real(dp), intent(out) :: nv(2), g_nv(3, 2), sf(2), tauf(2), g_tauf(3, 2), slip
     logical, intent(in), optional :: in_plane
+    real(dp) :: q
     integer :: i
     logical :: plane_nt
     plane_nt = .false.
@@ -93,10 +90,17 @@ contains
       do i = 1, 2
         nv(i) = tr(i) / trn
       end do
+      ! (the projector's entries one by one: its s_kn row is 0)
+      q = kt / trn
+      g_nv(1, :) = 0.0_dp
+      g_nv(2, 1) = q * (1.0_dp - nv(1) * nv(1))
+      g_nv(3, 1) = q * (0.0_dp - nv(1) * nv(2))
+      g_nv(2, 2) = q * (0.0_dp - nv(2) * nv(1))
+      g_nv(3, 2) = q * (1.0_dp - nv(2) * nv(2))
       do i = 1, 2
-        g_nv(:, i) = (kt / trn) * (e_t(:, i) - nv(i) * (nv(1) * e_t(:, 1) + nv(2) * e_t(:, 2)))
         tauf(i) = mu_p * nv(i)
-        g_tauf(:, i) = nv(i) * g_mu + mu_p * g_nv(:, i)
+        g_tauf(1, i) = nv(i) * g_mu(1)
+        g_tauf(2:3, i) = nv(i) * g_mu(2:3) + mu_p * g_nv(2:3, i)
         sf(i) = st(i) - tauf(i) * inv_kt
       end do
     end if

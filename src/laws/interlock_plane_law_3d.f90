@@ -235,7 +235,9 @@ contains
         if (chain) p%g_sf = 0.0_dp
         p%tauf = tr
         p%tauf_norm = trn
-        p%g_tauf = mat%kt * e_t
+        p%g_tauf = 0.0_dp
+        p%g_tauf(2, 1) = mat%kt
+        p%g_tauf(3, 2) = mat%kt
         p%slip_dip = 0.0_dp
         p%g_slip_dip = 0.0_dp
         slip_norm = 0.0_dp
@@ -266,7 +268,8 @@ contains
           p%wear_end = atau * x
           if (drivers) then
             do i = 1, 2
-              g_dsf(:, i) = (mat%kt * e_t(:, i) - p%g_tauf(:, i)) * mat%inv_kt
+              g_dsf(:, i) = (0.0_dp - p%g_tauf(:, i)) * mat%inv_kt
+              g_dsf(1 + i, i) = (mat%kt - p%g_tauf(1 + i, i)) * mat%inv_kt
             end do
             g_slip_norm = norm_gradient(dsf, slip_norm, g_dsf)
             p%g_slip_dip = sign_of(dsf(1)) * g_dsf(:, 1)
@@ -358,7 +361,8 @@ contains
           if (drivers) then
             do i = 1, 2
               dsf(i) = tr(i) * mat%inv_kt
-              g_dsf(:, i) = (mat%kt * e_t(:, i) - p%g_tauf(:, i)) * mat%inv_kt
+              g_dsf(:, i) = (0.0_dp - p%g_tauf(:, i)) * mat%inv_kt
+              g_dsf(1 + i, i) = (mat%kt - p%g_tauf(1 + i, i)) * mat%inv_kt
             end do
             g_slip_norm = norm_gradient(dsf, vector_norm(dsf), g_dsf)
             p%g_slip_dip = sign_of(dsf(1)) * g_dsf(:, 1)
@@ -519,8 +523,13 @@ contains
     v2 = a2 + b2
     n_new(1) = ((a2 - b2) * n_o(1) - (2.0_dp * a * b) * n_o(2)) / v2
     n_new(2) = ((a2 - b2) * n_o(2) + (2.0_dp * a * b) * n_o(1)) / v2
-    g_a = mat%kt * (n_o(1) * e_t(:, 1) + n_o(2) * e_t(:, 2)) + g_mu
-    g_b = mat%kt * (n_o(1) * e_t(:, 2) - n_o(2) * e_t(:, 1))
+    ! (K_t d s_kt . n_o and n_o x K_t d s_kt: no s_kn entry)
+    g_a(1) = g_mu(1)
+    g_a(2) = mat%kt * n_o(1) + g_mu(2)
+    g_a(3) = mat%kt * n_o(2) + g_mu(3)
+    g_b(1) = 0.0_dp
+    g_b(2) = mat%kt * (0.0_dp - n_o(2))
+    g_b(3) = mat%kt * n_o(1)
     g_psi = (a * g_b - b * g_a) / (v2 * scale_ab)
     g_nn(:, 1) = -2.0_dp * n_new(2) * g_psi
     g_nn(:, 2) = 2.0_dp * n_new(1) * g_psi

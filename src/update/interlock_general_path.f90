@@ -145,10 +145,23 @@ contains
       tangent = 0.0_dp
       return
     end if
-    call check_chain(mat, maxval(abs(tangent)), info, allowed)
+    call check_chain(mat, largest_magnitude(tangent), info, allowed)
     if (.not. allowed) return
     info%substeps = 1
   end subroutine single_step
+
+  !> maxval(abs(a)) of a 3x3 matrix as one comparison per entry (0 if every entry is a NaN, which
+  !> maxval gives as NaN: neither exceeds a bound).
+  pure real(dp) function largest_magnitude(a) result(peak)
+    real(dp), intent(in) :: a(3, 3)
+    integer :: i, j
+    peak = 0.0_dp
+    do j = 1, 3
+      do i = 1, 3
+        if (abs(a(i, j)) > peak) peak = abs(a(i, j))
+      end do
+    end do
+  end function largest_magnitude
 
   !> Sub-increments linear in s. With error control (tol finite) each trial sub-increment is
   !> taken once, with the embedded estimate of its local error that the planes compute on the

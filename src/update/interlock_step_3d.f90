@@ -70,7 +70,7 @@ contains
     logical, intent(in), optional :: in_plane
     type(plane_law_3d_t) :: p
     type(plane_start_3d_t) :: o
-    real(dp) :: area, darea, gam, w, sig(3), sig_k(3), k_k(3, 3), s_o(3), old_sig(3), zeta, &
+    real(dp) :: area, darea, gam, w, sig(3), sig_k(3), s_o(3), old_sig(3), zeta, &
                 theta, e, dsig_dtheta(3), err_angle, err_traction, c_o(max_planes), &
                 sn_o(max_planes)
     integer :: k, n_eval, it, ncol
@@ -133,14 +133,14 @@ contains
       end do
       do k = 1, n_eval
         o = plane_of(old, k)
-        call plane_step(mat, mat%cos_phi(k), mat%sin_phi(k), c_o(k), sn_o(k), solver, k, s, &
-                        s_o, o, estimate, chain, h_start, h_end, jo(min(k, size(jo))), ncol, &
-                        p, sig_k, k_k, zeta, theta, jn(min(k, size(jn))), e, dsig_dtheta, it, &
-                        ok)
-        if (.not. ok) return
-        iterations = max(iterations, it)
         gam = merge(1.0_dp, mat%gamma_hat(k), shared)
         w = gam * area
+        call plane_step(mat, mat%cos_phi(k), mat%sin_phi(k), c_o(k), sn_o(k), solver, k, s, &
+                        s_o, o, estimate, chain, h_start, h_end, jo(min(k, size(jo))), ncol, &
+                        w, p, sig_k, tangent, zeta, theta, jn(min(k, size(jn))), e, &
+                        dsig_dtheta, it, ok)
+        if (.not. ok) return
+        iterations = max(iterations, it)
         if (estimate) then
           call add_wear_error(e, w, [dsig_dtheta(1), max(abs(dsig_dtheta(2)), &
                               abs(dsig_dtheta(3)))], err_angle, err_traction)
@@ -150,12 +150,6 @@ contains
             p%dmg * norm2(p%tauf) * direction_turn(o%tauf, p%tauf))
         end if
         sig = sig + w * sig_k
-        if (ncol > 2) then
-          tangent = tangent + w * k_k
-        else
-          ! (the (1:2, 1:2) block alone: chain_plane's k_k has no more)
-          tangent(1:2, 1:2) = tangent(1:2, 1:2) + w * k_k(1:2, 1:2)
-        end if
         if (darea < 0.0_dp) tangent(:, 1) = tangent(:, 1) + (gam * darea * h_end) * sig_k
         new%diss_damage = new%diss_damage + gam * area * p%wdmg
         new%diss_friction = new%diss_friction + gam * area * p%wfric
@@ -236,14 +230,15 @@ contains
   !> (explicit, implicit: wear_weights of the 2D law with the dip components) or D11's
   !> trapezoidal rule with D14's terms, solved by the safeguarded Newton iteration of
   !> interlock_wear. Returns the response p at the angle of the traction, the plane's traction
-  !> sig_k in the macro frame with its derivative k_k (through the angle: d sig_k / d theta
-  !> (x) d theta, by implicit differentiation at the root, d zeta = (dG) / F', F' = 1 -
-  !> theta' dG / d theta), the end values of zeta and theta, with `chain` the end state's
+  !> sig_k in the macro frame, adds its derivative k_k times the weight w to `tangent`
+  !> (through the angle: d sig_k / d theta (x) d theta, by implicit differentiation at the
+  !> root, d zeta = (dG) / F', F' = 1 - theta' dG / d theta; with ncol = 2 the (1:2, 1:2)
+  !> block alone), the end values of zeta and theta, with `chain` the end state's
   !> derivatives jn, with `estimate` the wear's embedded error estimate e [rad] and
   !> dsig_dtheta = d sig_k / d theta at fixed s.
   pure subroutine plane_step(mat, cp, sp, c_o, sn_o, solver, k, s, s_o, o, estimate, chain, &
-                             h_start, h_end, jo, ncol, p, sig_k, k_k, zeta, theta, jn, e, &
-                             dsig_dtheta, iterations, ok)
+                             h_start, h_end, jo, ncol, w, p, sig_k, tangent, zeta, theta, jn, &
+                             e, dsig_dtheta, iterations, ok)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: cp, sp   !< cos and sin of the plane's azimuth
     real(dp), intent(in) :: c_o, sn_o   !< cos and sin of its start angle (plane_frame)
@@ -254,14 +249,16 @@ contains
     logical, intent(in) :: estimate, chain
     type(plane_chain_t), intent(in) :: jo
     integer, intent(in) :: ncol   !< the columns of the chain (chain_plane)
+    real(dp), intent(in) :: w   !< its weight (area fraction x contact area)
     type(plane_law_3d_t), intent(out) :: p
-    real(dp), intent(out) :: sig_k(3), k_k(3, 3), zeta, theta, e, dsig_dtheta(3)
+    real(dp), intent(out) :: sig_k(3), zeta, theta, e, dsig_dtheta(3)
+    real(dp), intent(inout) :: tangent(3, 3)
     type(plane_chain_t), intent(inout) :: jn
     integer, intent(out) :: iterations
     logical, intent(out) :: ok
     type(wear_root_t) :: rt
     real(dp) :: c, sn, dip_o, mu_p_o, mu_p_law, a_w, g_slip, g_trap, drv, g_drv(3), thp, fp, &
-                rot(3, 3), dzeta(3), ksl(3)
+                rot(3, 3), dzeta(3), ksl(3), k_k(3, 3)
     logical :: coupled, wears, trapezoidal, drivers, flat, terms, pinned
     integer :: j, phase
 
@@ -280,14 +277,21 @@ contains
     ! start separation); mu p_o, the start state's friction bound, also decides whether the
     ! plane slides at the start (D14's mean-direction rule), and the trapezoidal start weight
     ! D_o mu p_o / 2 is the error estimate's reference.
-    ! (the start angle's frame: also the frame of the law's first evaluation)
-    dip_o = cp * s_o(2) + sp * s_o(3)
+    ! (the start angle's frame: also the frame of the law's first evaluation; the start
+    ! separation's dip component only where a start yield is taken: the explicit and implicit
+    ! weights have none)
+    dip_o = 0.0_dp
+    if (trapezoidal .or. estimate) dip_o = cp * s_o(2) + sp * s_o(3)
     call wear_weights(mat, solver%scheme, o%dmg, o%tauf(1), c_o, sn_o, s_o(1), dip_o, a_w, &
                       g_slip)
     mu_p_o = 0.0_dp
     mu_p_law = 0.0_dp
     g_trap = 0.0_dp
-    if (trapezoidal .or. estimate) then
+    if (trapezoidal) then
+      mu_p_o = start_yield(mat, c_o, sn_o, s_o(1), dip_o)
+      ! (wear_weights' start weight)
+      g_trap = g_slip
+    else if (estimate) then
       mu_p_o = start_yield(mat, c_o, sn_o, s_o(1), dip_o)
       g_trap = trapezoidal_weight(mat, o%dmg, c_o, sn_o, s_o(1), dip_o)
     end if
@@ -367,7 +371,8 @@ contains
         if (zeta > o%zeta) then
           call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), zeta, theta, &
                           thp)
-        else
+        else if (chain) then
+          ! (the slope for the chain alone)
           thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), o%theta)
         end if
       end if
@@ -375,8 +380,11 @@ contains
     ! the traction, its derivative and the energies at the wear equation's root (not at its
     ! iterates)
     if (coupled .and. wears) call plane_traction_3d(mat, o, chain, p)
-    ! (with `chain`, chain_plane gives k_k)
-    call rotated(cp, sp, c, sn, flat, .not. chain, p, sig_k, k_k)
+    if (flat) then
+      sig_k = p%sig_loc
+    else
+      sig_k = to_macro(cp, sp, c, sn, p%sig_loc)
+    end if
     if (wears .and. (coupled .or. chain .or. estimate)) then
       ! d sig_k / d theta at fixed s = sigma_kn e - sigma_kt1 m + R^T K_loc d sl / d theta
       ksl = p%k_loc(:, 1) * p%sl(2) - p%k_loc(:, 2) * p%sl(1)
@@ -388,20 +396,30 @@ contains
       call chain_plane(mat, cp, sp, c, sn, c_o, sn_o, s_o, o, jo, p, coupled .and. wears, &
                        wears .and. .not. coupled, trapezoidal, a_w, g_slip, mu_p_o, g_drv, &
                        thp, fp, h_start, h_end, ncol, pinned, k_k, jn)
-    else if (coupled .and. wears) then
-      ! d zeta / d s = (dG / d s) / F' at the root, d theta / d s = theta' d zeta / d s
-      rot = frame_rows(cp, sp, c, sn)
-      do j = 1, 3
-        if (pinned) then
-          dzeta(j) = -rot(1, j) / p%sl(2)
-        else
-          dzeta(j) = (g_drv(1) * rot(1, j) + g_drv(2) * rot(2, j) + g_drv(3) * rot(3, j)) * &
-                     (thp / fp)
-        end if
-      end do
-      do j = 1, 3
-        k_k(:, j) = k_k(:, j) + dsig_dtheta * dzeta(j)
-      end do
+      if (ncol > 2) then
+        tangent = tangent + w * k_k
+      else
+        ! (the (1:2, 1:2) block alone: chain_plane's k_k has no more)
+        tangent(1:2, 1:2) = tangent(1:2, 1:2) + w * k_k(1:2, 1:2)
+      end if
+    else
+      if (coupled .and. wears) then
+        ! d zeta / d s = (dG / d s) / F' at the root, d theta / d s = theta' d zeta / d s
+        rot = frame_rows(cp, sp, c, sn)
+        do j = 1, 3
+          if (pinned) then
+            dzeta(j) = -rot(1, j) / p%sl(2)
+          else
+            dzeta(j) = (g_drv(1) * rot(1, j) + g_drv(2) * rot(2, j) + g_drv(3) * rot(3, j)) * &
+                       (thp / fp)
+          end if
+        end do
+      else
+        dzeta = 0.0_dp
+      end if
+      ! (K_loc's normal row: plane_traction_3d)
+      call add_turned(cp, sp, c, sn, flat, p%k_loc, .not. p%dmg_grows, coupled .and. wears, &
+                      dsig_dtheta, dzeta, w, tangent)
     end if
 
     if (estimate .and. wears) then
@@ -661,28 +679,79 @@ contains
     rot(3, :) = [0.0_dp, -sp, cp]
   end function frame_rows
 
-  !> The plane's traction in the macro frame and its derivative at fixed angle, R^T K_loc R,
-  !> with R = d sl / d s (rows m, e, q) = B A: B turns by theta in (n, d) (to_macro's first
-  !> rotation), A by the azimuth in (t1, t2); each turns both sides in one plane of the frame,
-  !> the columns (B^T K_loc), then the rows ((B^T K_loc) B); the azimuth's only where phi /= 0,
-  !> none for a flat plane. k_k only `with_tangent` (else not set).
-  pure subroutine rotated(cp, sp, c, sn, flat, with_tangent, p, sig_k, k_k)
+  !> tangent += w k_k for the plane's derivative at fixed angle R^T K_loc R, plus u (x) v
+  !> where `angle` (the angle's term d sig_k / d theta (x) d theta / d s), with R = d sl / d s
+  !> (rows m, e, q) = B A: B turns by theta in (n, d) (to_macro's first rotation), A by the
+  !> azimuth in (t1, t2); each turns both sides in one plane of the frame, the columns
+  !> (B^T K_loc), then the rows ((B^T K_loc) B); the azimuth's only where phi /= 0, none for a
+  !> flat plane. The entries are turned and added as scalars (in registers, not through a
+  !> 3x3 array in memory); where the normal row of K_loc is 0 off its diagonal (`normal_row`:
+  !> damage does not grow), its products are left out (the same values).
+  pure subroutine add_turned(cp, sp, c, sn, flat, k_loc, normal_row, angle, u, v, w, tangent)
     real(dp), intent(in) :: cp, sp, c, sn
     logical, intent(in) :: flat   !< flat_frame(cp, sp, c, sn)
-    logical, intent(in) :: with_tangent
-    type(plane_law_3d_t), intent(in) :: p
-    real(dp), intent(out) :: sig_k(3), k_k(3, 3)
-    if (flat) then
-      sig_k = p%sig_loc
-      if (with_tangent) k_k = p%k_loc
-      return
+    real(dp), intent(in) :: k_loc(3, 3)
+    logical, intent(in) :: normal_row   !< k_loc(1, 2:3) = 0
+    logical, intent(in) :: angle
+    real(dp), intent(in) :: u(3), v(3), w
+    real(dp), intent(inout) :: tangent(3, 3)
+    real(dp) :: a11, a21, a31, a12, a22, a32, a13, a23, a33
+    a11 = k_loc(1, 1)
+    a21 = k_loc(2, 1)
+    a31 = k_loc(3, 1)
+    a12 = k_loc(1, 2)
+    a22 = k_loc(2, 2)
+    a32 = k_loc(3, 2)
+    a13 = k_loc(1, 3)
+    a23 = k_loc(2, 3)
+    a33 = k_loc(3, 3)
+    if (.not. flat) then
+      ! by theta in the plane of the indices 1 and 2: each column's pair, then each row's
+      call turn_pair(c, sn, a11, a21)
+      if (normal_row) then
+        ! (turn_pair's values with a12 = a13 = 0)
+        a12 = 0.0_dp - sn * a22
+        a22 = c * a22
+        a13 = 0.0_dp - sn * a23
+        a23 = c * a23
+      else
+        call turn_pair(c, sn, a12, a22)
+        call turn_pair(c, sn, a13, a23)
+      end if
+      call turn_pair(c, sn, a11, a12)
+      call turn_pair(c, sn, a21, a22)
+      call turn_pair(c, sn, a31, a32)
+      if (sp < 0.0_dp .or. sp > 0.0_dp .or. cp < 1.0_dp) then
+        ! by the azimuth in the plane of the indices 2 and 3
+        call turn_pair(cp, sp, a21, a31)
+        call turn_pair(cp, sp, a22, a32)
+        call turn_pair(cp, sp, a23, a33)
+        call turn_pair(cp, sp, a12, a13)
+        call turn_pair(cp, sp, a22, a23)
+        call turn_pair(cp, sp, a32, a33)
+      end if
     end if
-    sig_k = to_macro(cp, sp, c, sn, p%sig_loc)
-    if (.not. with_tangent) return
-    k_k = p%k_loc
-    call turn_both_sides(c, sn, 1, k_k)
-    if (sp < 0.0_dp .or. sp > 0.0_dp .or. cp < 1.0_dp) call turn_both_sides(cp, sp, 2, k_k)
-  end subroutine rotated
+    if (angle) then
+      a11 = a11 + u(1) * v(1)
+      a21 = a21 + u(2) * v(1)
+      a31 = a31 + u(3) * v(1)
+      a12 = a12 + u(1) * v(2)
+      a22 = a22 + u(2) * v(2)
+      a32 = a32 + u(3) * v(2)
+      a13 = a13 + u(1) * v(3)
+      a23 = a23 + u(2) * v(3)
+      a33 = a33 + u(3) * v(3)
+    end if
+    tangent(1, 1) = tangent(1, 1) + w * a11
+    tangent(2, 1) = tangent(2, 1) + w * a21
+    tangent(3, 1) = tangent(3, 1) + w * a31
+    tangent(1, 2) = tangent(1, 2) + w * a12
+    tangent(2, 2) = tangent(2, 2) + w * a22
+    tangent(3, 2) = tangent(3, 2) + w * a32
+    tangent(1, 3) = tangent(1, 3) + w * a13
+    tangent(2, 3) = tangent(2, 3) + w * a23
+    tangent(3, 3) = tangent(3, 3) + w * a33
+  end subroutine add_turned
 
   !> The plane's frame is the macro one: azimuth and angle 0 exactly (cos 1, sin 0), where the
   !> rotations are the identity (the same values; a flat plane of a RIA whose azimuths are 0).
@@ -693,27 +762,15 @@ contains
     if (abs(sn) <= 0.0_dp) flat_frame = cp >= 1.0_dp .and. c >= 1.0_dp .and. abs(sp) <= 0.0_dp
   end function flat_frame
 
-  !> a = T^T a T for the rotation T by (cs, sn) = (cos, sin) of an angle in the plane of the
-  !> indices i and i + 1: each column's pair (v_i, v_i+1) -> (cs v_i - sn v_i+1, sn v_i +
-  !> cs v_i+1), then each row's.
-  pure subroutine turn_both_sides(cs, sn, i, a)
+  !> The pair (x, y) of a vector turned by (cs, sn) = (cos, sin) of an angle in its plane: (cs x
+  !> - sn y, sn x + cs y).
+  pure subroutine turn_pair(cs, sn, x, y)
     real(dp), intent(in) :: cs, sn
-    integer, intent(in) :: i
-    real(dp), intent(inout) :: a(3, 3)
-    real(dp) :: x, y
-    integer :: j
-    do j = 1, 3
-      x = a(i, j)
-      y = a(i + 1, j)
-      a(i, j) = cs * x - sn * y
-      a(i + 1, j) = sn * x + cs * y
-    end do
-    do j = 1, 3
-      x = a(j, i)
-      y = a(j, i + 1)
-      a(j, i) = cs * x - sn * y
-      a(j, i + 1) = sn * x + cs * y
-    end do
-  end subroutine turn_both_sides
+    real(dp), intent(inout) :: x, y
+    real(dp) :: x_o
+    x_o = x
+    x = cs * x_o - sn * y
+    y = sn * x_o + cs * y
+  end subroutine turn_pair
 
 end module interlock_step_3d
