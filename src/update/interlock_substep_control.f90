@@ -91,7 +91,7 @@ contains
         h = 2.0_dp * h
       end if
     else
-      h = h * max(0.1_dp, 0.9_dp * sqrt(tol / err))
+      h = h * rejection_factor(err, tol)
     end if
     h = power_of_2_below(h)
     ! Error control takes no size below the smallest it accepts whatever the estimate (below
@@ -103,8 +103,15 @@ contains
   !> estimate err > tol (next_size of a trial of size 1 not kept).
   pure real(dp) function size_after_whole(err, tol) result(h)
     real(dp), intent(in) :: err, tol
-    h = power_of_2_below(max(0.1_dp, 0.9_dp * sqrt(tol / err)))
+    h = power_of_2_below(rejection_factor(err, tol))
   end function size_after_whole
+
+  !> The factor on the size of a trial whose estimate err exceeds tol: the h^2 scaling's with a
+  !> margin of 0.9, at least 0.1.
+  pure real(dp) function rejection_factor(err, tol)
+    real(dp), intent(in) :: err, tol
+    rejection_factor = max(0.1_dp, 0.9_dp * sqrt(tol / err))
+  end function rejection_factor
 
   !> The power of 2 at most h (h > 0; h itself where it is one).
   elemental real(dp) function power_of_2_below(h)
