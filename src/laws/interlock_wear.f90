@@ -72,10 +72,21 @@ contains
     real(dp), intent(in) :: f, fp, tol
     integer, intent(in) :: max_iterations
     real(dp) :: xn
+    logical :: converged
     ! Converged wherever the residual is at round-off of zeta: also at the first point when
-    ! the plane is fully worn (theta = theta_f: F is linear and zeta_o + g0 is its root).
+    ! the plane is fully worn (theta = theta_f: F is linear and zeta_o + g0 is its root). The
+    ! round-off is that of the work g0 or of zeta, except at a point without work (g = 0, F =
+    ! zeta - zeta_o: the plane has lost contact there, or sticks), which is a root only where
+    ! zeta - zeta_o is at round-off of zeta itself: the work falls from g0 to 0 between zeta_o
+    ! and that point (steeply, or with a jump, where the plane loses contact), and the root is
+    ! on the way.
     rt%scale = max(rt%scale, abs(rt%x))
-    if (abs(f) <= tol * rt%scale) then
+    if (f < rt%x - rt%zeta_o) then
+      converged = abs(f) <= tol * rt%scale
+    else
+      converged = abs(f) <= tol * abs(rt%x)
+    end if
+    if (converged) then
       call finish(rt, fp > 0.0_dp)
       return
     end if
