@@ -293,7 +293,7 @@ contains
     ok = .true.
     if (drv > 0.0_dp) then
       ! (else no frictional work: zeta stays, F = 0 exactly)
-      call wear_root_begin(rt, zeta_o, drv)
+      call wear_root_begin(rt, zeta_o, drv, fp)
       do
         call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, thp)
         c = cos(theta)

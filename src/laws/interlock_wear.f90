@@ -10,8 +10,8 @@ module interlock_wear
   !> The backward-Euler wear equation of one plane, F(zeta) = zeta - zeta_o - g(theta(zeta)) = 0
   !> (g the frictional work in the step, >= 0), solved by reverse communication: the caller
   !> evaluates F and F' at `x` and calls wear_root_update until `done`. F(zeta_o) = -g0 <= 0;
-  !> the root is bracketed from zeta_o upwards (doubling steps, or Newton's steps from below
-  !> where the first point was Newton's from zeta_o) and found by Newton's method safeguarded
+  !> the root is bracketed from zeta_o upwards (Newton's steps from below where F' > 0, else
+  !> doubling steps) and found by Newton's method safeguarded
   !> by bisection, so it cannot diverge. `ok` is false when a bound was reached.
   type :: wear_root_t
     real(dp) :: zeta_o = 0.0_dp, x = 0.0_dp, lo = 0.0_dp, hi = 0.0_dp, width = 0.0_dp
@@ -20,7 +20,7 @@ module interlock_wear
     !> done where the bracket closed on a jump of F (the residual not at round-off): F changes
     !> sign there without a zero, and the root stays at that point as the data move
     logical :: at_jump = .false.
-    !> the first point was Newton's from zeta_o (wear_root_begin with the slope there)
+    !> the first point was Newton's from zeta_o (F'(zeta_o) > 0)
     logical :: newton_start = .false.
     integer :: iterations = 0, expansions = 0
   end type wear_root_t
@@ -45,24 +45,21 @@ contains
     worn_angle_slope = -(theta - thetaf) * inv_zeta0
   end function worn_angle_slope
 
-  !> Start from F(zeta_o) = -g0 (g0 > 0): the first point to evaluate is zeta_o + g0, or, given
-  !> the slope F'(zeta_o) = fp_o > 0, Newton's point zeta_o + g0 / fp_o (the same where F is
-  !> linear with slope 1: a fully worn plane); the root is then within the square of the step's
-  !> curvature term of it, so that the first point often meets the tolerance.
+  !> Start from F(zeta_o) = -g0 (g0 > 0) with the slope F'(zeta_o) = fp_o there: the first
+  !> point to evaluate is Newton's, zeta_o + g0 / fp_o (F' > 0), where the root is within the
+  !> square of the step's curvature term, so that the first point often meets the tolerance;
+  !> zeta_o + g0 where F' <= 0 (the bracket's doubling steps from there).
   pure subroutine wear_root_begin(rt, zeta_o, g0, fp_o)
     type(wear_root_t), intent(out) :: rt
-    real(dp), intent(in) :: zeta_o, g0
-    real(dp), intent(in), optional :: fp_o
+    real(dp), intent(in) :: zeta_o, g0, fp_o
     rt%zeta_o = zeta_o
     rt%lo = zeta_o
     rt%width = g0
     rt%scale = g0
     rt%x = zeta_o + g0
-    if (present(fp_o)) then
-      if (fp_o > 0.0_dp) then
-        rt%x = zeta_o + g0 / fp_o
-        rt%newton_start = .true.
-      end if
+    if (fp_o > 0.0_dp) then
+      rt%x = zeta_o + g0 / fp_o
+      rt%newton_start = .true.
     end if
   end subroutine wear_root_begin
 
@@ -72,7 +69,6 @@ contains
     real(dp), intent(in) :: f, fp, tol
     integer, intent(in) :: max_iterations
     real(dp) :: xn
-    logical :: converged
     ! Converged wherever the residual is at round-off of zeta: also at the first point when
     ! the plane is fully worn (theta = theta_f: F is linear and zeta_o + g0 is its root). The
     ! round-off is that of the work g0 or of zeta, except at a point without work (g = 0, F =
@@ -81,12 +77,7 @@ contains
     ! and that point (steeply, or with a jump, where the plane loses contact), and the root is
     ! on the way.
     rt%scale = max(rt%scale, abs(rt%x))
-    if (f < rt%x - rt%zeta_o) then
-      converged = abs(f) <= tol * rt%scale
-    else
-      converged = abs(f) <= tol * abs(rt%x)
-    end if
-    if (converged) then
+    if (abs(f) <= tol * merge(rt%scale, abs(rt%x), f < rt%x - rt%zeta_o)) then
       call finish(rt, fp > 0.0_dp)
       return
     end if

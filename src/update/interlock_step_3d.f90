@@ -49,11 +49,9 @@ contains
   !> at its start and end, no strike component in the state, every azimuth 0), where every
   !> strike derivative is 0, and only the (1:2, 1:2) block of `tangent` is wanted (the rest of
   !> `tangent` 0); with `chain` the chain carries the columns S_N and S_T1 alone (the others of
-  !> jn stay as they come). On a sub-increment smaller than the increment (`chain`, h_start > 0
-  !> or h_end < 1) a wear equation's iteration starts at Newton's point from zeta_o (F' there
-  !> comes with the start angle's evaluation; on small sub-increments it usually meets the
-  !> tolerance at once); on the whole increment at the one-step law's first point (the
-  !> specialised kernels' too).
+  !> jn stay as they come). A wear equation's iteration starts at Newton's point from zeta_o
+  !> (F' there comes with the start angle's evaluation; on small steps it usually meets the
+  !> tolerance at once), as the specialised kernels' does.
   pure subroutine step_3d(mat, solver, s, old, new, tangent, iterations, ok, chain, h_start, &
                           h_end, jo, jn, estimate, err, in_plane)
     type(interlock_material_t), intent(in) :: mat
@@ -323,12 +321,7 @@ contains
       fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
       if (phase == 0) then
         if (.not. drv > 0.0_dp) exit
-        if (chain .and. (h_start > 0.0_dp .or. h_end < 1.0_dp)) then
-          ! (Newton's first point: see step_3d)
-          call wear_root_begin(rt, o%zeta, drv, fp)
-        else
-          call wear_root_begin(rt, o%zeta, drv)
-        end if
+        call wear_root_begin(rt, o%zeta, drv, fp)
         phase = 1
       else if (phase == 1) then
         call wear_root_update(rt, rt%x - o%zeta - drv, fp, solver%newton_tol, &

@@ -371,11 +371,7 @@ contains
       if (drv%v > 0.0_dp) then
         ! (a sub-increment smaller than the increment, d s_o / dS > 0 or d s / dS < 1: the first
         ! point Newton's from zeta_o, as the plain path's)
-        if (s_o(1)%d(1) > 0.0_dp .or. s(1)%d(1) < 1.0_dp) then
-          call wear_root_begin(rt, o%zeta%v, drv%v, fp)
-        else
-          call wear_root_begin(rt, o%zeta%v, drv%v)
-        end if
+        call wear_root_begin(rt, o%zeta%v, drv%v, fp)
         do
           z = constant(rt%x)
           z%d(4) = 1.0_dp
