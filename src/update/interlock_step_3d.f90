@@ -68,9 +68,10 @@ contains
     logical, intent(in), optional :: in_plane
     type(plane_law_3d_t) :: p
     type(plane_start_3d_t) :: o
+    type(wear_root_t) :: rt
     real(dp) :: area, darea, gam, w, sig(3), sig_k(3), s_o(3), old_sig(3), zeta, &
                 theta, e, dsig_dtheta(3), err_angle, err_traction, c_o(max_planes), &
-                sn_o(max_planes)
+                sn_o(max_planes), diss_damage, diss_friction, stored
     integer :: k, n_eval, it, ncol
     logical :: shared
 
@@ -85,9 +86,10 @@ contains
     err_traction = 0.0_dp
     sig = 0.0_dp
     tangent = 0.0_dp
-    new%diss_damage = old%diss_damage
-    new%diss_friction = old%diss_friction
-    new%stored = 0.0_dp
+    ! (the energies summed over the planes in scalars, stored in `new` once)
+    diss_damage = old%diss_damage
+    diss_friction = old%diss_friction
+    stored = 0.0_dp
     s_o = [old%s(1), old%s(2), old%s_t2]
 
     area = 1.0_dp
@@ -136,7 +138,7 @@ contains
         call plane_step(mat, mat%cos_phi(k), mat%sin_phi(k), c_o(k), sn_o(k), solver, k, s, &
                         s_o, o, estimate, chain, h_start, h_end, jo(min(k, size(jo))), ncol, &
                         w, p, sig_k, tangent, zeta, theta, jn(min(k, size(jn))), e, &
-                        dsig_dtheta, it, ok)
+                        dsig_dtheta, it, ok, rt)
         if (.not. ok) return
         iterations = max(iterations, it)
         if (estimate) then
@@ -149,9 +151,9 @@ contains
         end if
         sig = sig + w * sig_k
         if (darea < 0.0_dp) tangent(:, 1) = tangent(:, 1) + (gam * darea * h_end) * sig_k
-        new%diss_damage = new%diss_damage + gam * area * p%wdmg
-        new%diss_friction = new%diss_friction + gam * area * p%wfric
-        new%stored = new%stored + gam * area * p%psi
+        diss_damage = diss_damage + gam * area * p%wdmg
+        diss_friction = diss_friction + gam * area * p%wfric
+        stored = stored + gam * area * p%psi
         call store_plane(p, zeta, theta, k, new)
       end do
       do k = n_eval + 1, mat%n_planes
@@ -159,6 +161,9 @@ contains
         if (chain) jn(k) = jn(1)
       end do
     end if
+    new%diss_damage = diss_damage
+    new%diss_friction = diss_friction
+    new%stored = stored
     old_sig = [old%sigma(1), old%sigma(2), old%sigma_t2]
     new%s = s(1:2)
     new%s_t2 = s(3)
@@ -236,7 +241,7 @@ contains
   !> dsig_dtheta = d sig_k / d theta at fixed s.
   pure subroutine plane_step(mat, cp, sp, c_o, sn_o, solver, k, s, s_o, o, estimate, chain, &
                              h_start, h_end, jo, ncol, w, p, sig_k, tangent, zeta, theta, jn, &
-                             e, dsig_dtheta, iterations, ok)
+                             e, dsig_dtheta, iterations, ok, rt)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: cp, sp   !< cos and sin of the plane's azimuth
     real(dp), intent(in) :: c_o, sn_o   !< cos and sin of its start angle (plane_frame)
@@ -254,7 +259,10 @@ contains
     type(plane_chain_t), intent(inout) :: jn
     integer, intent(out) :: iterations
     logical, intent(out) :: ok
-    type(wear_root_t) :: rt
+    !> the wear equation's iteration: the caller's, so that its default initialisation is not
+    !> repeated on every plane of every scheme (wear_root_begin sets it where an iteration
+    !> starts; nothing else reads it)
+    type(wear_root_t), intent(inout) :: rt
     real(dp) :: c, sn, dip_o, mu_p_o, mu_p_law, a_w, g_slip, g_trap, drv, g_drv(3), thp, fp, &
                 rot(3, 3), dzeta(3), ksl(3), k_k(3, 3)
     logical :: coupled, wears, trapezoidal, drivers, flat, terms, pinned
@@ -263,7 +271,6 @@ contains
     ok = .true.
     iterations = 0
     e = 0.0_dp
-    dsig_dtheta = 0.0_dp
     thp = 0.0_dp
     coupled = solver%scheme /= scheme_explicit
     trapezoidal = solver%scheme == scheme_trapezoidal
@@ -384,6 +391,9 @@ contains
       ksl(1) = ksl(1) - p%sig_loc(2)
       ksl(2) = ksl(2) + p%sig_loc(1)
       dsig_dtheta = to_macro(cp, sp, c, sn, ksl)
+    else
+      ! (0 where the angle does not move; read by the error estimate alone)
+      dsig_dtheta = 0.0_dp
     end if
     if (chain) then
       call chain_plane(mat, cp, sp, c, sn, c_o, sn_o, s_o, o, jo, p, coupled .and. wears, &
