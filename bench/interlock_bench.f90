@@ -152,10 +152,7 @@ contains
         read (val, *, iostat=ios) profile_set
         if (ios /= 0 .or. profile_set < 0 .or. profile_set > n_effect_sets) &
           call usage('--profile: SET is 0 (bilinear) .. 5 (full model)')
-        call get_command_argument(i + 2, val)
-        read (val, *, iostat=ios) profile_scheme
-        if (ios /= 0 .or. profile_scheme < scheme_explicit .or. profile_scheme > scheme_trapezoidal) &
-          call usage('--profile: SCHEME is 1 (explicit), 2 (implicit) or 3 (trapezoidal)')
+        profile_scheme = scheme_argument(i + 2, '--profile')
         call get_command_argument(i + 3, val)
         read (val, *, iostat=ios) profile_passes
         if (ios /= 0 .or. profile_passes < 1) call usage('--profile: PASSES must be positive')
@@ -171,10 +168,7 @@ contains
         end if
       case ('--profile-path')
         if (i + 3 > n) call usage('--profile-path takes SCHEME TOL N')
-        call get_command_argument(i + 1, val)
-        read (val, *, iostat=ios) path_scheme
-        if (ios /= 0 .or. path_scheme < scheme_explicit .or. path_scheme > scheme_trapezoidal) &
-          call usage('--profile-path: SCHEME is 1 (explicit), 2 (implicit) or 3 (trapezoidal)')
+        path_scheme = scheme_argument(i + 1, '--profile-path')
         call get_command_argument(i + 2, val)
         read (val, *, iostat=ios) path_tol
         if (ios /= 0 .or. path_tol < 0.0_dp) &
@@ -211,6 +205,19 @@ contains
                    'exist and be writable)')
     end if
   end subroutine parse_arguments
+
+  !> The scheme number (1 explicit, 2 implicit, 3 trapezoidal) in command argument `pos` of
+  !> `option`; a usage error if it is none.
+  integer function scheme_argument(pos, option) result(scheme)
+    integer, intent(in) :: pos
+    character(len=*), intent(in) :: option
+    character(len=64) :: val
+    integer :: ios
+    call get_command_argument(pos, val)
+    read (val, *, iostat=ios) scheme
+    if (ios /= 0 .or. scheme < scheme_explicit .or. scheme > scheme_trapezoidal) &
+      call usage(option // ': SCHEME is 1 (explicit), 2 (implicit) or 3 (trapezoidal)')
+  end function scheme_argument
 
   !> Print the usage and end: on stdout with status 0 when `message` is empty (--help), else
   !> the message and the usage on stderr, status 2.
