@@ -24,7 +24,7 @@ program interlock_bench
   use interlock_bench_scenes, only: scene_t, make_scene, run_scene, slip_at, n_effect_sets, &
       effect_set_names, make_effect_set, make_histories
   use interlock_bench_umat, only: umat_props, time_umat, time_umat_floor, time_umat_3d
-  use interlock_bench_precision_3d, only: precision_study_3d
+  use interlock_bench_precision_3d, only: precision_study_3d, precision_run_3d
   implicit none
 
   integer, parameter :: n_scenes = 3
@@ -39,6 +39,10 @@ program interlock_bench
   !> them; 3: the 3D one on the histories in the (n, t1) plane
   integer :: profile_3d
   real(dp) :: profile_tol
+  !> --profile-path: the scheme (0: none), tolerance and steps of one run of the 45-deg 3D scene
+  integer :: path_scheme, path_steps
+  real(dp) :: path_tol
+  logical :: path_ok
   character(len=512) :: out_dir
   real(dp) :: target_error
   integer :: problems
@@ -69,6 +73,11 @@ program interlock_bench
     call profile_run()
     stop
   end if
+  if (path_scheme > 0) then
+    call precision_run_3d(path_scheme, path_tol, path_steps, path_ok)
+    if (.not. path_ok) error stop 1
+    stop
+  end if
   write (output_unit, '(a)') 'interlock-bench (interlock ' // interlock_version_string // ')' // &
     merge(' --quick', '        ', quick)
   if (do_cost) call cost_study()
@@ -96,6 +105,7 @@ contains
     profile_tol = 0.0_dp
     profile_umat = .false.
     profile_3d = 0
+    path_scheme = 0
     n = command_argument_count()
     if (n == 0) call usage('no arguments: --out DIR is required')
     i = 1
@@ -142,10 +152,7 @@ contains
         read (val, *, iostat=ios) profile_set
         if (ios /= 0 .or. profile_set < 0 .or. profile_set > n_effect_sets) &
           call usage('--profile: SET is 0 (bilinear) .. 5 (full model)')
-        call get_command_argument(i + 2, val)
-        read (val, *, iostat=ios) profile_scheme
-        if (ios /= 0 .or. profile_scheme < scheme_explicit .or. profile_scheme > scheme_trapezoidal) &
-          call usage('--profile: SCHEME is 1 (explicit), 2 (implicit) or 3 (trapezoidal)')
+        profile_scheme = scheme_argument(i + 2, '--profile')
         call get_command_argument(i + 3, val)
         read (val, *, iostat=ios) profile_passes
         if (ios /= 0 .or. profile_passes < 1) call usage('--profile: PASSES must be positive')
@@ -159,6 +166,17 @@ contains
             i = i + 1
           end if
         end if
+      case ('--profile-path')
+        if (i + 3 > n) call usage('--profile-path takes SCHEME TOL N')
+        path_scheme = scheme_argument(i + 1, '--profile-path')
+        call get_command_argument(i + 2, val)
+        read (val, *, iostat=ios) path_tol
+        if (ios /= 0 .or. path_tol < 0.0_dp) &
+          call usage('--profile-path: TOL must be a non-negative number (0: no substepping)')
+        call get_command_argument(i + 3, val)
+        read (val, *, iostat=ios) path_steps
+        if (ios /= 0 .or. path_steps < 1) call usage('--profile-path: N must be a positive integer')
+        i = i + 3
       case ('--umat')
         profile_umat = .true.
       case ('--turned')
@@ -177,7 +195,8 @@ contains
       end select
       i = i + 1
     end do
-    if (len_trim(dump_scene) == 0 .and. profile_set < 0 .and. len_trim(out_dir) == 0) &
+    if (len_trim(dump_scene) == 0 .and. profile_set < 0 .and. path_scheme == 0 .and. &
+        len_trim(out_dir) == 0) &
       call usage('--out DIR is required: the existing folder for the CSV files')
     ! checked before any work: the CSV files are written only at the end of each study
     if (len_trim(out_dir) > 0) then
@@ -186,6 +205,19 @@ contains
                    'exist and be writable)')
     end if
   end subroutine parse_arguments
+
+  !> The scheme number (1 explicit, 2 implicit, 3 trapezoidal) in command argument `pos` of
+  !> `option`; a usage error if it is none.
+  integer function scheme_argument(pos, option) result(scheme)
+    integer, intent(in) :: pos
+    character(len=*), intent(in) :: option
+    character(len=64) :: val
+    integer :: ios
+    call get_command_argument(pos, val)
+    read (val, *, iostat=ios) scheme
+    if (ios /= 0 .or. scheme < scheme_explicit .or. scheme > scheme_trapezoidal) &
+      call usage(option // ': SCHEME is 1 (explicit), 2 (implicit) or 3 (trapezoidal)')
+  end function scheme_argument
 
   !> Print the usage and end: on stdout with status 0 when `message` is empty (--help), else
   !> the message and the usage on stderr, status 2.
@@ -206,6 +238,9 @@ contains
       'with --umat-floor: the floor of the UMAT''s overhead; with --turned or --azimuthal: ' // &
       'the 3D update on the histories turned by 30 deg (the full model''s RIA, or azimuthal N_a = 3), ' // &
       'with --in-plane: on the histories in the (n, t1) plane'
+    write (unit, '(a)') '       interlock-bench --profile-path SCHEME TOL N  ' // &
+      '(one run of part 3b''s 45-deg 3D scene at N steps, for valgrind: SCHEME 1 explicit, ' // &
+      '2 implicit, 3 trapezoidal; TOL substepping tolerance, 0 for none; prints the end point)'
     write (unit, '(a)') '       interlock-bench --history SCENE SCHEME TOL N  ' // &
       '(one run of a scene as CSV on stdout; SCENE fig11|fig12|granite, ' // &
       'SCHEME explicit|implicit|trapezoidal)'

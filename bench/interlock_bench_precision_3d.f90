@@ -27,7 +27,7 @@ module interlock_bench_precision_3d
   use interlock_bench_scenes, only: scene_t, make_scene
   implicit none
   private
-  public :: precision_study_3d
+  public :: precision_study_3d, precision_run_3d
 
   real(dp), parameter :: deg = acos(-1.0_dp) / 180.0_dp, sigma_n_target = -1.5_dp
   !> the length of every segment of both paths [mm]
@@ -175,6 +175,20 @@ contains
       deallocate (ref)
     end do
   end subroutine precision_study_3d
+
+  !> One run of the 45-deg scene at n steps (tol: the substepping tolerance, 0 for none), for a
+  !> profiler (callgrind's --toggle-collect on run_path): prints the end point (s_N, sigma_T1,
+  !> sigma_T2). ok: the run succeeded.
+  subroutine precision_run_3d(scheme, tol, n, ok)
+    integer, intent(in) :: scheme, n
+    real(dp), intent(in) :: tol
+    logical, intent(out) :: ok
+    real(dp), allocatable :: q(:, :)
+    allocate (q(3, 0:n))
+    call run_path(1, scheme, tol, n, q, ok)
+    write (output_unit, '(a,3es25.16)') 'granite_3d_45deg, end point (s_N, sigma_T1, sigma_T2):', &
+      q(:, n)
+  end subroutine precision_run_3d
 
   !> The run at n steps per segment, repeated until it has taken 0.05 s; cpu: seconds per run.
   subroutine timed(is, scheme, tol, n, q, ok, cpu)
