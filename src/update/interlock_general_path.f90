@@ -207,7 +207,7 @@ contains
     ! step reads and `new` does not take)
     call state_3d_take(n, old, st(1))
     do k = 1, n
-      jc(k, 1) = plane_chain_t(0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp)
+      jc(k, 1) = plane_chain_t(0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp)
       jc(k, 2) = jc(k, 1)
     end do
     cur = 1

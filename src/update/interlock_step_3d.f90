@@ -28,10 +28,13 @@ module interlock_step_3d
 
   !> The derivatives of one plane's state with respect to the end separation S of the
   !> increment (columns S_N, S_T1, S_T2); atauf1 = d |tau_f,1| / dS, the explicit scheme's start
-  !> weight's (its sign is not the stored tau_f,1's where that is 0 at the tie s_kn = 0).
+  !> weight's (its sign is not the stored tau_f,1's where that is 0 at the tie s_kn = 0);
+  !> side(j) (the explicit scheme): the direction (+1: +S_j, -1: -S_j) whose one-sided
+  !> derivative column j is since the plane first ended a sub-increment at the tie, the one
+  !> that closed it there; 0 before (chain_at_tie).
   type :: plane_chain_t
     real(dp) :: beta(3), dmg(3), sf(3, 2), zeta(3), theta(3), tauf(3, 2)
-    real(dp) :: atauf1(3)
+    real(dp) :: atauf1(3), side(3)
   end type plane_chain_t
 
 contains
@@ -399,6 +402,11 @@ contains
       call chain_plane(mat, cp, sp, c, sn, c_o, sn_o, s_o, o, jo, p, coupled .and. wears, &
                        wears .and. .not. coupled, trapezoidal, a_w, g_slip, mu_p_o, g_drv, &
                        thp, fp, h_start, h_end, ncol, pinned, k_k, jn)
+      if (.not. coupled) then
+        if (.not. abs(p%sl(1)) > contact_round_off(cp, sp, c, sn, s)) &
+          call chain_at_tie(mat, cp, sp, c, sn, o, jo, p, wears, a_w, g_slip, mu_p_o, &
+                            mu_p_law, thp, fp, s_o, h_start, h_end, ncol, k_k, jn)
+      end if
       if (ncol > 2) then
         tangent = tangent + w * k_k
       else
@@ -467,6 +475,11 @@ contains
     logical :: fresh, negative_tauf1, strike
 
     fresh = .not. h_start > 0.0_dp
+    if (fresh) then
+      jn%side(1:ncol) = 0.0_dp
+    else
+      jn%side(1:ncol) = jo%side(1:ncol)
+    end if
     ! (the strike rows of jn: 0 with the columns S_N, S_T1 alone, where d s_kt2 = 0 too)
     nrow = ncol - 1
     strike = ncol > 2
@@ -612,6 +625,74 @@ contains
       end if
     end do
   end subroutine chain_plane
+
+  !> The explicit scheme's chain where the plane ends the sub-increment at the tie s_kn = 0
+  !> (within its round-off, contact_round_off; chain_plane gave the closed side, SPEC D13).
+  !> Column j is the one-sided derivative along the direction side(j) e_j that closed the plane
+  !> where it first ended a sub-increment at the tie (D13 there); at each later tie the side is
+  !> the one that direction's perturbation of s_kn enters, d s_kn = h_end m_j + s_kt1 d
+  !> theta_o, the open one where it opens the plane. Where the plane follows its surface (it
+  !> wears whenever it closes, the start weight D_o |tau_f,1| of the next sub-increment, and
+  !> turns until it just loses contact), the closed side's chain over sub-increments larger
+  !> than the wear's turn can follow overshoots into the open side: the closed side's
+  !> derivatives alone grow without bound (a factor -(1 - gain) per sub-increment), while
+  !> the perturbed plane opens and stops wearing. The open side's derivatives are those of
+  !> the plane law at s_kn = 0 on the open side (free, no friction traction), through
+  !> chain_plane; the values are unchanged.
+  pure subroutine chain_at_tie(mat, cp, sp, c, sn, o, jo, p, wears, a_w, g_slip, mu_p_o, &
+                               mu_p_law, thp, fp, s_o, h_start, h_end, ncol, k_k, jn)
+    type(interlock_material_t), intent(in) :: mat
+    real(dp), intent(in) :: cp, sp, c, sn   !< the azimuth's frame, the (start) angle's
+    type(plane_start_3d_t), intent(in) :: o
+    type(plane_chain_t), intent(in) :: jo
+    type(plane_law_3d_t), intent(in) :: p
+    logical, intent(in) :: wears
+    real(dp), intent(in) :: a_w, g_slip, mu_p_o, mu_p_law, thp, fp, s_o(3), h_start, h_end
+    integer, intent(in) :: ncol
+    real(dp), intent(inout) :: k_k(3, 3)
+    type(plane_chain_t), intent(inout) :: jn
+    type(plane_law_3d_t) :: q
+    type(plane_chain_t) :: jq
+    real(dp) :: sl(3), g_drv(3), k_q(3, 3), m(3), d_kn, side
+    integer :: j
+    logical :: fresh
+
+    fresh = .not. h_start > 0.0_dp
+    ! (the open side's derivatives: the law at s_kn = 0 with a tie below it)
+    sl = p%sl
+    sl(1) = 0.0_dp
+    call plane_law_3d_parts(mat, sl, -1.0_dp, o, mu_p_law, wears, .true., .true., .false., &
+                            ncol < 3, q)
+    g_drv = 0.0_dp
+    if (wears) g_drv = a_w * q%g_wfric_dip + g_slip * q%g_slip_dip
+    jq = jn
+    call chain_plane(mat, cp, sp, c, sn, c, sn, s_o, o, jo, q, .false., wears, .false., a_w, &
+                     g_slip, mu_p_o, g_drv, thp, fp, h_start, h_end, ncol, .false., k_q, jq)
+    m = [c, sn * cp, sn * sp]
+    do j = 1, ncol
+      d_kn = h_end * m(j)
+      side = 0.0_dp
+      if (.not. fresh) then
+        d_kn = d_kn + p%sl(2) * jo%theta(j)
+        side = jo%side(j)
+      end if
+      if (side > 0.0_dp .or. side < 0.0_dp) then
+        if (side * d_kn > 0.0_dp) then
+          jn%beta(j) = jq%beta(j)
+          jn%dmg(j) = jq%dmg(j)
+          jn%sf(j, :) = jq%sf(j, :)
+          jn%zeta(j) = jq%zeta(j)
+          jn%theta(j) = jq%theta(j)
+          jn%tauf(j, :) = jq%tauf(j, :)
+          jn%atauf1(j) = jq%atauf1(j)
+          k_k(:, j) = k_q(:, j)
+        end if
+      else if (d_kn > 0.0_dp .or. d_kn < 0.0_dp) then
+        side = -sign(1.0_dp, d_kn)
+      end if
+      jn%side(j) = side
+    end do
+  end subroutine chain_at_tie
 
   !> g . v of two local vectors (the order of dot_product; any stride: a row of k_loc without a
   !> copy); without `strike` (a chain in the plane (n, t1), where v(3) = 0) the first two terms

@@ -16,6 +16,8 @@ program test_fuzz_cases
   call run_case('fuzz3d_seed12345_root_at_contact_loss', fuzz3d_seed12345_root_at_contact_loss)
   call run_case('fuzz3d_seed20261126_newton_start_open_side', &
                 fuzz3d_seed20261126_newton_start_open_side)
+  call run_case('beyond_bound_seed6_explicit_surface_overshoot', &
+                beyond_bound_seed6_explicit_surface_overshoot)
   if (suite_summary('stability_fuzz_cases') /= 0) error stop 1
 
 contains
@@ -325,6 +327,84 @@ contains
     call replay_3d(mat, solver, old, s)
     call closed_together(mat, solver, old, s, [5, 6, 7])
   end subroutine fuzz3d_seed20261126_explicit_planes_at_tie
+
+  !> `interlock-fuzz --3d 3000000 --beyond-bound --seed 6`, update 2164130: eleven planes with
+  !> azimuths, pre-fractured, very fast wear (zeta_0 = 5.7e-5 N/mm), the explicit scheme with
+  !> error control (794 sub-increments), a separation path through the origin (the end
+  !> separation is 1116 times the start one). Plane 5 wears until it just loses contact and then
+  !> follows its surface: over the last 90 sub-increments its s_kn is within the round-off of 0
+  !> (+-5e-20 mm), the tie. The last sub-increments grow (to 0.27 of the increment), and there
+  !> the wear that a closing perturbation causes in the next sub-increment (its start weight
+  !> D_o |tau_f,1|) turns the plane by more than the perturbation: it opens and stops wearing.
+  !> Taking the closed side at every one of those ties chained that overshoot as if the plane
+  !> stayed closed: |d theta / dS| grew from 4.3e3 to 7.8e6 over the last 8 sub-increments
+  !> and column 1 of the tangent was (-1.3e5, -2.2e6, -2.4e6) MPa/mm against the differences'
+  !> (8.9e3, 8.2e5, 2.6e5). Each column is the one-sided derivative along the direction that
+  !> closes plane 5 (SPEC D13 at its first tie), which closed_side checks.
+  subroutine beyond_bound_seed6_explicit_surface_overshoot()
+    type(interlock_material_t) :: mat
+    type(interlock_solver_t) :: solver
+    type(interlock_state_3d_t) :: old
+    real(dp) :: s(3)
+
+    mat%sigma0_n = 1.1069728391559897e+02_dp
+    mat%sigma0_t = 1.3328001537037987e+03_dp
+    mat%gc = 3.0111482372290226e+01_dp
+    mat%eta = 9.9998246283494074e-01_dp
+    mat%mu = 5.2907200109731412e-01_dp
+    mat%h_n = 6.4687045004931552e+00_dp
+    mat%prefractured = .true.
+    mat%n_planes = 11
+    mat%gamma_hat(1:11) = [1.6929359960764725e-01_dp, 8.9313233637436526e-02_dp, &
+      9.0422037731947968e-03_dp, 1.1041501372125043e-01_dp, 4.3072415815396170e-02_dp, &
+      1.4581107410240685e-01_dp, 1.3718256584730487e-01_dp, 2.3699080875271394e-02_dp, &
+      1.5439738924210702e-01_dp, 9.7260877304857080e-02_dp, 2.0512546073127691e-02_dp]
+    mat%theta0(1:11) = [-1.8101340970269015e-02_dp, 5.7666017942620040e-01_dp, &
+      -2.3803790663412153e-01_dp, -1.4362840841342299e+00_dp, -1.4459697285679960e+00_dp, &
+      6.3992968715996967e-01_dp, 1.1317956762275418e+00_dp, 5.7731680616840819e-01_dp, &
+      1.0077625998676418e+00_dp, 2.2193888484043248e-01_dp, 6.9168704214373800e-01_dp]
+    mat%thetaf(1:11) = [-1.4328137414135715e-02_dp, 5.1125354613959528e-01_dp, &
+      -9.2775774944104050e-02_dp, -5.2082503253870205e-01_dp, -2.5622080249959012e-01_dp, &
+      3.7387303599545163e-01_dp, 1.0741985618628695e+00_dp, 4.1285310490229887e-01_dp, &
+      3.5909645407139196e-01_dp, 5.7145427230231978e-02_dp, 5.7265377207442869e-01_dp]
+    mat%zeta0(1:11) = 5.7179868644025554e-05_dp
+    mat%phi(1:11) = [-4.6315377220451932e+00_dp, -3.7270335897204689e+00_dp, &
+      2.2574566763609321e+00_dp, 4.8260929957193941e+00_dp, -2.2154267281413578e+00_dp, &
+      -7.2629113179004456e-01_dp, -6.0031927060133281e+00_dp, -2.6204602207002798e+00_dp, &
+      -2.2466871996856073e+00_dp, 2.4439677084475093e+00_dp, -4.9152147615378660e-03_dp]
+    call prepare(mat, scheme_explicit, 3.31436821005449717e-04_dp, solver, old)
+    old%damage(1:11) = 1.0_dp
+    old%beta(1:11) = 5.70217590255392643e+04_dp
+    old%sf(1:11) = [-1.24417859091590759e-08_dp, -2.16759730367876299e-08_dp, &
+      3.45399644272695231e-08_dp, 8.42608386541313155e-08_dp, 8.77831943443538215e-08_dp, &
+      -6.77856080849071945e-08_dp, -9.61908926354916530e-08_dp, -4.85140451906984149e-09_dp, &
+      -4.78343111576250824e-08_dp, 4.76630585229737853e-09_dp, -8.83432461013905102e-08_dp]
+    old%zeta(1:11) = [0.0_dp, 0.0_dp, 0.0_dp, 1.25017645389492444e-10_dp, &
+      3.99888024948525525e-09_dp, 0.0_dp, 1.29914859873758836e-09_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+      0.0_dp]
+    old%theta(1:11) = [-1.81013409702690149e-02_dp, 5.76660179426200403e-01_dp, &
+      -2.38037906634121527e-01_dp, -1.43628208258346257e+00_dp, -1.44588652625859648e+00_dp, &
+      6.39929687159969673e-01_dp, 1.13179436761382601e+00_dp, 5.77316806168408192e-01_dp, &
+      1.00776259986764183e+00_dp, 2.21938884840432477e-01_dp, 6.91687042143737996e-01_dp]
+    old%tauf(1:11) = [0.0_dp, 0.0_dp, 0.0_dp, 5.93479236078611316e-03_dp, &
+      1.82216210259952188e-01_dp, 0.0_dp, -5.40237672462658830e-02_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+      0.0_dp]
+    old%sf_strike(1:11) = [4.70420166113858969e-08_dp, 4.00440863933290718e-08_dp, &
+      4.66156118052180313e-08_dp, -4.74729505798837932e-08_dp, -2.59062848851757690e-08_dp, &
+      -4.36283861570551907e-08_dp, -4.36938940030538698e-09_dp, -7.42685639991929842e-09_dp, &
+      -2.46237540585870723e-08_dp, 4.29668701075643386e-08_dp, -1.79312124256847870e-08_dp]
+    old%tauf_strike(1:11) = [0.0_dp, 0.0_dp, 0.0_dp, -3.34368977268252208e-03_dp, &
+      -5.37750430358431494e-02_dp, 0.0_dp, -2.45398363091292853e-03_dp, 0.0_dp, 0.0_dp, &
+      0.0_dp, 0.0_dp]
+    old%s = [8.33543784167826026e-08_dp, -4.57614712334993258e-08_dp]
+    old%s_t2 = -1.77064997606593996e-08_dp
+    old%sigma = [7.06891009466473468e-03_dp, -2.69900017830744382e-02_dp]
+    old%sigma_t2 = -1.78866071410587330e-02_dp
+    s = [9.3036045303021203e-05_dp, -5.1076696769602983e-05_dp, -1.9763121568176262e-05_dp]
+
+    call replay_3d(mat, solver, old, s)
+    call closed_side(mat, solver, old, s, 5)
+  end subroutine beyond_bound_seed6_explicit_surface_overshoot
 
   !> `interlock-fuzz --3d 3000000 --seed 12345`, update 851150: 13 planes with azimuths,
   !> pre-fractured, very fast wear (zeta_0 = 4.1e-6 N/mm), trapezoidal, one step. Plane 1's wear
