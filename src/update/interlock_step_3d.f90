@@ -267,7 +267,7 @@ contains
     !> starts; nothing else reads it)
     type(wear_root_t), intent(inout) :: rt
     real(dp) :: c, sn, dip_o, mu_p_o, mu_p_law, a_w, g_slip, g_trap, drv, g_drv(3), thp, fp, &
-                rot(3, 3), dzeta(3), ksl(3), k_k(3, 3)
+                rot(3, 3), dzeta(3), ksl(3), k_k(3, 3), tie
     logical :: coupled, wears, trapezoidal, drivers, flat, terms, pinned
     integer :: j, phase
 
@@ -325,7 +325,8 @@ contains
         flat = flat_frame(cp, sp, c, sn)
       end if
       call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, terms, drivers, &
-                    chain, .not. (coupled .and. wears), ncol < 3, c, sn, flat, p, drv, g_drv)
+                    chain, .not. (coupled .and. wears), ncol < 3, c, sn, flat, p, drv, g_drv, &
+                    tie)
       if (.not. (coupled .and. wears)) exit
       if (phase == 0) thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), o%theta)
       fp = 1.0_dp - thp * angle_slope(g_drv, p%sl)
@@ -403,7 +404,8 @@ contains
                        wears .and. .not. coupled, trapezoidal, a_w, g_slip, mu_p_o, g_drv, &
                        thp, fp, h_start, h_end, ncol, pinned, k_k, jn)
       if (.not. coupled) then
-        if (.not. abs(p%sl(1)) > contact_round_off(cp, sp, c, sn, s)) &
+        ! (the explicit scheme's law is evaluated once, at the start angle: its tie)
+        if (.not. abs(p%sl(1)) > tie) &
           call chain_at_tie(mat, cp, sp, c, sn, o, jo, p, wears, a_w, g_slip, mu_p_o, &
                             mu_p_law, thp, fp, s_o, h_start, h_end, ncol, k_k, jn)
       end if
@@ -476,9 +478,9 @@ contains
 
     fresh = .not. h_start > 0.0_dp
     if (fresh) then
-      jn%side(1:ncol) = 0.0_dp
+      jn%side = 0.0_dp
     else
-      jn%side(1:ncol) = jo%side(1:ncol)
+      jn%side = jo%side
     end if
     ! (the strike rows of jn: 0 with the columns S_N, S_T1 alone, where d s_kt2 = 0 too)
     nrow = ncol - 1
@@ -712,7 +714,8 @@ contains
   !> d G / d sl only with `drivers` (else 0). `terms`: the trapezoidal wear terms are wanted
   !> (plane_law_3d_parts; with `trapezoidal`).
   pure subroutine evaluate(mat, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, terms, &
-                           drivers, chain, traction, in_plane, c, sn, flat, p, drv, g_drv)
+                           drivers, chain, traction, in_plane, c, sn, flat, p, drv, g_drv, &
+                           tie)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: cp, sp, s(3), mu_p_o, a_end, g_slip, c, sn
     type(plane_start_3d_t), intent(in) :: o
@@ -721,7 +724,8 @@ contains
     logical, intent(in) :: flat   !< flat_frame(cp, sp, c, sn)
     real(dp), intent(out) :: drv, g_drv(3)
     type(plane_law_3d_t), intent(out) :: p
-    real(dp) :: sl(3), tie
+    real(dp), intent(out) :: tie   !< the round-off of s_kn (local_frame)
+    real(dp) :: sl(3)
     ! (one call of the law: inlined once)
     if (flat) then
       sl = s
