@@ -195,6 +195,10 @@ contains
       end select
       i = i + 1
     end do
+    if (profile_umat .and. profile_3d == 2) &
+      call usage('--azimuthal takes no --umat or --umat-floor: the UMAT''s PROPS hold the paper''s RIA')
+    if (profile_umat .and. profile_3d > 0 .and. profile_tol < 0.0_dp) &
+      call usage('--umat-floor has no 3D variant: --turned and --in-plane take --umat')
     if (len_trim(dump_scene) == 0 .and. profile_set < 0 .and. path_scheme == 0 .and. &
         len_trim(out_dir) == 0) &
       call usage('--out DIR is required: the existing folder for the CSV files')
@@ -237,7 +241,8 @@ contains
       'histories; see bench/profile_updates.py); with --umat: through the UMAT, ' // &
       'with --umat-floor: the floor of the UMAT''s overhead; with --turned or --azimuthal: ' // &
       'the 3D update on the histories turned by 30 deg (the full model''s RIA, or azimuthal N_a = 3), ' // &
-      'with --in-plane: on the histories in the (n, t1) plane'
+      'with --in-plane: on the histories in the (n, t1) plane; --turned or --in-plane with --umat: ' // &
+      'the UMAT as a 3D element (NTENS = 3, the full model''s PROPS)'
     write (unit, '(a)') '       interlock-bench --profile-path SCHEME TOL N  ' // &
       '(one run of part 3b''s 45-deg 3D scene at N steps, for valgrind: SCHEME 1 explicit, ' // &
       '2 implicit, 3 trapezoidal; TOL substepping tolerance, 0 for none; prints the end point)'
@@ -359,7 +364,9 @@ contains
       end if
     end if
     do k = 1, profile_passes
-      if (profile_3d > 0) then
+      if (profile_3d > 0 .and. profile_umat) then
+        call time_umat_3d(props, h3, chk, fails)
+      else if (profile_3d > 0) then
         call time_interlock_3d(mat, solver, h3, chk, fails)
       else if (profile_umat .and. profile_tol < 0.0_dp) then
         call time_umat_floor(props, h, chk)

@@ -8,7 +8,8 @@ module interlock_props
   use interlock_material_table, only: n_properties, n_required_properties, &
       check_property, all_properties_ok, property_defaults, umat_planes, umat_nstatv, statevar_t, &
       n_statevars_per_plane, prop_theta0, prop_thetaf, prop_prefractured, prop_ria, &
-      prop_n_azimuths, ria_paper, statevar_index_3d, statevar_3d, &
+      prop_n_azimuths, ria_paper, statevar_index_3d, statevar_3d, strike_statevars, &
+      n_statevars_3d, &
       n_statevars_global, sv_frictional_slip_strike, sv_friction_traction_strike, &
       sv_damage, sv_beta, sv_frictional_slip, sv_zeta, sv_theta, sv_friction_traction, &
       sv_work, sv_damage_dissipation, sv_friction_dissipation, sv_initialized, statevars, &
@@ -50,6 +51,21 @@ module interlock_props
   integer, parameter :: slot_bound(umat_nstatv) = [reshape(spread( &
     statevars(1:n_statevars_per_plane)%bound, 1, umat_planes), [n_statevars_per_plane * umat_planes]), &
     statevars(n_statevars_per_plane + 1:)%bound]
+
+  !> A three-dimensional point's variables (statevar_3d: the 2D ones, then the strike
+  !> components), their fixed bounds as ordered keys and how the material narrows them, for
+  !> statev_bad_index_3d's check of every call (the flag's lower bound 1, as in 2D).
+  integer, parameter :: n_vars_3d = n_statevars_3d
+  real(dp), parameter :: var_lower_3d(n_vars_3d) = [statevars%lower, strike_statevars%lower]
+  real(dp), parameter :: var_upper_3d(n_vars_3d) = [statevars%upper, strike_statevars%upper]
+  integer, parameter :: var_bound_3d(n_vars_3d) = [statevars%bound, strike_statevars%bound]
+  integer(int64), parameter :: var_lo_bits(n_vars_3d) = &
+    transfer(merge(1.0_dp, var_lower_3d, var_bound_3d == bound_flag), 0_int64, n_vars_3d)
+  integer(int64), parameter :: var_hi_bits(n_vars_3d) = transfer(var_upper_3d, 0_int64, n_vars_3d)
+  integer(int64), parameter :: var_lo_key_3d(n_vars_3d) = merge(-1_int64, &
+    merge(var_lo_bits, ieor(var_lo_bits, huge(0_int64)), var_lo_bits >= 0), var_lo_bits == 0)
+  integer(int64), parameter :: var_hi_key_3d(n_vars_3d) = &
+    merge(var_hi_bits, ieor(var_hi_bits, huge(0_int64)), var_hi_bits >= 0)
 
   !> The checks a PROPS can fail (props_refusal), each with its message (props_message).
   integer, parameter :: refused_none = 0, refused_count = 1, refused_value = 2, &
@@ -405,19 +421,25 @@ contains
   end subroutine state_to_statev
 
   ! --- A three-dimensional point (SPEC section 9): STATEV as statevar_index_3d lays it out
-  ! for the material's planes, umat_nstatv_3d(mat%n_planes) slots. Off the 2D UMAT's path:
-  ! plain loops over the planes.
+  ! for the material's planes, umat_nstatv_3d(mat%n_planes) slots: loops over the planes from
+  ! each variable's base slot (slot_base), on the 3D UMAT's every call.
 
   !> The first STATEV slot of a three-dimensional point outside its range, 0 when every one
   !> is admissible (an uninitialised STATEV, flag 0, whatever its other slots); every value
-  !> tested on its bits before it is compared (no comparison of a NaN).
+  !> tested on its bits before it is compared (no comparison of a NaN). The common case, on
+  !> every call, as statev_bad_index's: each variable's slots (contiguous in the layout of
+  !> statevar_index_3d) against its fixed range by integer comparisons of the bits, in a loop
+  !> unrolled over the variables, then the bounds the material narrows on values then known
+  !> finite; which slot fails is found only when one does.
   pure integer function statev_bad_index_3d(statev, mat) result(bad)
     real(dp), intent(in) :: statev(:)
     type(interlock_material_t), intent(in) :: mat
-    real(dp) :: lo(size(statev)), hi(size(statev))
-    integer :: flag
+    real(dp) :: theta_lo, theta_hi
+    integer :: flag, n, n_vars, ivar, first, last, slot, k
+    logical :: ok
     bad = 0
-    flag = statevar_index_3d(sv_initialized, 0, mat%n_planes)
+    n = mat%n_planes
+    flag = statevar_index_3d(sv_initialized, 0, n)
     if (.not. is_finite_bits(statev(flag))) then
       bad = flag
       return
@@ -426,10 +448,47 @@ contains
       if (.not. same_value(statev(flag), 0.0_dp)) bad = flag
       return
     end if
-    call statev_bounds(mat, lo, hi)
-    lo(flag) = 1.0_dp
-    bad = first_out_of_range(statev, lo, hi)
+    n_vars = n_statevars_per_plane + n_statevars_global
+    if (size(statev) > n_statevars_per_plane * n + n_statevars_global) n_vars = n_vars_3d
+    ok = .true.
+    !GCC$ unroll 12
+    do ivar = 1, n_vars_3d
+      if (ivar > n_vars) exit
+      first = slot_base(ivar, n)
+      last = first
+      ! (a variable of every plane: its planes' slots follow its base)
+      if (ivar <= n_statevars_per_plane .or. ivar > n_statevars_per_plane + n_statevars_global) then
+        first = first + 1
+        last = last + n
+      end if
+      do slot = first, last
+        ok = ok .and. key_in_range(statev(slot), var_lo_key_3d(ivar), var_hi_key_3d(ivar))
+      end do
+    end do
+    if (ok) then
+      do k = 1, n
+        if (mat%prefractured) then
+          ok = ok .and. statev(slot_base(sv_damage, n) + k) >= 1.0_dp .and. &
+               statev(slot_base(sv_beta, n) + k) >= mat%beta_break
+        end if
+        call angle_range(mat, k, theta_lo, theta_hi)
+        slot = slot_base(sv_theta, n) + k
+        ok = ok .and. statev(slot) >= theta_lo .and. statev(slot) <= theta_hi
+      end do
+      if (ok) return
+    end if
+    bad = first_bad_slot_3d(statev, mat)
   end function statev_bad_index_3d
+
+  !> statev_bad_index_3d's slot when one fails: the first outside its range (statev_bounds).
+  pure integer function first_bad_slot_3d(statev, mat) result(bad)
+    real(dp), intent(in) :: statev(:)
+    type(interlock_material_t), intent(in) :: mat
+    real(dp) :: lo(size(statev)), hi(size(statev))
+    call statev_bounds(mat, lo, hi)
+    lo(statevar_index_3d(sv_initialized, 0, mat%n_planes)) = 1.0_dp
+    bad = first_out_of_range(statev, lo, hi)
+  end function first_bad_slot_3d
 
   !> The message for STATEV(i) of a three-dimensional point outside its range.
   pure subroutine statev_message_3d(statev, i, mat, message)
@@ -465,29 +524,37 @@ contains
     real(dp), intent(in) :: statev(:)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_state_3d_t), intent(inout) :: state
-    integer :: n
+    integer :: n, k
     n = mat%n_planes
-    if (statev(statevar_index_3d(sv_initialized, 0, n)) < 0.5_dp) then
+    if (statev(slot_base(sv_initialized, n)) < 0.5_dp) then
       call interlock_state_3d_init(mat, state)
       return
     end if
-    state%damage(1:n) = statev(statevar_index_3d(sv_damage, 1, n):statevar_index_3d(sv_damage, n, n))
-    state%beta(1:n) = statev(statevar_index_3d(sv_beta, 1, n):statevar_index_3d(sv_beta, n, n))
-    state%sf(1:n) = statev(statevar_index_3d(sv_frictional_slip, 1, n): &
-                           statevar_index_3d(sv_frictional_slip, n, n))
-    state%zeta(1:n) = statev(statevar_index_3d(sv_zeta, 1, n):statevar_index_3d(sv_zeta, n, n))
-    state%theta(1:n) = statev(statevar_index_3d(sv_theta, 1, n):statevar_index_3d(sv_theta, n, n))
-    state%tauf(1:n) = statev(statevar_index_3d(sv_friction_traction, 1, n): &
-                             statevar_index_3d(sv_friction_traction, n, n))
-    state%sf_strike(1:n) = statev(statevar_index_3d(sv_frictional_slip_strike, 1, n): &
-                                  statevar_index_3d(sv_frictional_slip_strike, n, n))
-    state%tauf_strike(1:n) = statev(statevar_index_3d(sv_friction_traction_strike, 1, n): &
-                                    statevar_index_3d(sv_friction_traction_strike, n, n))
-    state%work = statev(statevar_index_3d(sv_work, 0, n))
-    state%diss_damage = statev(statevar_index_3d(sv_damage_dissipation, 0, n))
-    state%diss_friction = statev(statevar_index_3d(sv_friction_dissipation, 0, n))
+    ! (slot by slot, plane k's slot of a variable its base + k: an array section of a run-time
+    ! length, or a loop gfortran turns into one, is a call of memcpy for three values;
+    ! src/CMakeLists.txt)
+    do k = 1, n
+      state%damage(k) = statev(slot_base(sv_damage, n) + k)
+      state%beta(k) = statev(slot_base(sv_beta, n) + k)
+      state%sf(k) = statev(slot_base(sv_frictional_slip, n) + k)
+      state%zeta(k) = statev(slot_base(sv_zeta, n) + k)
+      state%theta(k) = statev(slot_base(sv_theta, n) + k)
+      state%tauf(k) = statev(slot_base(sv_friction_traction, n) + k)
+      state%sf_strike(k) = statev(slot_base(sv_frictional_slip_strike, n) + k)
+      state%tauf_strike(k) = statev(slot_base(sv_friction_traction_strike, n) + k)
+    end do
+    state%work = statev(slot_base(sv_work, n))
+    state%diss_damage = statev(slot_base(sv_damage_dissipation, n))
+    state%diss_friction = statev(slot_base(sv_friction_dissipation, n))
     state%stored = 0.0_dp
   end subroutine statev_to_state_3d
+
+  !> Variable ivar's (statevar_3d) slot of a point with n planes, or the slot its planes'
+  !> slots follow (plane k's is this + k: statevar_index_3d's layout, by variable then plane).
+  pure integer function slot_base(ivar, n)
+    integer, intent(in) :: ivar, n
+    slot_base = statevar_index_3d(ivar, 0, n)
+  end function slot_base
 
   !> The state of a three-dimensional point with n_planes planes -> STATEV.
   pure subroutine state_to_statev_3d(state, n_planes, statev)
@@ -497,19 +564,19 @@ contains
     integer :: n, k
     n = n_planes
     do k = 1, n
-      statev(statevar_index_3d(sv_damage, k, n)) = state%damage(k)
-      statev(statevar_index_3d(sv_beta, k, n)) = state%beta(k)
-      statev(statevar_index_3d(sv_frictional_slip, k, n)) = state%sf(k)
-      statev(statevar_index_3d(sv_zeta, k, n)) = state%zeta(k)
-      statev(statevar_index_3d(sv_theta, k, n)) = state%theta(k)
-      statev(statevar_index_3d(sv_friction_traction, k, n)) = state%tauf(k)
-      statev(statevar_index_3d(sv_frictional_slip_strike, k, n)) = state%sf_strike(k)
-      statev(statevar_index_3d(sv_friction_traction_strike, k, n)) = state%tauf_strike(k)
+      statev(slot_base(sv_damage, n) + k) = state%damage(k)
+      statev(slot_base(sv_beta, n) + k) = state%beta(k)
+      statev(slot_base(sv_frictional_slip, n) + k) = state%sf(k)
+      statev(slot_base(sv_zeta, n) + k) = state%zeta(k)
+      statev(slot_base(sv_theta, n) + k) = state%theta(k)
+      statev(slot_base(sv_friction_traction, n) + k) = state%tauf(k)
+      statev(slot_base(sv_frictional_slip_strike, n) + k) = state%sf_strike(k)
+      statev(slot_base(sv_friction_traction_strike, n) + k) = state%tauf_strike(k)
     end do
-    statev(statevar_index_3d(sv_work, 0, n)) = state%work
-    statev(statevar_index_3d(sv_damage_dissipation, 0, n)) = state%diss_damage
-    statev(statevar_index_3d(sv_friction_dissipation, 0, n)) = state%diss_friction
-    statev(statevar_index_3d(sv_initialized, 0, n)) = 1.0_dp
+    statev(slot_base(sv_work, n)) = state%work
+    statev(slot_base(sv_damage_dissipation, n)) = state%diss_damage
+    statev(slot_base(sv_friction_dissipation, n)) = state%diss_friction
+    statev(slot_base(sv_initialized, n)) = 1.0_dp
   end subroutine state_to_statev_3d
 
 end module interlock_props

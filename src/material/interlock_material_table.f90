@@ -15,7 +15,8 @@ module interlock_material_table
   public :: umat_planes, umat_nstatv, property_index, statevar_index
   public :: n_properties_2d, prop_ria, prop_n_azimuths, ria_paper, ria_azimuthal, &
             strike_statevars, n_statevars_strike, sv_frictional_slip_strike, &
-            sv_friction_traction_strike, umat_nstatv_3d, statevar_index_3d, statevar_3d
+            sv_friction_traction_strike, umat_nstatv_3d, statevar_index_3d, statevar_3d, &
+            n_statevars_3d
   public :: check_property, property_ok, properties_ok, format_range
   public :: kind_real, kind_flag, kind_choice
   public :: all_properties_ok, property_defaults
@@ -243,6 +244,9 @@ module interlock_material_table
   !> unchanged and the strike components in 23-28.
   integer, parameter :: n_statevars_strike = 2
   integer, parameter :: sv_frictional_slip_strike = 11, sv_friction_traction_strike = 12
+  !> The variables of a three-dimensional point.
+  integer, parameter :: n_statevars_3d = n_statevars_per_plane + n_statevars_global + &
+                                        n_statevars_strike
   type(statevar_t), parameter :: strike_statevars(n_statevars_strike) = [ &
     statevar_t('frictional_slip_strike', 'mm', .true., -state_bound, state_bound, bound_fixed, &
                '3D: frictional slip of plane k along its strike q_k (the frame of its phi_k ' // &
