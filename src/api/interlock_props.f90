@@ -15,7 +15,7 @@ module interlock_props
       sv_work, sv_damage_dissipation, sv_friction_dissipation, sv_initialized, statevars, &
       n_statevars_strike, state_bound, bound_broken, bound_broken_history, bound_plane_angle, &
       bound_flag
-  use interlock_material, only: interlock_material_t, interlock_solver_t
+  use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes
   use interlock_material_rows, only: umat_controls_t, material_from_rows, rows_n_azimuths
   use interlock_state, only: interlock_state_t, interlock_state_init, interlock_state_3d_t, &
       interlock_state_3d_init
@@ -480,14 +480,18 @@ contains
     bad = first_bad_slot_3d(statev, mat)
   end function statev_bad_index_3d
 
-  !> statev_bad_index_3d's slot when one fails: the first outside its range (statev_bounds).
+  !> statev_bad_index_3d's slot when one fails: the first outside its range (statev_bounds;
+  !> the bounds on the stack, in arrays of a fixed length beyond the largest RIA's STATEV:
+  !> nothing allocated).
   pure integer function first_bad_slot_3d(statev, mat) result(bad)
     real(dp), intent(in) :: statev(:)
     type(interlock_material_t), intent(in) :: mat
-    real(dp) :: lo(size(statev)), hi(size(statev))
-    call statev_bounds(mat, lo, hi)
+    real(dp) :: lo(n_vars_3d * max_planes), hi(n_vars_3d * max_planes)
+    integer :: n
+    n = min(size(statev), size(lo))
+    call statev_bounds(mat, lo(1:n), hi(1:n))
     lo(statevar_index_3d(sv_initialized, 0, mat%n_planes)) = 1.0_dp
-    bad = first_out_of_range(statev, lo, hi)
+    bad = first_out_of_range(statev, lo(1:n), hi(1:n))
   end function first_bad_slot_3d
 
   !> The message for STATEV(i) of a three-dimensional point outside its range.
