@@ -121,7 +121,7 @@ contains
                 slip_norm, slip_dip, tauf_norm, kpos, kts, k_loc(3, 3), sig_loc(3), sig_k(3), &
                 w, a_w, g_slip, zeta, theta, slope, wdmg, work, sf_tie(2), tauf_tie(2), slip_tie
     integer :: i
-    logical :: grows, open, closed
+    logical :: grows, open, closed, flat
 
     ! The local separation (m . s, e . s, q . s) and the round-off of s_kn: up to it, the plane
     ! is closed for every derivative (SPEC D13: the tie s_kn = 0; a path in the plane's surface
@@ -229,9 +229,16 @@ contains
     ! The plane's share: R^T sigma_loc and R^T K_loc R weighted, the area's slope times the
     ! traction at unit area.
     w = gam * area
-    sig_k = macro_vector(cp, sp, c, sn, sig_loc)
+    ! (a flat plane of a RIA whose azimuths are 0: the local frame is the macro one)
+    flat = .not. abs(sn) > 0.0_dp .and. c >= 1.0_dp .and. cp >= 1.0_dp .and. .not. abs(sp) > 0.0_dp
+    if (flat) then
+      sig_k = sig_loc
+      tangent = tangent + w * k_loc
+    else
+      sig_k = macro_vector(cp, sp, c, sn, sig_loc)
+      call add_turned(cp, sp, c, sn, k_loc, .not. grows, w, tangent)
+    end if
     sigma = sigma + w * sig_k
-    call add_turned(cp, sp, c, sn, k_loc, .not. grows, w, tangent)
     if (darea < 0.0_dp) tangent(:, 1) = tangent(:, 1) + (gam * darea) * sig_k
 
     ! Energies: the frictional work on the damaged part, the damage dissipation Y dD (the
