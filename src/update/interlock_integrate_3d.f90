@@ -67,25 +67,36 @@ contains
       ! (a one-step solve that failed and was taken on sub-increments: the strike stiffness is
       ! then a chain; the general path computes it)
     end if
+    ! The explicit scheme's kernel (interlock_kernels_3d) where it applies; the general path
+    ! takes what it declines, and reports bad input. Its tangent stays within the general
+    ! path's stable bound on one step (interlock_substep_control:check_chain).
+    if (solver%scheme == scheme_explicit) then
+      if (mat%prepared .and. solver%substep_tol <= 0.0_dp .and. &
+          all(within_separation_bound(s))) then
+        call explicit_step_3d(mat, s, old, 1.0e6_dp * stiffness_scale(mat), new, sigma, &
+                              tangent, done)
+        if (done) then
+          call one_step_report(info)
+          call largest_increments(mat%n_planes, old%interlock_state_t, new%interlock_state_t, &
+                                  info)
+          return
+        end if
+      end if
+    end if
+    call one_step_report(info)
+    info%max_angle_increment = 0.0_dp
+    call general_update_3d(mat, solver, s, old, new, sigma, tangent, info)
+  end subroutine interlock_update_3d
+
+  !> The report of an update taken as one step, before what it finds out: status ok, one
+  !> sub-increment in one attempt, no wear iteration.
+  pure subroutine one_step_report(info)
+    type(interlock_info_t), intent(inout) :: info
     info%status = status_ok
     info%newton_iterations = 0
     info%substeps = 1
     info%attempts = 1
-    ! The explicit scheme's kernel (interlock_kernels_3d) where it applies; the general path
-    ! takes what it declines, and reports bad input. Its tangent stays within the general
-    ! path's stable bound on one step (interlock_substep_control:check_chain).
-    if (mat%prepared .and. solver%scheme == scheme_explicit .and. &
-        solver%substep_tol <= 0.0_dp .and. all(within_separation_bound(s))) then
-      call explicit_step_3d(mat, s, old, 1.0e6_dp * stiffness_scale(mat), new, sigma, tangent, &
-                            done)
-      if (done) then
-        call largest_increments(mat%n_planes, old%interlock_state_t, new%interlock_state_t, info)
-        return
-      end if
-    end if
-    info%max_angle_increment = 0.0_dp
-    call general_update_3d(mat, solver, s, old, new, sigma, tangent, info)
-  end subroutine interlock_update_3d
+  end subroutine one_step_report
 
   !> The point stays in the (n, t1) plane of a RIA whose azimuths are all 0: s_T2 = 0 at the
   !> start and the end and no plane has a strike component of slip or friction traction

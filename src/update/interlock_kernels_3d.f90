@@ -5,13 +5,14 @@
 !> d A_g / d s_N term). Each plane's law is taken with its values and its 3x3 local tangent
 !> only, in scalars, from the mechanisms' procedures (interlock_damage, interlock_friction's
 !> radial return, eq. 6 of interlock_plane_law, interlock_wear, interlock_geometry): none of
-!> the general path's derivatives of the start state, wear drivers or D14 terms. It declines
-!> (done false: the caller takes the general path, interlock_general_path, unchanged) what it
-!> does not handle at that cost: a separated RIA (D7), a plane whose s_kn is within the
-!> round-off of its rotation (SPEC D13: the closed side's derivatives at the tie), a trial
-!> friction traction near overflow, a tangent beyond the stable bound, anything not finite.
-!> It agrees with the general path to round-off and shares none of its code; core_kernels3d
-!> checks it.
+!> the general path's derivatives of the start state, wear drivers or D14 terms. A plane whose
+!> s_kn is within the round-off of its rotation is at the tie s_kn = 0 and closed for every
+!> derivative (SPEC D13), as in the general path: a path in a plane's surface (the paper's RIA
+!> slid along a ridge) stays there. It declines (done false: the caller takes the general
+!> path, interlock_general_path, unchanged) what it does not handle at that cost: a separated
+!> RIA (D7), a trial friction traction near overflow, a tangent beyond the stable bound,
+!> anything not finite. It agrees with the general path to round-off and shares none of its
+!> code; core_kernels3d checks it.
 module interlock_kernels_3d
   use interlock_kinds, only: dp, is_finite_value
   use interlock_material, only: interlock_material_t, scheme_explicit, max_planes
@@ -21,6 +22,7 @@ module interlock_kernels_3d
   use interlock_geometry, only: contact_area
   use interlock_wear, only: worn_angle
   use interlock_plane_law, only: plane_frame, wear_weights, normal_traction, tangential_traction
+  use interlock_kinematics, only: to_local, to_global
   implicit none
   private
   public :: explicit_step_3d
@@ -97,16 +99,18 @@ contains
   !> NaN anywhere: no comparison with it holds).
   pure logical function within_limit(sigma, tangent, limit)
     real(dp), intent(in) :: sigma(3), tangent(3, 3), limit
+    ! (the sums written out: no loop)
     within_limit = is_finite_value(abs(sigma(1)) + abs(sigma(2)) + abs(sigma(3))) .and. &
-                   sum(abs(tangent)) <= limit
+                   abs(tangent(1, 1)) + abs(tangent(2, 1)) + abs(tangent(3, 1)) + &
+                   abs(tangent(1, 2)) + abs(tangent(2, 2)) + abs(tangent(3, 2)) + &
+                   abs(tangent(1, 3)) + abs(tangent(2, 3)) + abs(tangent(3, 3)) <= limit
   end function within_limit
 
   !> Plane k at its frozen start angle (frame c, sn; azimuth frame cp, sp) over the step to s,
   !> area fraction gam, contact area `area` (slope darea): adds its weighted traction to sigma,
   !> its weighted R^T K_loc R and the area's term to `tangent`, its energies to energy
   !> (damage and friction dissipation, stored), and stores its end state in `new`. `ok` false:
-  !> declined (s_kn at its tie, a trial traction near overflow, mu p = 0 on a closed plane with
-  !> friction on).
+  !> declined (a trial friction traction near overflow).
   pure subroutine explicit_plane(mat, k, cp, sp, c, sn, s, old, gam, area, darea, sigma, &
                                  tangent, energy, new, ok)
     type(interlock_material_t), intent(in) :: mat
@@ -119,17 +123,19 @@ contains
     real(dp) :: dip, sl(3), tie, pos, dpos, beta, dmg, gd_n, gd_t, tn, tn2, g_dmg(3), mu_p, &
                 g_mu(3), tr(2), trn, nv(2), g_nv(3, 2), sf(2), tauf(2), g_tauf(3, 2), &
                 slip_norm, slip_dip, tauf_norm, kpos, kts, k_loc(3, 3), sig_loc(3), sig_k(3), &
-                w, a_w, g_slip, zeta, theta, slope, wdmg, work, sf_tie(2), tauf_tie(2), slip_tie
+                w, a_w, g_slip, zeta, theta, slope, wdmg, work, sf_tie(2), tauf_tie(2), &
+                slip_tie, d_q(2)
     integer :: i
     logical :: grows, open, closed, flat
 
     ! The local separation (m . s, e . s, q . s) and the round-off of s_kn: up to it, the plane
     ! is closed for every derivative (SPEC D13: the tie s_kn = 0; a path in the plane's surface
     ! gives s_kn = 0 or a few ulps either side).
-    dip = cp * s(2) + sp * s(3)
-    sl(1) = c * s(1) + sn * dip
-    sl(2) = -(sn * s(1)) + c * dip
-    sl(3) = -(sp * s(2)) + cp * s(3)
+    ! (interlock_kinematics' turns: by the azimuth in (t1, t2), then by theta in (n, d))
+    call to_local(cp, sp, s(2:3), d_q)
+    dip = d_q(1)
+    sl(3) = d_q(2)
+    call to_local(c, sn, [s(1), dip], sl(1:2))
     tie = 8.0_dp * epsilon(1.0_dp) * (abs(c * s(1)) + abs(sn * dip))
     open = sl(1) > tie
 
@@ -233,11 +239,10 @@ contains
     flat = .not. abs(sn) > 0.0_dp .and. c >= 1.0_dp .and. cp >= 1.0_dp .and. .not. abs(sp) > 0.0_dp
     if (flat) then
       sig_k = sig_loc
-      tangent = tangent + w * k_loc
     else
       sig_k = macro_vector(cp, sp, c, sn, sig_loc)
-      call add_turned(cp, sp, c, sn, k_loc, .not. grows, w, tangent)
     end if
+    call add_turned(cp, sp, c, sn, flat, k_loc, .not. grows, w, tangent)
     sigma = sigma + w * sig_k
     if (darea < 0.0_dp) tangent(:, 1) = tangent(:, 1) + (gam * darea) * sig_k
 
@@ -275,74 +280,72 @@ contains
     new%tauf_strike(k) = tauf(2)
   end subroutine explicit_plane
 
-  !> A local vector v (along m, e, q) in the macro frame (n, t1, t2): R^T v.
+  !> A local vector v (along m, e, q) in the macro frame (n, t1, t2): R^T v, turned back by
+  !> theta in (m, e), then by the azimuth in (d, q).
   pure function macro_vector(cp, sp, c, sn, v) result(u)
     real(dp), intent(in) :: cp, sp, c, sn, v(3)
     real(dp) :: u(3)
     real(dp) :: along_dip
-    along_dip = sn * v(1) + c * v(2)
-    u(1) = c * v(1) - sn * v(2)
-    u(2) = cp * along_dip - sp * v(3)
-    u(3) = sp * along_dip + cp * v(3)
+    u(1) = v(1)
+    along_dip = v(2)
+    call turn(c, sn, u(1), along_dip)
+    u(2) = along_dip
+    u(3) = v(3)
+    call turn(cp, sp, u(2), u(3))
   end function macro_vector
 
   !> tangent += w R^T K_loc R, R = B A: B turns by theta in the indices (1, 2), A by the azimuth
-  !> in (2, 3); each turn applied to the columns, then to the rows, entry by entry in scalars.
-  !> `normal_row`: K_loc's normal row is 0 off its diagonal (damage does not grow).
-  pure subroutine add_turned(cp, sp, c, sn, k_loc, normal_row, w, tangent)
+  !> in (2, 3) (interlock_kinematics' turn of a pair); each turn applied to the columns, then to
+  !> the rows, entry by entry in scalars (none for a `flat` plane, whose R is the identity).
+  !> `normal_row`: K_loc's normal row is 0 off its diagonal (damage does not grow): the
+  !> columns' turn of its zeros left out.
+  pure subroutine add_turned(cp, sp, c, sn, flat, k_loc, normal_row, w, tangent)
     real(dp), intent(in) :: cp, sp, c, sn, k_loc(3, 3), w
-    logical, intent(in) :: normal_row
+    logical, intent(in) :: flat, normal_row
     real(dp), intent(inout) :: tangent(3, 3)
-    real(dp) :: a11, a21, a31, a12, a22, a32, a13, a23, a33
-    a11 = k_loc(1, 1)
-    a21 = k_loc(2, 1)
-    a31 = k_loc(3, 1)
-    a12 = k_loc(1, 2)
-    a22 = k_loc(2, 2)
-    a32 = k_loc(3, 2)
-    a13 = k_loc(1, 3)
-    a23 = k_loc(2, 3)
-    a33 = k_loc(3, 3)
-    call rotate(c, sn, a11, a21)
-    if (normal_row) then
-      a12 = 0.0_dp - sn * a22
-      a22 = c * a22
-      a13 = 0.0_dp - sn * a23
-      a23 = c * a23
-    else
-      call rotate(c, sn, a12, a22)
-      call rotate(c, sn, a13, a23)
+    real(dp) :: x(3), y(3), z(3)   ! the columns of K_loc as they turn
+    integer :: i
+    x = k_loc(:, 1)
+    y = k_loc(:, 2)
+    z = k_loc(:, 3)
+    if (.not. flat) then
+      ! columns, then rows, by theta
+      call turn(c, sn, x(1), x(2))
+      if (normal_row) then
+        y(1) = 0.0_dp - sn * y(2)
+        z(1) = 0.0_dp - sn * z(2)
+        y(2) = c * y(2)
+        z(2) = c * z(2)
+      else
+        call turn(c, sn, y(1), y(2))
+        call turn(c, sn, z(1), z(2))
+      end if
+      do i = 1, 3
+        call turn(c, sn, x(i), y(i))
+      end do
+      if (sp < 0.0_dp .or. sp > 0.0_dp .or. cp < 1.0_dp) then
+        ! columns, then rows, by the azimuth
+        call turn(cp, sp, x(2), x(3))
+        call turn(cp, sp, y(2), y(3))
+        call turn(cp, sp, z(2), z(3))
+        do i = 1, 3
+          call turn(cp, sp, y(i), z(i))
+        end do
+      end if
     end if
-    call rotate(c, sn, a11, a12)
-    call rotate(c, sn, a21, a22)
-    call rotate(c, sn, a31, a32)
-    if (sp < 0.0_dp .or. sp > 0.0_dp .or. cp < 1.0_dp) then
-      call rotate(cp, sp, a21, a31)
-      call rotate(cp, sp, a22, a32)
-      call rotate(cp, sp, a23, a33)
-      call rotate(cp, sp, a12, a13)
-      call rotate(cp, sp, a22, a23)
-      call rotate(cp, sp, a32, a33)
-    end if
-    tangent(1, 1) = tangent(1, 1) + w * a11
-    tangent(2, 1) = tangent(2, 1) + w * a21
-    tangent(3, 1) = tangent(3, 1) + w * a31
-    tangent(1, 2) = tangent(1, 2) + w * a12
-    tangent(2, 2) = tangent(2, 2) + w * a22
-    tangent(3, 2) = tangent(3, 2) + w * a32
-    tangent(1, 3) = tangent(1, 3) + w * a13
-    tangent(2, 3) = tangent(2, 3) + w * a23
-    tangent(3, 3) = tangent(3, 3) + w * a33
+    tangent(:, 1) = tangent(:, 1) + w * x
+    tangent(:, 2) = tangent(:, 2) + w * y
+    tangent(:, 3) = tangent(:, 3) + w * z
   end subroutine add_turned
 
-  !> (x, y) turned by the angle of (cs, sn) = (cos, sin) in its plane.
-  pure subroutine rotate(cs, sn, x, y)
+  !> (x, y) turned by the angle of (cs, sn) = (cos, sin) in its plane (to_global).
+  pure subroutine turn(cs, sn, x, y)
     real(dp), intent(in) :: cs, sn
     real(dp), intent(inout) :: x, y
-    real(dp) :: x_o
-    x_o = x
-    x = cs * x_o - sn * y
-    y = sn * x_o + cs * y
-  end subroutine rotate
+    real(dp) :: v(2)
+    call to_global(cs, sn, [x, y], v)
+    x = v(1)
+    y = v(2)
+  end subroutine turn
 
 end module interlock_kernels_3d
