@@ -7,7 +7,7 @@
 !> the tangent), so that such a point pays for the third component almost nothing.
 module interlock_integrate_3d
   use, intrinsic :: iso_fortran_env, only: int64
-  use interlock_kinds, only: dp
+  use interlock_kinds, only: dp, within_separation_bound
   use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_explicit, &
       scheme_trapezoidal
   use interlock_state, only: interlock_state_3d_t
@@ -17,6 +17,8 @@ module interlock_integrate_3d
   use interlock_plane_law_3d, only: slides_at_start
   use interlock_integrate, only: interlock_update
   use interlock_general_path, only: general_update_3d
+  use interlock_kernels_3d, only: explicit_step_3d
+  use interlock_substep_control, only: largest_increments, stiffness_scale
   implicit none
   private
   public :: interlock_update_3d
@@ -36,6 +38,7 @@ contains
     real(dp), intent(out) :: sigma(3), tangent(3, 3)
     type(interlock_info_t), intent(inout) :: info
     real(dp) :: tangent_2d(2, 2)
+    logical :: done
 
     if (mat%prepared .and. solver%substep_tol <= 0.0_dp .and. in_dip_planes(mat, s, old)) then
       call interlock_update(mat, solver, s(1:2), old%interlock_state_t, new%interlock_state_t, &
@@ -64,13 +67,36 @@ contains
       ! (a one-step solve that failed and was taken on sub-increments: the strike stiffness is
       ! then a chain; the general path computes it)
     end if
+    ! The explicit scheme's kernel (interlock_kernels_3d) where it applies; the general path
+    ! takes what it declines, and reports bad input. Its tangent stays within the general
+    ! path's stable bound on one step (interlock_substep_control:check_chain).
+    if (solver%scheme == scheme_explicit) then
+      if (mat%prepared .and. solver%substep_tol <= 0.0_dp .and. &
+          all(within_separation_bound(s))) then
+        call explicit_step_3d(mat, s, old, 1.0e6_dp * stiffness_scale(mat), new, sigma, &
+                              tangent, done)
+        if (done) then
+          call one_step_report(info)
+          call largest_increments(mat%n_planes, old%interlock_state_t, new%interlock_state_t, &
+                                  info)
+          return
+        end if
+      end if
+    end if
+    call one_step_report(info)
+    info%max_angle_increment = 0.0_dp
+    call general_update_3d(mat, solver, s, old, new, sigma, tangent, info)
+  end subroutine interlock_update_3d
+
+  !> The report of an update taken as one step, before what it finds out: status ok, one
+  !> sub-increment in one attempt, no wear iteration.
+  pure subroutine one_step_report(info)
+    type(interlock_info_t), intent(inout) :: info
     info%status = status_ok
     info%newton_iterations = 0
     info%substeps = 1
     info%attempts = 1
-    info%max_angle_increment = 0.0_dp
-    call general_update_3d(mat, solver, s, old, new, sigma, tangent, info)
-  end subroutine interlock_update_3d
+  end subroutine one_step_report
 
   !> The point stays in the (n, t1) plane of a RIA whose azimuths are all 0: s_T2 = 0 at the
   !> start and the end and no plane has a strike component of slip or friction traction

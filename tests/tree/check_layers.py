@@ -66,7 +66,7 @@ TEST_SUFFIXES = (".pf", ".f90", ".F90", ".f")
 # Modules of the general update path, which the kernels' agreement test holds the kernels to:
 # they must not be built on the kernels.
 GENERAL_PATH = {"interlock_general_path", "interlock_step_3d", "interlock_plane_law_3d"}
-KERNEL_MODULES = {"interlock_kernels"}
+KERNEL_MODULES = {"interlock_kernels", "interlock_kernels_3d"}
 
 MODULE_RE = re.compile(r"^\s*module\s+(?!procedure\b|subroutine\b|function\b)(\w+)\s*(!.*)?$",
                        re.IGNORECASE)

@@ -4,7 +4,7 @@
 
 foreach(stem tangent closed_forms limits invariants
         reduction3d isotropy3d closed_forms3d tangent3d order3d
-        kernels update_input)
+        kernels kernels3d update_input)
   interlock_add_core_suite(${stem})
 endforeach()
 
