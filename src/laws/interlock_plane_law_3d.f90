@@ -151,8 +151,9 @@ contains
     logical, intent(in) :: drivers, chain, traction, trapezoidal_terms, in_plane
     type(plane_law_3d_t), intent(out) :: p
     real(dp) :: pos, dpos, tn, tn2, gd_n, gd_t, mu_p, g_mu(3), tr(2), trn, nv(2), g_nv(3, 2), &
-                n_o(2), n_new(2), g_nn(3, 2), dsf(2), g_dsf(3, 2), slip_norm, g_slip_norm(3), &
-                atau, g_atau(3), share, g_share(3), x, g_x(3), phi_nn(2), phi_slip_norm, phi_x
+                n_o(2), n_new(2), g_psi(3), nt(2), dsf(2), g_dsf(3, 2), slip_norm, &
+                g_slip_norm(3), atau, g_atau(3), share, g_share(3), x, g_x(3), phi_turn, phi_nn(2), &
+                phi_slip_norm, phi_x
     integer :: i
     logical :: closed_at_zero, mean_direction, grows, open
 
@@ -244,16 +245,22 @@ contains
         g_slip_norm = 0.0_dp
       else
         if (mu_p_o > 0.0_dp .and. .not. in_plane) &
-          call mean_direction_return(mat, o%tauf, mu_p_o, tr, mu_p, g_mu, mean_direction, n_o, &
-                                     n_new, g_nn, phi_nn)
+          call mean_direction_return(mat, o%tauf, mu_p_o, tr, mu_p, g_mu(1), chain, &
+                                     mean_direction, n_o, n_new, g_psi, phi_turn)
         ! |tau_f| = mu p sliding, in either direction rule
         p%tauf_norm = mu_p
         if (mean_direction) then
           ! D14: the slip increment along the mean of the start and end directions, |tau_f| =
           ! mu p along n_new; the slip of the step is what the trial traction exceeds it by.
+          ! (d n_new(i) = nt(i) d psi, nt = 2 n_new turned by +90 deg; mu p has an s_kn entry
+          ! alone)
+          nt(1) = -2.0_dp * n_new(2)
+          nt(2) = 2.0_dp * n_new(1)
           do i = 1, 2
             p%tauf(i) = mu_p * n_new(i)
-            p%g_tauf(:, i) = n_new(i) * g_mu + mu_p * g_nn(:, i)
+            p%g_tauf(1, i) = n_new(i) * g_mu(1) + mu_p * (nt(i) * g_psi(1))
+            p%g_tauf(2, i) = mu_p * (nt(i) * g_psi(2))
+            p%g_tauf(3, i) = mu_p * (nt(i) * g_psi(3))
             dsf(i) = (tr(i) - p%tauf(i)) * mat%inv_kt
             p%sf(i) = sl(1 + i) - p%tauf(i) * mat%inv_kt
             if (chain) p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
@@ -274,13 +281,15 @@ contains
             g_slip_norm = norm_gradient(dsf, slip_norm, g_dsf)
             p%g_slip_dip = sign_of(dsf(1)) * g_dsf(:, 1)
             p%g_wear_start = g_slip_norm * (n_o(1) * n_o(1))
-            g_x = g_slip_norm * abs(n_new(1)) + slip_norm * sign_of(n_new(1)) * g_nn(:, 1)
+            g_x = g_slip_norm * abs(n_new(1)) + slip_norm * sign_of(n_new(1)) * (nt(1) * g_psi)
             g_atau = p%g_dmg * abs(p%tauf(1)) + p%dmg * sign_of(p%tauf(1)) * p%g_tauf(:, 1)
             p%g_wear_end = g_atau * x + atau * g_x
           end if
           if (chain) then
             ! d / d phi_o: n_new turns with n_o (phi_nn), the slip dsf = (tau_tr - tau_f) / K_t
             p%mean = .true.
+            phi_nn(1) = -n_new(2) * phi_turn
+            phi_nn(2) = n_new(1) * phi_turn
             p%phi_tauf = mu_p * phi_nn
             p%phi_sf = -p%phi_tauf * mat%inv_kt
             phi_slip_norm = 0.0_dp
@@ -340,8 +349,8 @@ contains
         tr(2) = mat%kt * (sl(3) - o%sf(2))
         trn = vector_norm(tr)
         if (trn > 0.0_dp .and. mu_p_o > 0.0_dp .and. .not. in_plane) &
-          call mean_direction_return(mat, o%tauf, mu_p_o, tr, mu_p, g_mu, mean_direction, n_o, &
-                                     n_new, g_nn, phi_nn)
+          call mean_direction_return(mat, o%tauf, mu_p_o, tr, mu_p, g_mu(1), .false., &
+                                     mean_direction, n_o, n_new, g_psi, phi_turn)
         if (mean_direction) then
           ! and D14's direction where the plane slid at the start (the trapezoidal scheme):
           ! the slip (tau_tr - mu p n_new) / K_t, its values the free plane's
@@ -493,13 +502,17 @@ contains
   !> Applies (`ok`) where the plane slides at the start (slides_at_start) and the turn
   !> 2 psi is at most 90 deg (a >= |b|); else radial return (a reversal turns by 180 deg).
   !> The caller has |tau_tr| > mu p (sliding at the end).
-  pure subroutine mean_direction_return(mat, tauf_o, mu_p_o, tr, mu_p, g_mu, ok, n_o, n_new, &
-                                        g_nn, phi_nn)
+  pure subroutine mean_direction_return(mat, tauf_o, mu_p_o, tr, mu_p, g_mu1, chain, ok, n_o, &
+                                        n_new, g_psi, phi_turn)
     type(interlock_material_t), intent(in) :: mat
-    real(dp), intent(in) :: tauf_o(2), mu_p_o, tr(2), mu_p, g_mu(3)
+    real(dp), intent(in) :: tauf_o(2), mu_p_o, tr(2), mu_p
+    real(dp), intent(in) :: g_mu1   !< d(mu p) / d s_kn (its only entry)
+    logical, intent(in) :: chain   !< phi_turn is wanted
     logical, intent(out) :: ok
-    real(dp), intent(out) :: n_o(2), n_new(2), g_nn(3, 2), phi_nn(2)
-    real(dp) :: t_norm, a, b, a2, b2, v2, m, scale_ab, g_a(3), g_b(3), g_psi(3)
+    !> n_o, n_new; d psi / d sl in g_psi (d n_new = 2 d psi n_new'); with `chain` the turn of
+    !> n_new's angle per turn of n_o's, d (phi_o + 2 psi) / d phi_o
+    real(dp), intent(out) :: n_o(2), n_new(2), g_psi(3), phi_turn
+    real(dp) :: t_norm, a, b, a2, b2, v2, m, scale_ab
     ok = .false.
     t_norm = vector_norm(tauf_o)
     if (.not. slides_at_start(t_norm, mu_p_o)) return
@@ -523,20 +536,14 @@ contains
     v2 = a2 + b2
     n_new(1) = ((a2 - b2) * n_o(1) - (2.0_dp * a * b) * n_o(2)) / v2
     n_new(2) = ((a2 - b2) * n_o(2) + (2.0_dp * a * b) * n_o(1)) / v2
-    ! (K_t d s_kt . n_o and n_o x K_t d s_kt: no s_kn entry)
-    g_a(1) = g_mu(1)
-    g_a(2) = mat%kt * n_o(1) + g_mu(2)
-    g_a(3) = mat%kt * n_o(2) + g_mu(3)
-    g_b(1) = 0.0_dp
-    g_b(2) = mat%kt * (0.0_dp - n_o(2))
-    g_b(3) = mat%kt * n_o(1)
-    g_psi = (a * g_b - b * g_a) / (v2 * scale_ab)
-    g_nn(:, 1) = -2.0_dp * n_new(2) * g_psi
-    g_nn(:, 2) = 2.0_dp * n_new(1) * g_psi
+    ! da = d(mu p) + K_t n_o . d s_kt, db = K_t n_o x d s_kt (no s_kn entry)
+    g_psi(1) = (0.0_dp - b * g_mu1) / (v2 * scale_ab)
+    g_psi(2) = (a * (mat%kt * (0.0_dp - n_o(2))) - b * (mat%kt * n_o(1))) / (v2 * scale_ab)
+    g_psi(3) = (a * (mat%kt * n_o(1)) - b * (mat%kt * n_o(2))) / (v2 * scale_ab)
     ! turning n_o by d phi_o: da = b d phi_o, db = -(a - mu p) d phi_o, so n_new's angle
     ! phi_o + 2 psi turns by (2 a mu p / (a^2 + b^2) - 1) d phi_o
-    phi_nn(1) = -n_new(2) * (2.0_dp * a * (mu_p / scale_ab) / v2 - 1.0_dp)
-    phi_nn(2) = n_new(1) * (2.0_dp * a * (mu_p / scale_ab) / v2 - 1.0_dp)
+    phi_turn = 0.0_dp
+    if (chain) phi_turn = 2.0_dp * a * (mu_p / scale_ab) / v2 - 1.0_dp
   end subroutine mean_direction_return
 
   !> A plane slides at the start of a step: its friction traction's magnitude |tauf_o| is
