@@ -21,7 +21,8 @@ module interlock_plane_law_3d
   implicit none
   private
   public :: plane_start_3d_t, plane_law_3d_t, plane_law_3d, plane_law_3d_parts, &
-            plane_traction_3d, slides_at_start, local_frame, contact_round_off, to_macro
+            plane_traction_3d, slides_at_start, start_direction, local_frame, contact_round_off, &
+            to_macro
 
   !> One plane's state at the start of a step (SPEC section 9: D, beta, sf(2), zeta, theta,
   !> tauf(2); vectors in the plane's (e, q) frame).
@@ -120,38 +121,41 @@ contains
     type(plane_start_3d_t), intent(in) :: o
     logical, intent(in) :: drivers, chain
     type(plane_law_3d_t), intent(out) :: p
+    real(dp) :: n_o(2)
+    logical :: mean_o
+    call start_direction(o%tauf, mu_p_o, mean_o, n_o)
     if (present(tie)) then
-      call plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, .true., .true., .false., &
-                              p)
+      call plane_law_3d_parts(mat, sl, tie, o, mean_o, n_o, drivers, chain, .true., .true., &
+                              .false., p)
     else
-      call plane_law_3d_parts(mat, sl, 0.0_dp, o, mu_p_o, drivers, chain, .true., .true., .false., &
-                              p)
+      call plane_law_3d_parts(mat, sl, 0.0_dp, o, mean_o, n_o, drivers, chain, .true., .true., &
+                              .false., p)
     end if
   end subroutine plane_law_3d
 
   !> plane_law_3d: s_kn up to tie (contact_round_off) is closed for every derivative.
   !> `traction` false: damage, friction and the wear drivers alone (what a wear equation's
-  !> iteration needs), plane_traction_3d gives the rest. mu_p_o: the start state's mu p
-  !> (interlock_plane_law's start_yield with the start separation's dip component) where the
-  !> slip direction follows D14's mean-direction rule (the trapezoidal scheme), 0 for radial
-  !> return alone. `drivers`: the derivatives of the wear drivers are wanted (a scheme whose
-  !> angle is coupled to the end of the step, on a plane that wears). `trapezoidal_terms`: the
-  !> trapezoidal scheme's wear terms wear_start and wear_end are wanted (true where mu_p_o > 0;
+  !> iteration needs), plane_traction_3d gives the rest. `mean_o`: the slip direction follows
+  !> D14's mean-direction rule (the trapezoidal scheme) from the start direction of slip n_o
+  !> (start_direction: the plane slides at the start; n_o is not read where mean_o is false,
+  !> radial return alone). `drivers`: the derivatives of the wear drivers are wanted (a scheme
+  !> whose angle is coupled to the end of the step, on a plane that wears). `trapezoidal_terms`:
+  !> the trapezoidal scheme's wear terms wear_start and wear_end are wanted (true with mean_o;
   !> else they are not set, nor the slip of a free plane's step, which its energies do not need:
   !> slip_norm 0 there). `in_plane`: the strike components vanish (s_kt2 = 0, sf_o,2 = tauf_o,2
   !> = 0) and only the derivatives of the (s_kn, s_kt1) components with respect to (s_kn, s_kt1)
   !> are wanted (the others' are left 0 or as they come): the slip is along the dip (D14's mean
   !> direction is the start direction, tau_tr's: radial return gives its values), |tau_tr| =
   !> |tau_tr,1|, no projector.
-  pure subroutine plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, traction, &
+  pure subroutine plane_law_3d_parts(mat, sl, tie, o, mean_o, n_o, drivers, chain, traction, &
                                      trapezoidal_terms, in_plane, p)
     type(interlock_material_t), intent(in) :: mat
-    real(dp), intent(in) :: sl(3), tie, mu_p_o
+    real(dp), intent(in) :: sl(3), tie, n_o(2)
     type(plane_start_3d_t), intent(in) :: o
-    logical, intent(in) :: drivers, chain, traction, trapezoidal_terms, in_plane
+    logical, intent(in) :: mean_o, drivers, chain, traction, trapezoidal_terms, in_plane
     type(plane_law_3d_t), intent(out) :: p
     real(dp) :: pos, dpos, tn, tn2, gd_n, gd_t, mu_p, g_mu(3), tr(2), trn, nv(2), g_nv(3, 2), &
-                n_o(2), n_new(2), g_psi(3), nt(2), dsf(2), g_dsf(3, 2), slip_norm, &
+                n_new(2), g_psi(3), nt(2), dsf(2), g_dsf(3, 2), slip_norm, &
                 g_slip_norm(3), atau, g_atau(3), share, g_share(3), x, g_x(3), phi_turn, phi_nn(2), &
                 phi_slip_norm, phi_x
     integer :: i
@@ -244,9 +248,9 @@ contains
         slip_norm = 0.0_dp
         g_slip_norm = 0.0_dp
       else
-        if (mu_p_o > 0.0_dp .and. .not. in_plane) &
-          call mean_direction_return(mat, o%tauf, mu_p_o, tr, mu_p, g_mu(1), chain, &
-                                     mean_direction, n_o, n_new, g_psi, phi_turn)
+        if (mean_o .and. .not. in_plane) &
+          call mean_direction_return(mat, n_o, tr, mu_p, g_mu(1), chain, mean_direction, n_new, &
+                                     g_psi, phi_turn)
         ! |tau_f| = mu p sliding, in either direction rule
         p%tauf_norm = mu_p
         if (mean_direction) then
@@ -348,9 +352,9 @@ contains
         tr(1) = mat%kt * (sl(2) - o%sf(1))
         tr(2) = mat%kt * (sl(3) - o%sf(2))
         trn = vector_norm(tr)
-        if (trn > 0.0_dp .and. mu_p_o > 0.0_dp .and. .not. in_plane) &
-          call mean_direction_return(mat, o%tauf, mu_p_o, tr, mu_p, g_mu(1), .false., &
-                                     mean_direction, n_o, n_new, g_psi, phi_turn)
+        if (trn > 0.0_dp .and. mean_o .and. .not. in_plane) &
+          call mean_direction_return(mat, n_o, tr, mu_p, g_mu(1), .false., mean_direction, n_new, &
+                                     g_psi, phi_turn)
         if (mean_direction) then
           ! and D14's direction where the plane slid at the start (the trapezoidal scheme):
           ! the slip (tau_tr - mu p n_new) / K_t, its values the free plane's
@@ -499,25 +503,22 @@ contains
   !> n_o + 2 a b n_o') / (a^2 + b^2), n_o' = n_o turned by +90 deg; closed form, no iteration
   !> (with b = 0, as in every 2D step, n_new = n_o to the bit). Its derivative: d n_new = 2
   !> d psi n_new', d psi = (a db - b da) / (a^2 + b^2), through tau_tr (K_t d s_kt) and mu p.
-  !> Applies (`ok`) where the plane slides at the start (slides_at_start) and the turn
-  !> 2 psi is at most 90 deg (a >= |b|); else radial return (a reversal turns by 180 deg).
-  !> The caller has |tau_tr| > mu p (sliding at the end).
-  pure subroutine mean_direction_return(mat, tauf_o, mu_p_o, tr, mu_p, g_mu1, chain, ok, n_o, &
-                                        n_new, g_psi, phi_turn)
+  !> Applies (`ok`) where the plane slides at the start (the caller's, start_direction) and
+  !> the turn 2 psi is at most 90 deg (a >= |b|); else radial return (a reversal turns by 180
+  !> deg). The caller has |tau_tr| > mu p (sliding at the end).
+  pure subroutine mean_direction_return(mat, n_o, tr, mu_p, g_mu1, chain, ok, n_new, g_psi, &
+                                        phi_turn)
     type(interlock_material_t), intent(in) :: mat
-    real(dp), intent(in) :: tauf_o(2), mu_p_o, tr(2), mu_p
+    real(dp), intent(in) :: n_o(2)   !< the start direction (start_direction)
+    real(dp), intent(in) :: tr(2), mu_p
     real(dp), intent(in) :: g_mu1   !< d(mu p) / d s_kn (its only entry)
     logical, intent(in) :: chain   !< phi_turn is wanted
     logical, intent(out) :: ok
-    !> n_o, n_new; d psi / d sl in g_psi (d n_new = 2 d psi n_new'); with `chain` the turn of
+    !> n_new; d psi / d sl in g_psi (d n_new = 2 d psi n_new'); with `chain` the turn of
     !> n_new's angle per turn of n_o's, d (phi_o + 2 psi) / d phi_o
-    real(dp), intent(out) :: n_o(2), n_new(2), g_psi(3), phi_turn
-    real(dp) :: t_norm, a, b, a2, b2, v2, m, scale_ab
+    real(dp), intent(out) :: n_new(2), g_psi(3), phi_turn
+    real(dp) :: a, b, a2, b2, v2, m, scale_ab
     ok = .false.
-    t_norm = vector_norm(tauf_o)
-    if (.not. slides_at_start(t_norm, mu_p_o)) return
-    n_o(1) = tauf_o(1) / t_norm
-    n_o(2) = tauf_o(2) / t_norm
     a = tr(1) * n_o(1) + tr(2) * n_o(2) + mu_p
     b = n_o(1) * tr(2) - n_o(2) * tr(1)
     if (.not. (a > 0.0_dp .and. a >= abs(b))) return
@@ -545,6 +546,26 @@ contains
     phi_turn = 0.0_dp
     if (chain) phi_turn = 2.0_dp * a * (mu_p / scale_ab) / v2 - 1.0_dp
   end subroutine mean_direction_return
+
+  !> D14's start: where a plane slides at the start of a step (slides_at_start with its start
+  !> friction traction tauf_o and the start state's mu p_o, interlock_plane_law's start_yield
+  !> with the start separation's dip component), `mean_o` and the start direction of slip n_o =
+  !> tauf_o / |tauf_o|; else not mean_o (radial return) and n_o = 0. A property of the start
+  !> state: taken once per step, not at each evaluation of a wear equation's iteration.
+  pure subroutine start_direction(tauf_o, mu_p_o, mean_o, n_o)
+    real(dp), intent(in) :: tauf_o(2), mu_p_o
+    logical, intent(out) :: mean_o
+    real(dp), intent(out) :: n_o(2)
+    real(dp) :: t_norm
+    mean_o = .false.
+    n_o = 0.0_dp
+    if (.not. mu_p_o > 0.0_dp) return
+    t_norm = vector_norm(tauf_o)
+    if (.not. slides_at_start(t_norm, mu_p_o)) return
+    mean_o = .true.
+    n_o(1) = tauf_o(1) / t_norm
+    n_o(2) = tauf_o(2) / t_norm
+  end subroutine start_direction
 
   !> A plane slides at the start of a step: its friction traction's magnitude |tauf_o| is
   !> mu p_o > 0, to a relative 1e-10 (the round-off between the stored friction traction and the

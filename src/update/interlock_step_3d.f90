@@ -21,7 +21,7 @@ module interlock_step_3d
   use interlock_plane_law, only: plane_frame, wear_weights, start_yield, trapezoidal_weight, &
       wear_angle_error, add_wear_error, wear_error_of
   use interlock_plane_law_3d, only: plane_start_3d_t, plane_law_3d_t, plane_law_3d_parts, &
-      plane_traction_3d, local_frame, contact_round_off, to_macro
+      plane_traction_3d, start_direction, local_frame, contact_round_off, to_macro
   implicit none
   private
   public :: plane_chain_t, step_3d, chain_bounded
@@ -266,9 +266,9 @@ contains
     !> repeated on every plane of every scheme (wear_root_begin sets it where an iteration
     !> starts; nothing else reads it)
     type(wear_root_t), intent(inout) :: rt
-    real(dp) :: c, sn, dip_o, mu_p_o, mu_p_law, a_w, g_slip, g_trap, drv, g_drv(3), thp, fp, &
-                rot(3, 3), dzeta(3), ksl(3), k_k(3, 3), tie
-    logical :: coupled, wears, trapezoidal, drivers, flat, terms, pinned
+    real(dp) :: c, sn, dip_o, mu_p_o, a_w, g_slip, g_trap, drv, g_drv(3), thp, fp, &
+                rot(3, 3), dzeta(3), ksl(3), k_k(3, 3), tie, n_o(2)
+    logical :: coupled, wears, trapezoidal, drivers, flat, terms, pinned, mean_o
     integer :: j, phase
 
     ok = .true.
@@ -293,7 +293,6 @@ contains
     call wear_weights(mat, solver%scheme, o%dmg, o%tauf(1), c_o, sn_o, s_o(1), dip_o, a_w, &
                       g_slip)
     mu_p_o = 0.0_dp
-    mu_p_law = 0.0_dp
     g_trap = 0.0_dp
     if (trapezoidal) then
       mu_p_o = start_yield(mat, c_o, sn_o, s_o(1), dip_o)
@@ -303,7 +302,10 @@ contains
       mu_p_o = start_yield(mat, c_o, sn_o, s_o(1), dip_o)
       g_trap = trapezoidal_weight(mat, o%dmg, c_o, sn_o, s_o(1), dip_o)
     end if
-    if (trapezoidal) mu_p_law = mu_p_o
+    ! D14's start direction of slip (the trapezoidal scheme; none in the plane (n, t1), where the
+    ! direction cannot turn)
+    mean_o = .false.
+    if (trapezoidal .and. ncol > 2) call start_direction(o%tauf, mu_p_o, mean_o, n_o)
 
     theta = o%theta
     zeta = o%zeta
@@ -324,7 +326,7 @@ contains
         call plane_frame(mat, k, theta, c, sn)
         flat = flat_frame(cp, sp, c, sn)
       end if
-      call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, terms, drivers, &
+      call evaluate(mat, cp, sp, s, o, mean_o, n_o, a_w, g_slip, trapezoidal, terms, drivers, &
                     chain, .not. (coupled .and. wears), ncol < 3, c, sn, flat, p, drv, g_drv, &
                     tie)
       if (.not. (coupled .and. wears)) exit
@@ -407,7 +409,7 @@ contains
         ! (the explicit scheme's law is evaluated once, at the start angle: its tie)
         if (.not. abs(p%sl(1)) > tie) &
           call chain_at_tie(mat, cp, sp, c, sn, o, jo, p, wears, a_w, g_slip, mu_p_o, &
-                            mu_p_law, thp, fp, s_o, h_start, h_end, ncol, k_k, jn)
+                            mean_o, n_o, thp, fp, s_o, h_start, h_end, ncol, k_k, jn)
       end if
       if (ncol > 2) then
         tangent = tangent + w * k_k
@@ -642,14 +644,16 @@ contains
   !> the plane law at s_kn = 0 on the open side (free, no friction traction), through
   !> chain_plane; the values are unchanged.
   pure subroutine chain_at_tie(mat, cp, sp, c, sn, o, jo, p, wears, a_w, g_slip, mu_p_o, &
-                               mu_p_law, thp, fp, s_o, h_start, h_end, ncol, k_k, jn)
+                               mean_o, n_o, thp, fp, s_o, h_start, h_end, ncol, k_k, jn)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: cp, sp, c, sn   !< the azimuth's frame, the (start) angle's
     type(plane_start_3d_t), intent(in) :: o
     type(plane_chain_t), intent(in) :: jo
     type(plane_law_3d_t), intent(in) :: p
     logical, intent(in) :: wears
-    real(dp), intent(in) :: a_w, g_slip, mu_p_o, mu_p_law, thp, fp, s_o(3), h_start, h_end
+    real(dp), intent(in) :: a_w, g_slip, mu_p_o, thp, fp, s_o(3), h_start, h_end
+    logical, intent(in) :: mean_o   !< D14 (plane_law_3d_parts), from the start direction n_o
+    real(dp), intent(in) :: n_o(2)
     integer, intent(in) :: ncol
     real(dp), intent(inout) :: k_k(3, 3)
     type(plane_chain_t), intent(inout) :: jn
@@ -663,7 +667,7 @@ contains
     ! (the open side's derivatives: the law at s_kn = 0 with a tie below it)
     sl = p%sl
     sl(1) = 0.0_dp
-    call plane_law_3d_parts(mat, sl, -1.0_dp, o, mu_p_law, wears, .true., .true., .false., &
+    call plane_law_3d_parts(mat, sl, -1.0_dp, o, mean_o, n_o, wears, .true., .true., .false., &
                             ncol < 3, q)
     g_drv = 0.0_dp
     if (wears) g_drv = a_w * q%g_wfric_dip + g_slip * q%g_slip_dip
@@ -713,11 +717,13 @@ contains
   !> wear_end + g_slip wear_start (trapezoidal: the dip component of D_o mu p_o n at the start);
   !> d G / d sl only with `drivers` (else 0). `terms`: the trapezoidal wear terms are wanted
   !> (plane_law_3d_parts; with `trapezoidal`).
-  pure subroutine evaluate(mat, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, terms, &
+  pure subroutine evaluate(mat, cp, sp, s, o, mean_o, n_o, a_end, g_slip, trapezoidal, terms, &
                            drivers, chain, traction, in_plane, c, sn, flat, p, drv, g_drv, &
                            tie)
     type(interlock_material_t), intent(in) :: mat
-    real(dp), intent(in) :: cp, sp, s(3), mu_p_o, a_end, g_slip, c, sn
+    real(dp), intent(in) :: cp, sp, s(3), a_end, g_slip, c, sn
+    logical, intent(in) :: mean_o   !< D14 (plane_law_3d_parts), from the start direction n_o
+    real(dp), intent(in) :: n_o(2)
     type(plane_start_3d_t), intent(in) :: o
     logical, intent(in) :: trapezoidal, terms, drivers, chain, traction
     logical, intent(in) :: in_plane   !< plane_law_3d_parts'
@@ -733,8 +739,8 @@ contains
     else
       call local_frame(cp, sp, c, sn, s, sl, tie)
     end if
-    call plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, traction, terms, in_plane, &
-                            p)
+    call plane_law_3d_parts(mat, sl, tie, o, mean_o, n_o, drivers, chain, traction, terms, &
+                            in_plane, p)
     if (trapezoidal) then
       drv = a_end * p%wear_end + g_slip * p%wear_start
       if (drivers) then
