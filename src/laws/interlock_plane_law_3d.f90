@@ -59,8 +59,8 @@ module interlock_plane_law_3d
     !> direction n at the end. Along a straight local path (radial return) |d sf_1| times the
     !> direction's dip share and wfric_dip.
     real(dp) :: wear_start, wear_end
-    !> their derivatives, where the caller asks for them (`drivers`; g_wfric_dip not where D14's
-    !> mean direction was taken, whose driver is wear_start and wear_end)
+    !> their derivatives, where the caller asks for them (`drivers`; g_slip_dip and g_wfric_dip
+    !> not where D14's mean direction was taken, whose driver is wear_start and wear_end)
     real(dp) :: g_slip_dip(3), g_wfric_dip(3), g_wear_start(3), g_wear_end(3)
     real(dp) :: pos, dpos    !< <s_kn>_+ and its slope (0 at the tie)
     real(dp) :: slip_norm    !< |d sf|, the slip of the step [mm]
@@ -157,7 +157,7 @@ contains
     real(dp) :: pos, dpos, tn, tn2, gd_n, gd_t, mu_p, g_mu(3), tr(2), trn, nv(2), g_nv(3, 2), &
                 n_new(2), g_psi(3), nt(2), dsf(2), g_dsf(3, 2), slip_norm, &
                 g_slip_norm(3), atau, g_atau(3), share, g_share(3), x, g_x(3), phi_turn, phi_nn(2), &
-                phi_slip_norm, phi_x
+                phi_slip_norm, phi_x, u(2), un, ut, sg
     integer :: i
     logical :: closed_at_zero, mean_direction, grows, open
 
@@ -278,15 +278,23 @@ contains
           atau = p%dmg * abs(p%tauf(1))
           p%wear_end = atau * x
           if (drivers) then
-            do i = 1, 2
-              g_dsf(:, i) = (0.0_dp - p%g_tauf(:, i)) * mat%inv_kt
-              g_dsf(1 + i, i) = (mat%kt - p%g_tauf(1 + i, i)) * mat%inv_kt
-            end do
-            g_slip_norm = norm_gradient(dsf, slip_norm, g_dsf)
-            p%g_slip_dip = sign_of(dsf(1)) * g_dsf(:, 1)
+            ! d|d sf| = u . d dsf along the slip's direction u = dsf / |d sf|, d dsf = d s_kt -
+            ! d tau_f / K_t: u . d tau_f = (u . n_new) d(mu p) + mu p (u . nt) d psi
+            g_slip_norm = 0.0_dp
+            if (slip_norm > 0.0_dp) then
+              u(1) = dsf(1) / slip_norm
+              u(2) = dsf(2) / slip_norm
+              un = (u(1) * n_new(1) + u(2) * n_new(2)) * mat%inv_kt
+              ut = (mu_p * (u(1) * nt(1) + u(2) * nt(2))) * mat%inv_kt
+              g_slip_norm(1) = -(un * g_mu(1) + ut * g_psi(1))
+              g_slip_norm(2) = u(1) - ut * g_psi(2)
+              g_slip_norm(3) = u(2) - ut * g_psi(3)
+            end if
             p%g_wear_start = g_slip_norm * (n_o(1) * n_o(1))
-            g_x = g_slip_norm * abs(n_new(1)) + slip_norm * sign_of(n_new(1)) * (nt(1) * g_psi)
-            g_atau = p%g_dmg * abs(p%tauf(1)) + p%dmg * sign_of(p%tauf(1)) * p%g_tauf(:, 1)
+            ! (tau_f,1 = mu p n_new,1: the sign of n_new,1)
+            sg = sign_of(n_new(1))
+            g_x = g_slip_norm * abs(n_new(1)) + (slip_norm * sg * nt(1)) * g_psi
+            g_atau = p%g_dmg * abs(p%tauf(1)) + (p%dmg * sg) * p%g_tauf(:, 1)
             p%g_wear_end = g_atau * x + atau * g_x
           end if
           if (chain) then
