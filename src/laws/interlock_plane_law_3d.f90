@@ -157,7 +157,7 @@ contains
     real(dp) :: pos, dpos, tn, tn2, gd_n, gd_t, mu_p, g_mu(3), tr(2), trn, nv(2), g_nv(3, 2), &
                 n_new(2), g_psi(3), nt(2), dsf(2), g_dsf(3, 2), slip_norm, &
                 g_slip_norm(3), atau, g_atau(3), share, g_share(3), x, g_x(3), phi_turn, phi_nn(2), &
-                phi_slip_norm, phi_x, u(2), un, ut, sg
+                phi_slip_norm, phi_x, u(2), cos_psi, sin_psi, un, ut, sg
     integer :: i
     logical :: closed_at_zero, mean_direction, grows, open
 
@@ -249,8 +249,8 @@ contains
         g_slip_norm = 0.0_dp
       else
         if (mean_o .and. .not. in_plane) &
-          call mean_direction_return(mat, n_o, tr, mu_p, g_mu(1), chain, mean_direction, n_new, &
-                                     g_psi, phi_turn)
+          call mean_direction_return(mat, n_o, tr, mu_p, g_mu(1), chain, drivers, mean_direction, &
+                                     n_new, g_psi, phi_turn, u, cos_psi, sin_psi)
         ! |tau_f| = mu p sliding, in either direction rule
         p%tauf_norm = mu_p
         if (mean_direction) then
@@ -278,18 +278,14 @@ contains
           atau = p%dmg * abs(p%tauf(1))
           p%wear_end = atau * x
           if (drivers) then
-            ! d|d sf| = u . d dsf along the slip's direction u = dsf / |d sf|, d dsf = d s_kt -
-            ! d tau_f / K_t: u . d tau_f = (u . n_new) d(mu p) + mu p (u . nt) d psi
-            g_slip_norm = 0.0_dp
-            if (slip_norm > 0.0_dp) then
-              u(1) = dsf(1) / slip_norm
-              u(2) = dsf(2) / slip_norm
-              un = (u(1) * n_new(1) + u(2) * n_new(2)) * mat%inv_kt
-              ut = (mu_p * (u(1) * nt(1) + u(2) * nt(2))) * mat%inv_kt
-              g_slip_norm(1) = -(un * g_mu(1) + ut * g_psi(1))
-              g_slip_norm(2) = u(1) - ut * g_psi(2)
-              g_slip_norm(3) = u(2) - ut * g_psi(3)
-            end if
+            ! d|d sf| = u . d dsf along the slip's direction, the mean direction u, d dsf = d s_kt
+            ! - d tau_f / K_t: u . d tau_f = (u . n_new) d(mu p) + mu p (u . nt) d psi, u . n_new
+            ! = cos psi, u . nt = -2 sin psi
+            un = cos_psi * mat%inv_kt
+            ut = (2.0_dp * mu_p * sin_psi) * mat%inv_kt
+            g_slip_norm(1) = -(un * g_mu(1) - ut * g_psi(1))
+            g_slip_norm(2) = u(1) + ut * g_psi(2)
+            g_slip_norm(3) = u(2) + ut * g_psi(3)
             p%g_wear_start = g_slip_norm * (n_o(1) * n_o(1))
             ! (tau_f,1 = mu p n_new,1: the sign of n_new,1)
             sg = sign_of(n_new(1))
@@ -361,8 +357,8 @@ contains
         tr(2) = mat%kt * (sl(3) - o%sf(2))
         trn = vector_norm(tr)
         if (trn > 0.0_dp .and. mean_o .and. .not. in_plane) &
-          call mean_direction_return(mat, n_o, tr, mu_p, g_mu(1), .false., mean_direction, n_new, &
-                                     g_psi, phi_turn)
+          call mean_direction_return(mat, n_o, tr, mu_p, g_mu(1), .false., .false., &
+                                     mean_direction, n_new, g_psi, phi_turn, u, cos_psi, sin_psi)
         if (mean_direction) then
           ! and D14's direction where the plane slid at the start (the trapezoidal scheme):
           ! the slip (tau_tr - mu p n_new) / K_t, its values the free plane's
@@ -514,18 +510,21 @@ contains
   !> Applies (`ok`) where the plane slides at the start (the caller's, start_direction) and
   !> the turn 2 psi is at most 90 deg (a >= |b|); else radial return (a reversal turns by 180
   !> deg). The caller has |tau_tr| > mu p (sliding at the end).
-  pure subroutine mean_direction_return(mat, n_o, tr, mu_p, g_mu1, chain, ok, n_new, g_psi, &
-                                        phi_turn)
+  pure subroutine mean_direction_return(mat, n_o, tr, mu_p, g_mu1, chain, drivers, ok, n_new, &
+                                        g_psi, phi_turn, u, cos_psi, sin_psi)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: n_o(2)   !< the start direction (start_direction)
     real(dp), intent(in) :: tr(2), mu_p
     real(dp), intent(in) :: g_mu1   !< d(mu p) / d s_kn (its only entry)
     logical, intent(in) :: chain   !< phi_turn is wanted
+    logical, intent(in) :: drivers   !< u, cos_psi and sin_psi are wanted
     logical, intent(out) :: ok
     !> n_new; d psi / d sl in g_psi (d n_new = 2 d psi n_new'); with `chain` the turn of
     !> n_new's angle per turn of n_o's, d (phi_o + 2 psi) / d phi_o
     real(dp), intent(out) :: n_new(2), g_psi(3), phi_turn
-    real(dp) :: a, b, a2, b2, v2, m, scale_ab
+    !> the mean direction u = v / |v| (the slip's) and (cos, sin)(psi) of its angle from n_o
+    real(dp), intent(out) :: u(2), cos_psi, sin_psi
+    real(dp) :: a, b, a2, b2, v2, m, scale_ab, v_norm, inv_v2
     ok = .false.
     a = tr(1) * n_o(1) + tr(2) * n_o(2) + mu_p
     b = n_o(1) * tr(2) - n_o(2) * tr(1)
@@ -546,9 +545,17 @@ contains
     n_new(1) = ((a2 - b2) * n_o(1) - (2.0_dp * a * b) * n_o(2)) / v2
     n_new(2) = ((a2 - b2) * n_o(2) + (2.0_dp * a * b) * n_o(1)) / v2
     ! da = d(mu p) + K_t n_o . d s_kt, db = K_t n_o x d s_kt (no s_kn entry)
-    g_psi(1) = (0.0_dp - b * g_mu1) / (v2 * scale_ab)
-    g_psi(2) = (a * (mat%kt * (0.0_dp - n_o(2))) - b * (mat%kt * n_o(1))) / (v2 * scale_ab)
-    g_psi(3) = (a * (mat%kt * n_o(1)) - b * (mat%kt * n_o(2))) / (v2 * scale_ab)
+    inv_v2 = 1.0_dp / (v2 * scale_ab)
+    g_psi(1) = (0.0_dp - b * g_mu1) * inv_v2
+    g_psi(2) = (a * (mat%kt * (0.0_dp - n_o(2))) - b * (mat%kt * n_o(1))) * inv_v2
+    g_psi(3) = (a * (mat%kt * n_o(1)) - b * (mat%kt * n_o(2))) * inv_v2
+    if (drivers) then
+      v_norm = sqrt(v2)
+      cos_psi = a / v_norm
+      sin_psi = b / v_norm
+      u(1) = cos_psi * n_o(1) - sin_psi * n_o(2)
+      u(2) = cos_psi * n_o(2) + sin_psi * n_o(1)
+    end if
     ! turning n_o by d phi_o: da = b d phi_o, db = -(a - mu p) d phi_o, so n_new's angle
     ! phi_o + 2 psi turns by (2 a mu p / (a^2 + b^2) - 1) d phi_o
     phi_turn = 0.0_dp
