@@ -419,16 +419,16 @@ contains
       end if
     else
       if (coupled .and. wears) then
-        ! d zeta / d s = (dG / d s) / F' at the root, d theta / d s = theta' d zeta / d s
-        rot = frame_rows(cp, sp, c, sn)
-        do j = 1, 3
-          if (pinned) then
+        ! d zeta / d s = (dG / d s) / F' at the root, d theta / d s = theta' d zeta / d s; dG /
+        ! d s = R^T dG / d sl (R's rows m, e, q: to_macro)
+        if (pinned) then
+          rot = frame_rows(cp, sp, c, sn)
+          do j = 1, 3
             dzeta(j) = -rot(1, j) / p%sl(2)
-          else
-            dzeta(j) = (g_drv(1) * rot(1, j) + g_drv(2) * rot(2, j) + g_drv(3) * rot(3, j)) * &
-                       (thp / fp)
-          end if
-        end do
+          end do
+        else
+          dzeta = to_macro(cp, sp, c, sn, g_drv) * (thp / fp)
+        end if
       else
         dzeta = 0.0_dp
       end if
@@ -751,7 +751,14 @@ contains
       end if
     else
       drv = a_end * p%wfric_dip + g_slip * p%slip_dip
-      if (drivers) g_drv = a_end * p%g_wfric_dip + g_slip * p%g_slip_dip
+      if (drivers) then
+        ! (the implicit scheme has no start weight: g_slip = 0)
+        if (g_slip > 0.0_dp) then
+          g_drv = a_end * p%g_wfric_dip + g_slip * p%g_slip_dip
+        else
+          g_drv = a_end * p%g_wfric_dip
+        end if
+      end if
     end if
     if (.not. drivers) g_drv = 0.0_dp
   end subroutine evaluate
