@@ -277,8 +277,6 @@ contains
     thp = 0.0_dp
     coupled = solver%scheme /= scheme_explicit
     trapezoidal = solver%scheme == scheme_trapezoidal
-    ! (the trapezoidal wear terms: its driver, and the coupled schemes' error estimate)
-    terms = trapezoidal .or. (estimate .and. coupled)
     wears = mat%plane_wears(k)
     drivers = wears .and. (coupled .or. chain)
     ! The scheme's wear weights (wear_weights of the 2D law, with the dip component of the
@@ -306,6 +304,11 @@ contains
     ! direction cannot turn)
     mean_o = .false.
     if (trapezoidal .and. ncol > 2) call start_direction(o%tauf, mu_p_o, mean_o, n_o)
+    ! The trapezoidal wear terms: its driver where it has a start term (a start weight, or D14's
+    ! direction), the chain's, and the coupled schemes' error estimate; without them the
+    ! trapezoidal driver is a_w D |tau_f,1| |d sf_1| (evaluate).
+    terms = (trapezoidal .and. (g_slip > 0.0_dp .or. mean_o .or. chain)) .or. &
+            (estimate .and. coupled)
 
     theta = o%theta
     zeta = o%zeta
@@ -716,7 +719,8 @@ contains
   !> d G / d sl: a_end D |tau_f,1| |d sf_1| + g_slip |d sf_1| (explicit, implicit), a_end
   !> wear_end + g_slip wear_start (trapezoidal: the dip component of D_o mu p_o n at the start);
   !> d G / d sl only with `drivers` (else 0). `terms`: the trapezoidal wear terms are wanted
-  !> (plane_law_3d_parts; with `trapezoidal`).
+  !> (plane_law_3d_parts; with `trapezoidal`, where D14's direction was taken or g_slip > 0:
+  !> without them a trapezoidal driver is the implicit one's form, g_slip = 0 and no D14).
   pure subroutine evaluate(mat, cp, sp, s, o, mean_o, n_o, a_end, g_slip, trapezoidal, terms, &
                            drivers, chain, traction, in_plane, c, sn, flat, p, drv, g_drv, &
                            tie)
@@ -741,7 +745,7 @@ contains
     end if
     call plane_law_3d_parts(mat, sl, tie, o, mean_o, n_o, drivers, chain, traction, terms, &
                             in_plane, p)
-    if (trapezoidal) then
+    if (trapezoidal .and. terms) then
       drv = a_end * p%wear_end + g_slip * p%wear_start
       if (drivers) then
         ! (in the plane (n, t1) the s_kt2 entry is not wanted)
