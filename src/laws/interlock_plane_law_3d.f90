@@ -290,7 +290,8 @@ contains
             ! (tau_f,1 = mu p n_new,1: the sign of n_new,1)
             sg = sign_of(n_new(1))
             g_x = g_slip_norm * abs(n_new(1)) + (slip_norm * sg * nt(1)) * g_psi
-            g_atau = p%g_dmg * abs(p%tauf(1)) + (p%dmg * sg) * p%g_tauf(:, 1)
+            g_atau = (p%dmg * sg) * p%g_tauf(:, 1)
+            if (grows) g_atau = p%g_dmg * abs(p%tauf(1)) + g_atau
             p%g_wear_end = g_atau * x + atau * g_x
           end if
           if (chain) then
