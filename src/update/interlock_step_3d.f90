@@ -267,9 +267,9 @@ contains
     !> starts; nothing else reads it)
     type(wear_root_t), intent(inout) :: rt
     real(dp) :: c, sn, dip_o, mu_p_o, a_w, g_slip, g_trap, drv, g_drv(3), thp, fp, &
-                rot(3, 3), dzeta(3), ksl(3), k_k(3, 3), tie, n_o(2)
-    logical :: coupled, wears, trapezoidal, drivers, flat, terms, pinned, mean_o
-    integer :: j, phase
+                ksl(3), dtheta_sl(3), k_k(3, 3), tie, n_o(2)
+    logical :: coupled, wears, trapezoidal, drivers, flat, terms, pinned, mean_o, angle
+    integer :: phase
 
     ok = .true.
     iterations = 0
@@ -394,14 +394,18 @@ contains
     else
       sig_k = to_macro(cp, sp, c, sn, p%sig_loc)
     end if
-    if (wears .and. (coupled .or. chain .or. estimate)) then
+    angle = coupled .and. wears .and. .not. chain
+    if (wears .and. (angle .or. estimate)) then
       ! d sig_k / d theta at fixed s = sigma_kn e - sigma_kt1 m + R^T K_loc d sl / d theta
+      ! (ksl: in the plane's frame)
       ksl = p%k_loc(:, 1) * p%sl(2) - p%k_loc(:, 2) * p%sl(1)
       ksl(1) = ksl(1) - p%sig_loc(2)
       ksl(2) = ksl(2) + p%sig_loc(1)
-      dsig_dtheta = to_macro(cp, sp, c, sn, ksl)
+      dsig_dtheta = 0.0_dp
+      if (estimate) dsig_dtheta = to_macro(cp, sp, c, sn, ksl)
     else
       ! (0 where the angle does not move; read by the error estimate alone)
+      ksl = 0.0_dp
       dsig_dtheta = 0.0_dp
     end if
     if (chain) then
@@ -421,23 +425,22 @@ contains
         tangent(1:2, 1:2) = tangent(1:2, 1:2) + w * k_k(1:2, 1:2)
       end if
     else
-      if (coupled .and. wears) then
-        ! d zeta / d s = (dG / d s) / F' at the root, d theta / d s = theta' d zeta / d s; dG /
-        ! d s = R^T dG / d sl (R's rows m, e, q: to_macro)
+      if (angle) then
+        ! d zeta / d s = (dG / d s) / F' at the root, d theta / d s = theta' d zeta / d s, dG /
+        ! d s = R^T dG / d sl: d theta / d s = R^T dtheta_sl in the plane's frame (pinned: -m /
+        ! s_kt1, R^T (-1, 0, 0) / s_kt1)
         if (pinned) then
-          rot = frame_rows(cp, sp, c, sn)
-          do j = 1, 3
-            dzeta(j) = -rot(1, j) / p%sl(2)
-          end do
+          dtheta_sl = 0.0_dp
+          dtheta_sl(1) = -1.0_dp / p%sl(2)
         else
-          dzeta = to_macro(cp, sp, c, sn, g_drv) * (thp / fp)
+          dtheta_sl = g_drv * (thp / fp)
         end if
       else
-        dzeta = 0.0_dp
+        dtheta_sl = 0.0_dp
       end if
-      ! (K_loc's normal row: plane_traction_3d)
-      call add_turned(cp, sp, c, sn, flat, p%k_loc, .not. p%dmg_grows, coupled .and. wears, &
-                      dsig_dtheta, dzeta, w, tangent)
+      ! (K_loc's normal row: plane_traction_3d; the angle's term fills it)
+      call add_turned(cp, sp, c, sn, flat, p%k_loc, .not. (p%dmg_grows .or. angle), angle, &
+                      ksl, dtheta_sl, w, tangent)
     end if
 
     if (estimate .and. wears) then
@@ -784,8 +787,9 @@ contains
     rot(3, :) = [0.0_dp, -sp, cp]
   end function frame_rows
 
-  !> tangent += w k_k for the plane's derivative at fixed angle R^T K_loc R, plus u (x) v
-  !> where `angle` (the angle's term d sig_k / d theta (x) d theta / d s), with R = d sl / d s
+  !> tangent += w R^T (K_loc + u (x) v) R, the plane's derivative at fixed angle and, where
+  !> `angle`, the angle's term d sig_k / d theta (x) d theta / d s = R^T (u (x) v) R with u = d
+  !> sig_loc / d theta, v = d theta / d sl in the plane's frame, with R = d sl / d s
   !> (rows m, e, q) = B A: B turns by theta in (n, d) (to_macro's first rotation), A by the
   !> azimuth in (t1, t2); each turns both sides in one plane of the frame, the columns
   !> (B^T K_loc), then the rows ((B^T K_loc) B); the azimuth's only where phi /= 0, none for a
@@ -810,6 +814,17 @@ contains
     a13 = k_loc(1, 3)
     a23 = k_loc(2, 3)
     a33 = k_loc(3, 3)
+    if (angle) then
+      a11 = a11 + u(1) * v(1)
+      a21 = a21 + u(2) * v(1)
+      a31 = a31 + u(3) * v(1)
+      a12 = a12 + u(1) * v(2)
+      a22 = a22 + u(2) * v(2)
+      a32 = a32 + u(3) * v(2)
+      a13 = a13 + u(1) * v(3)
+      a23 = a23 + u(2) * v(3)
+      a33 = a33 + u(3) * v(3)
+    end if
     if (.not. flat) then
       ! by theta in the plane of the indices 1 and 2: each column's pair, then each row's
       call turn_pair(c, sn, a11, a21)
@@ -835,17 +850,6 @@ contains
         call turn_pair(cp, sp, a22, a23)
         call turn_pair(cp, sp, a32, a33)
       end if
-    end if
-    if (angle) then
-      a11 = a11 + u(1) * v(1)
-      a21 = a21 + u(2) * v(1)
-      a31 = a31 + u(3) * v(1)
-      a12 = a12 + u(1) * v(2)
-      a22 = a22 + u(2) * v(2)
-      a32 = a32 + u(3) * v(2)
-      a13 = a13 + u(1) * v(3)
-      a23 = a23 + u(2) * v(3)
-      a33 = a33 + u(3) * v(3)
     end if
     tangent(1, 1) = tangent(1, 1) + w * a11
     tangent(2, 1) = tangent(2, 1) + w * a21
