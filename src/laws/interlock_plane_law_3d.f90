@@ -525,7 +525,7 @@ contains
     real(dp), intent(out) :: n_new(2), g_psi(3), phi_turn
     !> the mean direction u = v / |v| (the slip's) and (cos, sin)(psi) of its angle from n_o
     real(dp), intent(out) :: u(2), cos_psi, sin_psi
-    real(dp) :: a, b, a2, b2, v2, m, scale_ab, v_norm, inv_v2
+    real(dp) :: a, b, a2, b2, v2, m, scale_ab, inv_norm, inv_v2, va(2)
     ok = .false.
     a = tr(1) * n_o(1) + tr(2) * n_o(2) + mu_p
     b = n_o(1) * tr(2) - n_o(2) * tr(1)
@@ -545,17 +545,21 @@ contains
     v2 = a2 + b2
     n_new(1) = ((a2 - b2) * n_o(1) - (2.0_dp * a * b) * n_o(2)) / v2
     n_new(2) = ((a2 - b2) * n_o(2) + (2.0_dp * a * b) * n_o(1)) / v2
-    ! da = d(mu p) + K_t n_o . d s_kt, db = K_t n_o x d s_kt (no s_kn entry)
+    ! da = d(mu p) + K_t n_o . d s_kt, db = K_t n_o x d s_kt (no s_kn entry), so that d psi =
+    ! (a db - b da) / |v|^2 = (K_t (-v_2, v_1) . d s_kt - b d(mu p)) / |v|^2 with v = a n_o +
+    ! b n_o' in the frame (e, q) (va; the slip's direction u = v / |v|)
+    va(1) = a * n_o(1) - b * n_o(2)
+    va(2) = a * n_o(2) + b * n_o(1)
     inv_v2 = 1.0_dp / (v2 * scale_ab)
     g_psi(1) = (0.0_dp - b * g_mu1) * inv_v2
-    g_psi(2) = (a * (mat%kt * (0.0_dp - n_o(2))) - b * (mat%kt * n_o(1))) * inv_v2
-    g_psi(3) = (a * (mat%kt * n_o(1)) - b * (mat%kt * n_o(2))) * inv_v2
+    g_psi(2) = (0.0_dp - va(2)) * (mat%kt * inv_v2)
+    g_psi(3) = va(1) * (mat%kt * inv_v2)
     if (drivers) then
-      v_norm = sqrt(v2)
-      cos_psi = a / v_norm
-      sin_psi = b / v_norm
-      u(1) = cos_psi * n_o(1) - sin_psi * n_o(2)
-      u(2) = cos_psi * n_o(2) + sin_psi * n_o(1)
+      inv_norm = 1.0_dp / sqrt(v2)
+      cos_psi = a * inv_norm
+      sin_psi = b * inv_norm
+      u(1) = va(1) * inv_norm
+      u(2) = va(2) * inv_norm
     end if
     ! turning n_o by d phi_o: da = b d phi_o, db = -(a - mu p) d phi_o, so n_new's angle
     ! phi_o + 2 psi turns by (2 a mu p / (a^2 + b^2) - 1) d phi_o
