@@ -21,7 +21,8 @@ module interlock_plane_law_3d
   implicit none
   private
   public :: plane_start_3d_t, plane_law_3d_t, plane_law_3d, plane_law_3d_parts, &
-            plane_traction_3d, slides_at_start, local_frame, contact_round_off, to_macro
+            plane_traction_3d, slides_at_start, start_direction, local_frame, contact_round_off, &
+            to_macro
 
   !> One plane's state at the start of a step (SPEC section 9: D, beta, sf(2), zeta, theta,
   !> tauf(2); vectors in the plane's (e, q) frame).
@@ -58,8 +59,8 @@ module interlock_plane_law_3d
     !> direction n at the end. Along a straight local path (radial return) |d sf_1| times the
     !> direction's dip share and wfric_dip.
     real(dp) :: wear_start, wear_end
-    !> their derivatives, where the caller asks for them (`drivers`; g_wfric_dip not where D14's
-    !> mean direction was taken, whose driver is wear_start and wear_end)
+    !> their derivatives, where the caller asks for them (`drivers`; g_slip_dip and g_wfric_dip
+    !> not where D14's mean direction was taken, whose driver is wear_start and wear_end)
     real(dp) :: g_slip_dip(3), g_wfric_dip(3), g_wear_start(3), g_wear_end(3)
     real(dp) :: pos, dpos    !< <s_kn>_+ and its slope (0 at the tie)
     real(dp) :: slip_norm    !< |d sf|, the slip of the step [mm]
@@ -120,39 +121,43 @@ contains
     type(plane_start_3d_t), intent(in) :: o
     logical, intent(in) :: drivers, chain
     type(plane_law_3d_t), intent(out) :: p
+    real(dp) :: n_o(2)
+    logical :: mean_o
+    call start_direction(o%tauf, mu_p_o, mean_o, n_o)
     if (present(tie)) then
-      call plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, .true., .true., .false., &
-                              p)
+      call plane_law_3d_parts(mat, sl, tie, o, mean_o, n_o, drivers, chain, .true., .true., &
+                              .false., p)
     else
-      call plane_law_3d_parts(mat, sl, 0.0_dp, o, mu_p_o, drivers, chain, .true., .true., .false., &
-                              p)
+      call plane_law_3d_parts(mat, sl, 0.0_dp, o, mean_o, n_o, drivers, chain, .true., .true., &
+                              .false., p)
     end if
   end subroutine plane_law_3d
 
   !> plane_law_3d: s_kn up to tie (contact_round_off) is closed for every derivative.
   !> `traction` false: damage, friction and the wear drivers alone (what a wear equation's
-  !> iteration needs), plane_traction_3d gives the rest. mu_p_o: the start state's mu p
-  !> (interlock_plane_law's start_yield with the start separation's dip component) where the
-  !> slip direction follows D14's mean-direction rule (the trapezoidal scheme), 0 for radial
-  !> return alone. `drivers`: the derivatives of the wear drivers are wanted (a scheme whose
-  !> angle is coupled to the end of the step, on a plane that wears). `trapezoidal_terms`: the
-  !> trapezoidal scheme's wear terms wear_start and wear_end are wanted (true where mu_p_o > 0;
+  !> iteration needs), plane_traction_3d gives the rest. `mean_o`: the slip direction follows
+  !> D14's mean-direction rule (the trapezoidal scheme) from the start direction of slip n_o
+  !> (start_direction: the plane slides at the start; n_o is not read where mean_o is false,
+  !> radial return alone). `drivers`: the derivatives of the wear drivers are wanted (a scheme
+  !> whose angle is coupled to the end of the step, on a plane that wears). `trapezoidal_terms`:
+  !> the trapezoidal scheme's wear terms wear_start and wear_end are wanted (true with mean_o;
   !> else they are not set, nor the slip of a free plane's step, which its energies do not need:
   !> slip_norm 0 there). `in_plane`: the strike components vanish (s_kt2 = 0, sf_o,2 = tauf_o,2
   !> = 0) and only the derivatives of the (s_kn, s_kt1) components with respect to (s_kn, s_kt1)
   !> are wanted (the others' are left 0 or as they come): the slip is along the dip (D14's mean
   !> direction is the start direction, tau_tr's: radial return gives its values), |tau_tr| =
   !> |tau_tr,1|, no projector.
-  pure subroutine plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, traction, &
+  pure subroutine plane_law_3d_parts(mat, sl, tie, o, mean_o, n_o, drivers, chain, traction, &
                                      trapezoidal_terms, in_plane, p)
     type(interlock_material_t), intent(in) :: mat
-    real(dp), intent(in) :: sl(3), tie, mu_p_o
+    real(dp), intent(in) :: sl(3), tie, n_o(2)
     type(plane_start_3d_t), intent(in) :: o
-    logical, intent(in) :: drivers, chain, traction, trapezoidal_terms, in_plane
+    logical, intent(in) :: mean_o, drivers, chain, traction, trapezoidal_terms, in_plane
     type(plane_law_3d_t), intent(out) :: p
     real(dp) :: pos, dpos, tn, tn2, gd_n, gd_t, mu_p, g_mu(3), tr(2), trn, nv(2), g_nv(3, 2), &
-                n_o(2), n_new(2), g_nn(3, 2), dsf(2), g_dsf(3, 2), slip_norm, g_slip_norm(3), &
-                atau, g_atau(3), share, g_share(3), x, g_x(3), phi_nn(2), phi_slip_norm, phi_x
+                n_new(2), g_psi(3), nt(2), dsf(2), g_dsf(3, 2), slip_norm, &
+                g_slip_norm(3), atau, g_atau(3), share, g_share(3), x, g_x(3), phi_turn, phi_nn(2), &
+                phi_slip_norm, phi_x, u(2), cos_psi, sin_psi, un, ut, sg
     integer :: i
     logical :: closed_at_zero, mean_direction, grows, open
 
@@ -243,17 +248,23 @@ contains
         slip_norm = 0.0_dp
         g_slip_norm = 0.0_dp
       else
-        if (mu_p_o > 0.0_dp .and. .not. in_plane) &
-          call mean_direction_return(mat, o%tauf, mu_p_o, tr, mu_p, g_mu, mean_direction, n_o, &
-                                     n_new, g_nn, phi_nn)
+        if (mean_o .and. .not. in_plane) &
+          call mean_direction_return(mat, n_o, tr, mu_p, g_mu(1), chain, drivers, mean_direction, &
+                                     n_new, g_psi, phi_turn, u, cos_psi, sin_psi)
         ! |tau_f| = mu p sliding, in either direction rule
         p%tauf_norm = mu_p
         if (mean_direction) then
           ! D14: the slip increment along the mean of the start and end directions, |tau_f| =
           ! mu p along n_new; the slip of the step is what the trial traction exceeds it by.
+          ! (d n_new(i) = nt(i) d psi, nt = 2 n_new turned by +90 deg; mu p has an s_kn entry
+          ! alone)
+          nt(1) = -2.0_dp * n_new(2)
+          nt(2) = 2.0_dp * n_new(1)
           do i = 1, 2
             p%tauf(i) = mu_p * n_new(i)
-            p%g_tauf(:, i) = n_new(i) * g_mu + mu_p * g_nn(:, i)
+            p%g_tauf(1, i) = n_new(i) * g_mu(1) + mu_p * (nt(i) * g_psi(1))
+            p%g_tauf(2, i) = mu_p * (nt(i) * g_psi(2))
+            p%g_tauf(3, i) = mu_p * (nt(i) * g_psi(3))
             dsf(i) = (tr(i) - p%tauf(i)) * mat%inv_kt
             p%sf(i) = sl(1 + i) - p%tauf(i) * mat%inv_kt
             if (chain) p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
@@ -267,20 +278,27 @@ contains
           atau = p%dmg * abs(p%tauf(1))
           p%wear_end = atau * x
           if (drivers) then
-            do i = 1, 2
-              g_dsf(:, i) = (0.0_dp - p%g_tauf(:, i)) * mat%inv_kt
-              g_dsf(1 + i, i) = (mat%kt - p%g_tauf(1 + i, i)) * mat%inv_kt
-            end do
-            g_slip_norm = norm_gradient(dsf, slip_norm, g_dsf)
-            p%g_slip_dip = sign_of(dsf(1)) * g_dsf(:, 1)
+            ! d|d sf| = u . d dsf along the slip's direction, the mean direction u, d dsf = d s_kt
+            ! - d tau_f / K_t: u . d tau_f = (u . n_new) d(mu p) + mu p (u . nt) d psi, u . n_new
+            ! = cos psi, u . nt = -2 sin psi
+            un = cos_psi * mat%inv_kt
+            ut = (2.0_dp * mu_p * sin_psi) * mat%inv_kt
+            g_slip_norm(1) = -(un * g_mu(1) - ut * g_psi(1))
+            g_slip_norm(2) = u(1) + ut * g_psi(2)
+            g_slip_norm(3) = u(2) + ut * g_psi(3)
             p%g_wear_start = g_slip_norm * (n_o(1) * n_o(1))
-            g_x = g_slip_norm * abs(n_new(1)) + slip_norm * sign_of(n_new(1)) * g_nn(:, 1)
-            g_atau = p%g_dmg * abs(p%tauf(1)) + p%dmg * sign_of(p%tauf(1)) * p%g_tauf(:, 1)
+            ! (tau_f,1 = mu p n_new,1: the sign of n_new,1)
+            sg = sign_of(n_new(1))
+            g_x = g_slip_norm * abs(n_new(1)) + (slip_norm * sg * nt(1)) * g_psi
+            g_atau = (p%dmg * sg) * p%g_tauf(:, 1)
+            if (grows) g_atau = p%g_dmg * abs(p%tauf(1)) + g_atau
             p%g_wear_end = g_atau * x + atau * g_x
           end if
           if (chain) then
             ! d / d phi_o: n_new turns with n_o (phi_nn), the slip dsf = (tau_tr - tau_f) / K_t
             p%mean = .true.
+            phi_nn(1) = -n_new(2) * phi_turn
+            phi_nn(2) = n_new(1) * phi_turn
             p%phi_tauf = mu_p * phi_nn
             p%phi_sf = -p%phi_tauf * mat%inv_kt
             phi_slip_norm = 0.0_dp
@@ -339,9 +357,9 @@ contains
         tr(1) = mat%kt * (sl(2) - o%sf(1))
         tr(2) = mat%kt * (sl(3) - o%sf(2))
         trn = vector_norm(tr)
-        if (trn > 0.0_dp .and. mu_p_o > 0.0_dp .and. .not. in_plane) &
-          call mean_direction_return(mat, o%tauf, mu_p_o, tr, mu_p, g_mu, mean_direction, n_o, &
-                                     n_new, g_nn, phi_nn)
+        if (trn > 0.0_dp .and. mean_o .and. .not. in_plane) &
+          call mean_direction_return(mat, n_o, tr, mu_p, g_mu(1), .false., .false., &
+                                     mean_direction, n_new, g_psi, phi_turn, u, cos_psi, sin_psi)
         if (mean_direction) then
           ! and D14's direction where the plane slid at the start (the trapezoidal scheme):
           ! the slip (tau_tr - mu p n_new) / K_t, its values the free plane's
@@ -490,21 +508,25 @@ contains
   !> n_o + 2 a b n_o') / (a^2 + b^2), n_o' = n_o turned by +90 deg; closed form, no iteration
   !> (with b = 0, as in every 2D step, n_new = n_o to the bit). Its derivative: d n_new = 2
   !> d psi n_new', d psi = (a db - b da) / (a^2 + b^2), through tau_tr (K_t d s_kt) and mu p.
-  !> Applies (`ok`) where the plane slides at the start (slides_at_start) and the turn
-  !> 2 psi is at most 90 deg (a >= |b|); else radial return (a reversal turns by 180 deg).
-  !> The caller has |tau_tr| > mu p (sliding at the end).
-  pure subroutine mean_direction_return(mat, tauf_o, mu_p_o, tr, mu_p, g_mu, ok, n_o, n_new, &
-                                        g_nn, phi_nn)
+  !> Applies (`ok`) where the plane slides at the start (the caller's, start_direction) and
+  !> the turn 2 psi is at most 90 deg (a >= |b|); else radial return (a reversal turns by 180
+  !> deg). The caller has |tau_tr| > mu p (sliding at the end).
+  pure subroutine mean_direction_return(mat, n_o, tr, mu_p, g_mu1, chain, drivers, ok, n_new, &
+                                        g_psi, phi_turn, u, cos_psi, sin_psi)
     type(interlock_material_t), intent(in) :: mat
-    real(dp), intent(in) :: tauf_o(2), mu_p_o, tr(2), mu_p, g_mu(3)
+    real(dp), intent(in) :: n_o(2)   !< the start direction (start_direction)
+    real(dp), intent(in) :: tr(2), mu_p
+    real(dp), intent(in) :: g_mu1   !< d(mu p) / d s_kn (its only entry)
+    logical, intent(in) :: chain   !< phi_turn is wanted
+    logical, intent(in) :: drivers   !< u, cos_psi and sin_psi are wanted
     logical, intent(out) :: ok
-    real(dp), intent(out) :: n_o(2), n_new(2), g_nn(3, 2), phi_nn(2)
-    real(dp) :: t_norm, a, b, a2, b2, v2, m, scale_ab, g_a(3), g_b(3), g_psi(3)
+    !> n_new; d psi / d sl in g_psi (d n_new = 2 d psi n_new'); with `chain` the turn of
+    !> n_new's angle per turn of n_o's, d (phi_o + 2 psi) / d phi_o
+    real(dp), intent(out) :: n_new(2), g_psi(3), phi_turn
+    !> the mean direction u = v / |v| (the slip's) and (cos, sin)(psi) of its angle from n_o
+    real(dp), intent(out) :: u(2), cos_psi, sin_psi
+    real(dp) :: a, b, a2, b2, v2, m, scale_ab, inv_norm, inv_v2, va(2)
     ok = .false.
-    t_norm = vector_norm(tauf_o)
-    if (.not. slides_at_start(t_norm, mu_p_o)) return
-    n_o(1) = tauf_o(1) / t_norm
-    n_o(2) = tauf_o(2) / t_norm
     a = tr(1) * n_o(1) + tr(2) * n_o(2) + mu_p
     b = n_o(1) * tr(2) - n_o(2) * tr(1)
     if (.not. (a > 0.0_dp .and. a >= abs(b))) return
@@ -523,21 +545,47 @@ contains
     v2 = a2 + b2
     n_new(1) = ((a2 - b2) * n_o(1) - (2.0_dp * a * b) * n_o(2)) / v2
     n_new(2) = ((a2 - b2) * n_o(2) + (2.0_dp * a * b) * n_o(1)) / v2
-    ! (K_t d s_kt . n_o and n_o x K_t d s_kt: no s_kn entry)
-    g_a(1) = g_mu(1)
-    g_a(2) = mat%kt * n_o(1) + g_mu(2)
-    g_a(3) = mat%kt * n_o(2) + g_mu(3)
-    g_b(1) = 0.0_dp
-    g_b(2) = mat%kt * (0.0_dp - n_o(2))
-    g_b(3) = mat%kt * n_o(1)
-    g_psi = (a * g_b - b * g_a) / (v2 * scale_ab)
-    g_nn(:, 1) = -2.0_dp * n_new(2) * g_psi
-    g_nn(:, 2) = 2.0_dp * n_new(1) * g_psi
+    ! da = d(mu p) + K_t n_o . d s_kt, db = K_t n_o x d s_kt (no s_kn entry), so that d psi =
+    ! (a db - b da) / |v|^2 = (K_t (-v_2, v_1) . d s_kt - b d(mu p)) / |v|^2 with v = a n_o +
+    ! b n_o' in the frame (e, q) (va; the slip's direction u = v / |v|)
+    va(1) = a * n_o(1) - b * n_o(2)
+    va(2) = a * n_o(2) + b * n_o(1)
+    inv_v2 = 1.0_dp / (v2 * scale_ab)
+    g_psi(1) = (0.0_dp - b * g_mu1) * inv_v2
+    g_psi(2) = (0.0_dp - va(2)) * (mat%kt * inv_v2)
+    g_psi(3) = va(1) * (mat%kt * inv_v2)
+    if (drivers) then
+      inv_norm = 1.0_dp / sqrt(v2)
+      cos_psi = a * inv_norm
+      sin_psi = b * inv_norm
+      u(1) = va(1) * inv_norm
+      u(2) = va(2) * inv_norm
+    end if
     ! turning n_o by d phi_o: da = b d phi_o, db = -(a - mu p) d phi_o, so n_new's angle
     ! phi_o + 2 psi turns by (2 a mu p / (a^2 + b^2) - 1) d phi_o
-    phi_nn(1) = -n_new(2) * (2.0_dp * a * (mu_p / scale_ab) / v2 - 1.0_dp)
-    phi_nn(2) = n_new(1) * (2.0_dp * a * (mu_p / scale_ab) / v2 - 1.0_dp)
+    phi_turn = 0.0_dp
+    if (chain) phi_turn = 2.0_dp * a * (mu_p / scale_ab) / v2 - 1.0_dp
   end subroutine mean_direction_return
+
+  !> D14's start: where a plane slides at the start of a step (slides_at_start with its start
+  !> friction traction tauf_o and the start state's mu p_o, interlock_plane_law's start_yield
+  !> with the start separation's dip component), `mean_o` and the start direction of slip n_o =
+  !> tauf_o / |tauf_o|; else not mean_o (radial return) and n_o = 0. A property of the start
+  !> state: taken once per step, not at each evaluation of a wear equation's iteration.
+  pure subroutine start_direction(tauf_o, mu_p_o, mean_o, n_o)
+    real(dp), intent(in) :: tauf_o(2), mu_p_o
+    logical, intent(out) :: mean_o
+    real(dp), intent(out) :: n_o(2)
+    real(dp) :: t_norm
+    mean_o = .false.
+    n_o = 0.0_dp
+    if (.not. mu_p_o > 0.0_dp) return
+    t_norm = vector_norm(tauf_o)
+    if (.not. slides_at_start(t_norm, mu_p_o)) return
+    mean_o = .true.
+    n_o(1) = tauf_o(1) / t_norm
+    n_o(2) = tauf_o(2) / t_norm
+  end subroutine start_direction
 
   !> A plane slides at the start of a step: its friction traction's magnitude |tauf_o| is
   !> mu p_o > 0, to a relative 1e-10 (the round-off between the stored friction traction and the

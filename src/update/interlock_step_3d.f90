@@ -21,7 +21,7 @@ module interlock_step_3d
   use interlock_plane_law, only: plane_frame, wear_weights, start_yield, trapezoidal_weight, &
       wear_angle_error, add_wear_error, wear_error_of
   use interlock_plane_law_3d, only: plane_start_3d_t, plane_law_3d_t, plane_law_3d_parts, &
-      plane_traction_3d, local_frame, contact_round_off, to_macro
+      plane_traction_3d, start_direction, local_frame, contact_round_off, to_macro
   implicit none
   private
   public :: plane_chain_t, step_3d, chain_bounded
@@ -266,10 +266,10 @@ contains
     !> repeated on every plane of every scheme (wear_root_begin sets it where an iteration
     !> starts; nothing else reads it)
     type(wear_root_t), intent(inout) :: rt
-    real(dp) :: c, sn, dip_o, mu_p_o, mu_p_law, a_w, g_slip, g_trap, drv, g_drv(3), thp, fp, &
-                rot(3, 3), dzeta(3), ksl(3), k_k(3, 3), tie
-    logical :: coupled, wears, trapezoidal, drivers, flat, terms, pinned
-    integer :: j, phase
+    real(dp) :: c, sn, dip_o, mu_p_o, a_w, g_slip, g_trap, drv, g_drv(3), thp, fp, &
+                ksl(3), dtheta_sl(3), k_k(3, 3), tie, n_o(2)
+    logical :: coupled, wears, trapezoidal, drivers, flat, terms, pinned, mean_o, angle
+    integer :: phase
 
     ok = .true.
     iterations = 0
@@ -277,8 +277,6 @@ contains
     thp = 0.0_dp
     coupled = solver%scheme /= scheme_explicit
     trapezoidal = solver%scheme == scheme_trapezoidal
-    ! (the trapezoidal wear terms: its driver, and the coupled schemes' error estimate)
-    terms = trapezoidal .or. (estimate .and. coupled)
     wears = mat%plane_wears(k)
     drivers = wears .and. (coupled .or. chain)
     ! The scheme's wear weights (wear_weights of the 2D law, with the dip component of the
@@ -293,7 +291,6 @@ contains
     call wear_weights(mat, solver%scheme, o%dmg, o%tauf(1), c_o, sn_o, s_o(1), dip_o, a_w, &
                       g_slip)
     mu_p_o = 0.0_dp
-    mu_p_law = 0.0_dp
     g_trap = 0.0_dp
     if (trapezoidal) then
       mu_p_o = start_yield(mat, c_o, sn_o, s_o(1), dip_o)
@@ -303,7 +300,15 @@ contains
       mu_p_o = start_yield(mat, c_o, sn_o, s_o(1), dip_o)
       g_trap = trapezoidal_weight(mat, o%dmg, c_o, sn_o, s_o(1), dip_o)
     end if
-    if (trapezoidal) mu_p_law = mu_p_o
+    ! D14's start direction of slip (the trapezoidal scheme; none in the plane (n, t1), where the
+    ! direction cannot turn)
+    mean_o = .false.
+    if (trapezoidal .and. ncol > 2) call start_direction(o%tauf, mu_p_o, mean_o, n_o)
+    ! The trapezoidal wear terms: its driver where it has a start term (a start weight, or D14's
+    ! direction), the chain's, and the coupled schemes' error estimate; without them the
+    ! trapezoidal driver is a_w D |tau_f,1| |d sf_1| (evaluate).
+    terms = (trapezoidal .and. (g_slip > 0.0_dp .or. mean_o .or. chain)) .or. &
+            (estimate .and. coupled)
 
     theta = o%theta
     zeta = o%zeta
@@ -324,7 +329,7 @@ contains
         call plane_frame(mat, k, theta, c, sn)
         flat = flat_frame(cp, sp, c, sn)
       end if
-      call evaluate(mat, cp, sp, s, o, mu_p_law, a_w, g_slip, trapezoidal, terms, drivers, &
+      call evaluate(mat, cp, sp, s, o, mean_o, n_o, a_w, g_slip, trapezoidal, terms, drivers, &
                     chain, .not. (coupled .and. wears), ncol < 3, c, sn, flat, p, drv, g_drv, &
                     tie)
       if (.not. (coupled .and. wears)) exit
@@ -389,14 +394,18 @@ contains
     else
       sig_k = to_macro(cp, sp, c, sn, p%sig_loc)
     end if
-    if (wears .and. (coupled .or. chain .or. estimate)) then
+    angle = coupled .and. wears .and. .not. chain
+    if (wears .and. (angle .or. estimate)) then
       ! d sig_k / d theta at fixed s = sigma_kn e - sigma_kt1 m + R^T K_loc d sl / d theta
+      ! (ksl: in the plane's frame)
       ksl = p%k_loc(:, 1) * p%sl(2) - p%k_loc(:, 2) * p%sl(1)
       ksl(1) = ksl(1) - p%sig_loc(2)
       ksl(2) = ksl(2) + p%sig_loc(1)
-      dsig_dtheta = to_macro(cp, sp, c, sn, ksl)
+      dsig_dtheta = 0.0_dp
+      if (estimate) dsig_dtheta = to_macro(cp, sp, c, sn, ksl)
     else
       ! (0 where the angle does not move; read by the error estimate alone)
+      ksl = 0.0_dp
       dsig_dtheta = 0.0_dp
     end if
     if (chain) then
@@ -407,7 +416,7 @@ contains
         ! (the explicit scheme's law is evaluated once, at the start angle: its tie)
         if (.not. abs(p%sl(1)) > tie) &
           call chain_at_tie(mat, cp, sp, c, sn, o, jo, p, wears, a_w, g_slip, mu_p_o, &
-                            mu_p_law, thp, fp, s_o, h_start, h_end, ncol, k_k, jn)
+                            mean_o, n_o, thp, fp, s_o, h_start, h_end, ncol, k_k, jn)
       end if
       if (ncol > 2) then
         tangent = tangent + w * k_k
@@ -416,23 +425,22 @@ contains
         tangent(1:2, 1:2) = tangent(1:2, 1:2) + w * k_k(1:2, 1:2)
       end if
     else
-      if (coupled .and. wears) then
-        ! d zeta / d s = (dG / d s) / F' at the root, d theta / d s = theta' d zeta / d s
-        rot = frame_rows(cp, sp, c, sn)
-        do j = 1, 3
-          if (pinned) then
-            dzeta(j) = -rot(1, j) / p%sl(2)
-          else
-            dzeta(j) = (g_drv(1) * rot(1, j) + g_drv(2) * rot(2, j) + g_drv(3) * rot(3, j)) * &
-                       (thp / fp)
-          end if
-        end do
+      if (angle) then
+        ! d zeta / d s = (dG / d s) / F' at the root, d theta / d s = theta' d zeta / d s, dG /
+        ! d s = R^T dG / d sl: d theta / d s = R^T dtheta_sl in the plane's frame (pinned: -m /
+        ! s_kt1, R^T (-1, 0, 0) / s_kt1)
+        if (pinned) then
+          dtheta_sl = 0.0_dp
+          dtheta_sl(1) = -1.0_dp / p%sl(2)
+        else
+          dtheta_sl = g_drv * (thp / fp)
+        end if
       else
-        dzeta = 0.0_dp
+        dtheta_sl = 0.0_dp
       end if
-      ! (K_loc's normal row: plane_traction_3d)
-      call add_turned(cp, sp, c, sn, flat, p%k_loc, .not. p%dmg_grows, coupled .and. wears, &
-                      dsig_dtheta, dzeta, w, tangent)
+      ! (K_loc's normal row: plane_traction_3d; the angle's term fills it)
+      call add_turned(cp, sp, c, sn, flat, p%k_loc, .not. (p%dmg_grows .or. angle), angle, &
+                      ksl, dtheta_sl, w, tangent)
     end if
 
     if (estimate .and. wears) then
@@ -642,14 +650,16 @@ contains
   !> the plane law at s_kn = 0 on the open side (free, no friction traction), through
   !> chain_plane; the values are unchanged.
   pure subroutine chain_at_tie(mat, cp, sp, c, sn, o, jo, p, wears, a_w, g_slip, mu_p_o, &
-                               mu_p_law, thp, fp, s_o, h_start, h_end, ncol, k_k, jn)
+                               mean_o, n_o, thp, fp, s_o, h_start, h_end, ncol, k_k, jn)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: cp, sp, c, sn   !< the azimuth's frame, the (start) angle's
     type(plane_start_3d_t), intent(in) :: o
     type(plane_chain_t), intent(in) :: jo
     type(plane_law_3d_t), intent(in) :: p
     logical, intent(in) :: wears
-    real(dp), intent(in) :: a_w, g_slip, mu_p_o, mu_p_law, thp, fp, s_o(3), h_start, h_end
+    real(dp), intent(in) :: a_w, g_slip, mu_p_o, thp, fp, s_o(3), h_start, h_end
+    logical, intent(in) :: mean_o   !< D14 (plane_law_3d_parts), from the start direction n_o
+    real(dp), intent(in) :: n_o(2)
     integer, intent(in) :: ncol
     real(dp), intent(inout) :: k_k(3, 3)
     type(plane_chain_t), intent(inout) :: jn
@@ -663,7 +673,7 @@ contains
     ! (the open side's derivatives: the law at s_kn = 0 with a tie below it)
     sl = p%sl
     sl(1) = 0.0_dp
-    call plane_law_3d_parts(mat, sl, -1.0_dp, o, mu_p_law, wears, .true., .true., .false., &
+    call plane_law_3d_parts(mat, sl, -1.0_dp, o, mean_o, n_o, wears, .true., .true., .false., &
                             ncol < 3, q)
     g_drv = 0.0_dp
     if (wears) g_drv = a_w * q%g_wfric_dip + g_slip * q%g_slip_dip
@@ -712,12 +722,15 @@ contains
   !> d G / d sl: a_end D |tau_f,1| |d sf_1| + g_slip |d sf_1| (explicit, implicit), a_end
   !> wear_end + g_slip wear_start (trapezoidal: the dip component of D_o mu p_o n at the start);
   !> d G / d sl only with `drivers` (else 0). `terms`: the trapezoidal wear terms are wanted
-  !> (plane_law_3d_parts; with `trapezoidal`).
-  pure subroutine evaluate(mat, cp, sp, s, o, mu_p_o, a_end, g_slip, trapezoidal, terms, &
+  !> (plane_law_3d_parts; with `trapezoidal`, where D14's direction was taken or g_slip > 0:
+  !> without them a trapezoidal driver is the implicit one's form, g_slip = 0 and no D14).
+  pure subroutine evaluate(mat, cp, sp, s, o, mean_o, n_o, a_end, g_slip, trapezoidal, terms, &
                            drivers, chain, traction, in_plane, c, sn, flat, p, drv, g_drv, &
                            tie)
     type(interlock_material_t), intent(in) :: mat
-    real(dp), intent(in) :: cp, sp, s(3), mu_p_o, a_end, g_slip, c, sn
+    real(dp), intent(in) :: cp, sp, s(3), a_end, g_slip, c, sn
+    logical, intent(in) :: mean_o   !< D14 (plane_law_3d_parts), from the start direction n_o
+    real(dp), intent(in) :: n_o(2)
     type(plane_start_3d_t), intent(in) :: o
     logical, intent(in) :: trapezoidal, terms, drivers, chain, traction
     logical, intent(in) :: in_plane   !< plane_law_3d_parts'
@@ -733,9 +746,9 @@ contains
     else
       call local_frame(cp, sp, c, sn, s, sl, tie)
     end if
-    call plane_law_3d_parts(mat, sl, tie, o, mu_p_o, drivers, chain, traction, terms, in_plane, &
-                            p)
-    if (trapezoidal) then
+    call plane_law_3d_parts(mat, sl, tie, o, mean_o, n_o, drivers, chain, traction, terms, &
+                            in_plane, p)
+    if (trapezoidal .and. terms) then
       drv = a_end * p%wear_end + g_slip * p%wear_start
       if (drivers) then
         ! (in the plane (n, t1) the s_kt2 entry is not wanted)
@@ -745,7 +758,14 @@ contains
       end if
     else
       drv = a_end * p%wfric_dip + g_slip * p%slip_dip
-      if (drivers) g_drv = a_end * p%g_wfric_dip + g_slip * p%g_slip_dip
+      if (drivers) then
+        ! (the implicit scheme has no start weight: g_slip = 0)
+        if (g_slip > 0.0_dp) then
+          g_drv = a_end * p%g_wfric_dip + g_slip * p%g_slip_dip
+        else
+          g_drv = a_end * p%g_wfric_dip
+        end if
+      end if
     end if
     if (.not. drivers) g_drv = 0.0_dp
   end subroutine evaluate
@@ -767,8 +787,9 @@ contains
     rot(3, :) = [0.0_dp, -sp, cp]
   end function frame_rows
 
-  !> tangent += w k_k for the plane's derivative at fixed angle R^T K_loc R, plus u (x) v
-  !> where `angle` (the angle's term d sig_k / d theta (x) d theta / d s), with R = d sl / d s
+  !> tangent += w R^T (K_loc + u (x) v) R, the plane's derivative at fixed angle and, where
+  !> `angle`, the angle's term d sig_k / d theta (x) d theta / d s = R^T (u (x) v) R with u = d
+  !> sig_loc / d theta, v = d theta / d sl in the plane's frame, with R = d sl / d s
   !> (rows m, e, q) = B A: B turns by theta in (n, d) (to_macro's first rotation), A by the
   !> azimuth in (t1, t2); each turns both sides in one plane of the frame, the columns
   !> (B^T K_loc), then the rows ((B^T K_loc) B); the azimuth's only where phi /= 0, none for a
@@ -793,6 +814,17 @@ contains
     a13 = k_loc(1, 3)
     a23 = k_loc(2, 3)
     a33 = k_loc(3, 3)
+    if (angle) then
+      a11 = a11 + u(1) * v(1)
+      a21 = a21 + u(2) * v(1)
+      a31 = a31 + u(3) * v(1)
+      a12 = a12 + u(1) * v(2)
+      a22 = a22 + u(2) * v(2)
+      a32 = a32 + u(3) * v(2)
+      a13 = a13 + u(1) * v(3)
+      a23 = a23 + u(2) * v(3)
+      a33 = a33 + u(3) * v(3)
+    end if
     if (.not. flat) then
       ! by theta in the plane of the indices 1 and 2: each column's pair, then each row's
       call turn_pair(c, sn, a11, a21)
@@ -818,17 +850,6 @@ contains
         call turn_pair(cp, sp, a22, a23)
         call turn_pair(cp, sp, a32, a33)
       end if
-    end if
-    if (angle) then
-      a11 = a11 + u(1) * v(1)
-      a21 = a21 + u(2) * v(1)
-      a31 = a31 + u(3) * v(1)
-      a12 = a12 + u(1) * v(2)
-      a22 = a22 + u(2) * v(2)
-      a32 = a32 + u(3) * v(2)
-      a13 = a13 + u(1) * v(3)
-      a23 = a23 + u(2) * v(3)
-      a33 = a33 + u(3) * v(3)
     end if
     tangent(1, 1) = tangent(1, 1) + w * a11
     tangent(2, 1) = tangent(2, 1) + w * a21
