@@ -763,8 +763,9 @@ contains
       end do
       do kind = 1, n_kinds
         ns(kind, scheme) = 1.0e9_dp * median(times(:, kind)) / calls
-        write (u, '(a,",",a,",",es12.5,",",es12.5,",",i0,",",i0)') trim(scheme_name(scheme)), &
-          trim(kind_names(kind)), ns(kind, scheme), ns(kind, scheme) / ns(1, scheme), &
+        ! (the update's name holds commas: quoted, as RFC 4180 says)
+        write (u, '(a,3a,",",es12.5,",",es12.5,",",i0,",",i0)') trim(scheme_name(scheme)), &
+          ',"', trim(kind_names(kind)), '"', ns(kind, scheme), ns(kind, scheme) / ns(1, scheme), &
           nint(calls), reps
       end do
     end do

@@ -135,16 +135,12 @@ def markdown_3d(d):
     """Parts 1b and 3b: the 3D update's cost against the 2D one, and the 3D work-precision."""
     cost3d = os.path.join(d, "cost3d.csv")
     if os.path.exists(cost3d):
-        # The update's name holds commas: the scheme is the first field, the numbers the last four.
         print("\nCost per call in three dimensions (part 1b):\n")
         print("| scheme | update | ns/call | x 2D update |")
         print("|---|---|---:|---:|")
-        with open(cost3d) as f:
-            for line in f.read().splitlines()[1:]:
-                fields = line.split(",")
-                scheme, ns, ratio = fields[0], float(fields[-4]), float(fields[-3])
-                update = ",".join(fields[1:-4]).strip()
-                print(f"| {scheme} | {update} | {ns:.1f} | {ratio:.2f} |")
+        for r in read_csv(cost3d):
+            print(f"| {r['scheme']} | {r['update']} | {float(r['ns_per_call']):.1f} | "
+                  f"{float(r['ratio_to_2d']):.2f} |")
     wp3d = os.path.join(d, "work_precision_3d.csv")
     if not os.path.exists(wp3d):
         return
