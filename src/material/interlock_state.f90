@@ -7,7 +7,7 @@ module interlock_state
   implicit none
   private
   public :: interlock_state_t, interlock_state_init, interlock_state_3d_t, interlock_state_3d_init
-  public :: state_take, state_3d_take
+  public :: state_take, state_3d_take, state_3d_end_point
 
   !> The per-plane values have no default value (interlock_state_init sets every one, the
   !> update every one of the material's planes), so that a state declared on every call, the
@@ -103,5 +103,21 @@ contains
     to%s_t2 = from%s_t2
     to%sigma_t2 = from%sigma_t2
   end subroutine state_3d_take
+
+  !> The end point of a three-dimensional step from `old` to the separation s with traction
+  !> sigma into `new`: s, sigma and the work, old's plus the trapezoidal sum of sigma . ds.
+  pure subroutine state_3d_end_point(old, s, sigma, new)
+    type(interlock_state_3d_t), intent(in) :: old
+    real(dp), intent(in) :: s(3), sigma(3)
+    type(interlock_state_3d_t), intent(inout) :: new
+    real(dp) :: s_o(3), sigma_o(3)
+    s_o = [old%s(1), old%s(2), old%s_t2]
+    sigma_o = [old%sigma(1), old%sigma(2), old%sigma_t2]
+    new%s = s(1:2)
+    new%s_t2 = s(3)
+    new%sigma = sigma(1:2)
+    new%sigma_t2 = sigma(3)
+    new%work = old%work + 0.5_dp * dot_product(sigma_o + sigma, s - s_o)
+  end subroutine state_3d_end_point
 
 end module interlock_state

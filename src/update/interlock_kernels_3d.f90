@@ -16,7 +16,7 @@
 module interlock_kernels_3d
   use interlock_kinds, only: dp, is_finite_value
   use interlock_material, only: interlock_material_t, scheme_explicit, max_planes
-  use interlock_state, only: interlock_state_3d_t
+  use interlock_state, only: interlock_state_3d_t, state_3d_end_point
   use interlock_damage, only: damage_may_grow, damage_growth
   use interlock_friction, only: radial_return
   use interlock_geometry, only: contact_area
@@ -46,7 +46,7 @@ contains
     type(interlock_state_3d_t), intent(inout) :: new
     real(dp), intent(out) :: sigma(3), tangent(3, 3)
     logical, intent(out) :: done
-    real(dp) :: area, darea, c(max_planes), sn(max_planes), gam, energy(3), s_o(3), old_sig(3)
+    real(dp) :: area, darea, c(max_planes), sn(max_planes), gam, energy(3)
     integer :: k, n_eval
     logical :: shared
 
@@ -86,13 +86,7 @@ contains
     new%diss_damage = energy(1)
     new%diss_friction = energy(2)
     new%stored = energy(3)
-    s_o = [old%s(1), old%s(2), old%s_t2]
-    old_sig = [old%sigma(1), old%sigma(2), old%sigma_t2]
-    new%s = s(1:2)
-    new%s_t2 = s(3)
-    new%sigma = sigma(1:2)
-    new%sigma_t2 = sigma(3)
-    new%work = old%work + 0.5_dp * dot_product(old_sig + sigma, s - s_o)
+    call state_3d_end_point(old, s, sigma, new)
   end subroutine explicit_step_3d
 
   !> The traction is finite and the tangent's magnitudes sum to at most `limit` (false for a

@@ -13,7 +13,7 @@ module interlock_step_3d
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_explicit, &
       scheme_trapezoidal, max_planes
-  use interlock_state, only: interlock_state_3d_t
+  use interlock_state, only: interlock_state_3d_t, state_3d_end_point
   use interlock_geometry, only: contact_area
   use interlock_friction, only: direction_turn
   use interlock_wear, only: worn_angle, worn_angle_slope, wear_root_t, wear_root_begin, &
@@ -72,7 +72,7 @@ contains
     type(plane_law_3d_t) :: p
     type(plane_start_3d_t) :: o
     type(wear_root_t) :: rt
-    real(dp) :: area, darea, gam, w, sig(3), sig_k(3), s_o(3), old_sig(3), zeta, &
+    real(dp) :: area, darea, gam, w, sig(3), sig_k(3), s_o(3), zeta, &
                 theta, e, dsig_dtheta(3), err_angle, err_traction, c_o(max_planes), &
                 sn_o(max_planes), diss_damage, diss_friction, stored
     integer :: k, n_eval, it, ncol
@@ -167,12 +167,7 @@ contains
     new%diss_damage = diss_damage
     new%diss_friction = diss_friction
     new%stored = stored
-    old_sig = [old%sigma(1), old%sigma(2), old%sigma_t2]
-    new%s = s(1:2)
-    new%s_t2 = s(3)
-    new%sigma = sig(1:2)
-    new%sigma_t2 = sig(3)
-    new%work = old%work + 0.5_dp * dot_product(old_sig + sig, s - s_o)
+    call state_3d_end_point(old, s, sig, new)
     if (estimate) err = wear_error_of(mat, err_angle, err_traction, &
                                       [sig(1), max(abs(sig(2)), abs(sig(3)))])
   end subroutine step_3d
