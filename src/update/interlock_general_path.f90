@@ -197,7 +197,7 @@ contains
     type(plane_chain_t) :: jc(max_planes, 2)
     real(dp) :: ds(3), s_old(3), s_end(3), alpha, h, a_end, err, chain_peak, tangent_trial(3, 3)
     integer :: it, n_accepted, k, n, cur, trial
-    logical :: solved, stable, control, kept, give_up, allowed, whole
+    logical :: solved, stable, control, kept, give_up, allowed, whole, chained
 
     control = tol >= 0.0_dp .and. tol < huge(1.0_dp)
     n = mat%n_planes
@@ -206,10 +206,7 @@ contains
     ! (a trial sub-increment writes every value but those of the planes beyond n, which no
     ! step reads and `new` does not take)
     call state_3d_take(n, old, st(1))
-    do k = 1, n
-      jc(k, 1) = plane_chain_t(0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp)
-      jc(k, 2) = jc(k, 1)
-    end do
+    chained = .false.
     cur = 1
     trial = 2
     alpha = 0.0_dp
@@ -231,6 +228,16 @@ contains
         call step_3d(mat, solver, s_end, st(cur), st(trial), tangent_trial, it, solved, &
                      .false., alpha, a_end, jc(1:n, cur), jc(1:n, trial), .true., err, in_plane)
       else
+        if (.not. chained) then
+          ! (the chain's slots, set where the first sub-increment is tried: a whole increment
+          ! taken as one trial needs none)
+          do k = 1, n
+            jc(k, 1) = plane_chain_t(0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+                                     0.0_dp)
+            jc(k, 2) = jc(k, 1)
+          end do
+          chained = .true.
+        end if
         call step_3d(mat, solver, s_end, st(cur), st(trial), tangent_trial, it, solved, &
                      .true., alpha, a_end, jc(1:n, cur), jc(1:n, trial), .true., err, in_plane)
       end if

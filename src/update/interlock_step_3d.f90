@@ -15,7 +15,7 @@ module interlock_step_3d
       scheme_trapezoidal, max_planes
   use interlock_state, only: interlock_state_3d_t, state_3d_end_point
   use interlock_geometry, only: contact_area
-  use interlock_friction, only: direction_turn
+  use interlock_friction, only: direction_turn_of
   use interlock_wear, only: worn_angle, worn_angle_slope, wear_root_t, wear_root_begin, &
       wear_root_update
   use interlock_plane_law, only: plane_frame, wear_weights, start_yield, trapezoidal_weight, &
@@ -149,8 +149,9 @@ contains
                               abs(dsig_dtheta(3)))], err_angle, err_traction)
           ! the friction direction's turn, on a plane that slides at the end (none in the
           ! plane (n, t1) of a 2D increment: the direction cannot turn)
+          ! (|tau_f| = p%tauf_norm)
           if (ncol > 2 .and. p%slip_norm > 0.0_dp) err_traction = max(err_traction, w * &
-            p%dmg * norm2(p%tauf) * direction_turn(o%tauf, p%tauf))
+            p%dmg * p%tauf_norm * direction_turn_of(o%tauf, p%tauf, p%tauf_norm))
         end if
         sig = sig + w * sig_k
         if (darea < 0.0_dp) tangent(:, 1) = tangent(:, 1) + (gam * darea * h_end) * sig_k
