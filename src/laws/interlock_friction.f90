@@ -6,7 +6,8 @@ module interlock_friction
   use interlock_kinds, only: dp
   implicit none
   private
-  public :: friction_step, radial_return, direction_turn
+  public :: friction_step, radial_return, direction_turn, direction_turn_of, &
+            unit_direction_turn
 
 contains
 
@@ -117,16 +118,30 @@ contains
   !> 2D step).
   pure real(dp) function direction_turn(tauf_o, tauf) result(turn)
     real(dp), intent(in) :: tauf_o(2), tauf(2)
-    real(dp) :: norm_o, norm, u_o(2), u(2), c
+    turn = direction_turn_of(tauf_o, tauf, norm2(tauf))
+  end function direction_turn
+
+  !> direction_turn where the caller has the end traction's magnitude, norm = |tauf| (a plane
+  !> law's |tau_f|).
+  pure real(dp) function direction_turn_of(tauf_o, tauf, norm) result(turn)
+    real(dp), intent(in) :: tauf_o(2), tauf(2), norm
+    real(dp) :: norm_o, u_o(2), u(2)
     turn = 0.0_dp
     ! (unit vectors first: any admissible traction, squared, may overflow)
     norm_o = norm2(tauf_o)
-    norm = norm2(tauf)
     if (.not. (norm_o > 0.0_dp .and. norm > 0.0_dp)) return
     u_o = tauf_o / norm_o
     u = tauf / norm
+    turn = unit_direction_turn(u_o, u)
+  end function direction_turn_of
+
+  !> direction_turn of the unit vectors u_o and u of the two tractions' directions.
+  pure real(dp) function unit_direction_turn(u_o, u) result(turn)
+    real(dp), intent(in) :: u_o(2), u(2)
+    real(dp) :: c
+    turn = 0.0_dp
     c = u_o(1) * u(1) + u_o(2) * u(2)
     if (c > 0.0_dp) turn = (u_o(1) * u(2) - u_o(2) * u(1))**2 / (1.0_dp + c)
-  end function direction_turn
+  end function unit_direction_turn
 
 end module interlock_friction

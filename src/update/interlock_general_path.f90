@@ -75,7 +75,8 @@ contains
   !> sub-increments from the fraction h_first; else the whole increment as one step, retried on
   !> sub-increments (split only as failures require) when its solve fails. `in_plane`: the
   !> increment lies in the (n, t1) plane of a RIA with every azimuth 0 (substep's 2-column
-  !> chain). info%status says whether `new` and `tangent` were written.
+  !> chain). info%status says whether `new` and `tangent` hold the result (on failure `new` may
+  !> be partly written).
   pure subroutine integrate_increment(mat, solver, s, old, new, tangent, info, tol, h_first, &
                                       in_plane)
     type(interlock_material_t), intent(in) :: mat
@@ -181,9 +182,11 @@ contains
   !> the chain: its tangent at the fixed start state is the chain's.
   !> `in_plane`: an increment of the 2D law (s_T2 = 0, no strike state, every azimuth 0) whose
   !> caller takes the (1:2, 1:2) block of the tangent alone (step_3d's in_plane). The state
-  !> and the chain of the current and the trial sub-increment take turns in two slots (no
-  !> copies); `new` is written only on success (the planes beyond n_planes not); nothing is
-  !> allocated.
+  !> and the chain of the current and the trial sub-increment take turns in two slots, `new`
+  !> and a local one (the first trial reads `old` and writes `new`: a whole increment kept as
+  !> one trial is not copied, the others once at most); on failure `new` is partly written
+  !> (the callers report the failure and keep `old`); the planes beyond n_planes are not
+  !> written; nothing is allocated.
   pure subroutine substep(mat, solver, s, old, new, tangent, info, tol, h_first, in_plane)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
@@ -193,11 +196,11 @@ contains
     real(dp), intent(out) :: tangent(3, 3)
     type(interlock_info_t), intent(inout) :: info
     logical, intent(in) :: in_plane
-    type(interlock_state_3d_t) :: st(2)
+    type(interlock_state_3d_t) :: st
     type(plane_chain_t) :: jc(max_planes, 2)
     real(dp) :: ds(3), s_old(3), s_end(3), alpha, h, a_end, err, chain_peak, tangent_trial(3, 3)
     integer :: it, n_accepted, k, n, cur, trial
-    logical :: solved, stable, control, kept, give_up, allowed, whole
+    logical :: solved, stable, control, kept, give_up, allowed, whole, chained
 
     control = tol >= 0.0_dp .and. tol < huge(1.0_dp)
     n = mat%n_planes
@@ -205,13 +208,9 @@ contains
     ds = s - s_old
     ! (a trial sub-increment writes every value but those of the planes beyond n, which no
     ! step reads and `new` does not take)
-    call state_3d_take(n, old, st(1))
-    do k = 1, n
-      jc(k, 1) = plane_chain_t(0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp)
-      jc(k, 2) = jc(k, 1)
-    end do
-    cur = 1
-    trial = 2
+    chained = .false.
+    cur = 0
+    trial = 1
     alpha = 0.0_dp
     h = h_first
     n_accepted = 0
@@ -228,11 +227,30 @@ contains
       ! and no later sub-increment needs its derivatives: the one-step law, without the chain)
       whole = .not. alpha > 0.0_dp .and. a_end >= 1.0_dp
       if (whole) then
-        call step_3d(mat, solver, s_end, st(cur), st(trial), tangent_trial, it, solved, &
-                     .false., alpha, a_end, jc(1:n, cur), jc(1:n, trial), .true., err, in_plane)
+        call step_3d(mat, solver, s_end, old, new, tangent_trial, it, solved, .false., alpha, &
+                     a_end, jc(1:n, 2), jc(1:n, 1), .true., err, in_plane)
       else
-        call step_3d(mat, solver, s_end, st(cur), st(trial), tangent_trial, it, solved, &
-                     .true., alpha, a_end, jc(1:n, cur), jc(1:n, trial), .true., err, in_plane)
+        if (.not. chained) then
+          ! (the chain's slots, set where the first sub-increment is tried: a whole increment
+          ! taken as one trial needs none)
+          do k = 1, n
+            jc(k, 1) = plane_chain_t(0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+                                     0.0_dp)
+            jc(k, 2) = jc(k, 1)
+          end do
+          chained = .true.
+        end if
+        select case (cur)
+        case (0)
+          call step_3d(mat, solver, s_end, old, new, tangent_trial, it, solved, .true., alpha, &
+                       a_end, jc(1:n, 2), jc(1:n, 1), .true., err, in_plane)
+        case (1)
+          call step_3d(mat, solver, s_end, new, st, tangent_trial, it, solved, .true., alpha, &
+                       a_end, jc(1:n, 1), jc(1:n, 2), .true., err, in_plane)
+        case default
+          call step_3d(mat, solver, s_end, st, new, tangent_trial, it, solved, .true., alpha, &
+                       a_end, jc(1:n, 2), jc(1:n, 1), .true., err, in_plane)
+        end select
       end if
       info%newton_iterations = max(info%newton_iterations, it)
       stable = .true.
@@ -260,7 +278,7 @@ contains
     end do
     call check_chain(mat, chain_peak, info, allowed)
     if (.not. allowed) return
-    call state_3d_take(n, st(cur), new)
+    if (cur == 2) call state_3d_take(n, st, new)
     info%substeps = n_accepted
   end subroutine substep
 

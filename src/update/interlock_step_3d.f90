@@ -15,7 +15,7 @@ module interlock_step_3d
       scheme_trapezoidal, max_planes
   use interlock_state, only: interlock_state_3d_t, state_3d_end_point
   use interlock_geometry, only: contact_area
-  use interlock_friction, only: direction_turn
+  use interlock_friction, only: direction_turn_of, unit_direction_turn
   use interlock_wear, only: worn_angle, worn_angle_slope, wear_root_t, wear_root_begin, &
       wear_root_update
   use interlock_plane_law, only: plane_frame, wear_weights, start_yield, trapezoidal_weight, &
@@ -73,7 +73,7 @@ contains
     type(plane_start_3d_t) :: o
     type(wear_root_t) :: rt
     real(dp) :: area, darea, gam, w, sig(3), sig_k(3), s_o(3), zeta, &
-                theta, e, dsig_dtheta(3), err_angle, err_traction, c_o(max_planes), &
+                theta, e, dsig_dtheta(3), turn, err_angle, err_traction, c_o(max_planes), &
                 sn_o(max_planes), diss_damage, diss_friction, stored
     integer :: k, n_eval, it, ncol
     logical :: shared
@@ -141,7 +141,7 @@ contains
         call plane_step(mat, mat%cos_phi(k), mat%sin_phi(k), c_o(k), sn_o(k), solver, k, s, &
                         s_o, o, estimate, chain, h_start, h_end, jo(min(k, size(jo))), ncol, &
                         w, p, sig_k, tangent, zeta, theta, jn(min(k, size(jn))), e, &
-                        dsig_dtheta, it, ok, rt)
+                        dsig_dtheta, turn, it, ok, rt)
         if (.not. ok) return
         iterations = max(iterations, it)
         if (estimate) then
@@ -149,8 +149,9 @@ contains
                               abs(dsig_dtheta(3)))], err_angle, err_traction)
           ! the friction direction's turn, on a plane that slides at the end (none in the
           ! plane (n, t1) of a 2D increment: the direction cannot turn)
+          ! (|tau_f| = p%tauf_norm)
           if (ncol > 2 .and. p%slip_norm > 0.0_dp) err_traction = max(err_traction, w * &
-            p%dmg * norm2(p%tauf) * direction_turn(o%tauf, p%tauf))
+            p%dmg * p%tauf_norm * turn)
         end if
         sig = sig + w * sig_k
         if (darea < 0.0_dp) tangent(:, 1) = tangent(:, 1) + (gam * darea * h_end) * sig_k
@@ -239,7 +240,7 @@ contains
   !> dsig_dtheta = d sig_k / d theta at fixed s.
   pure subroutine plane_step(mat, cp, sp, c_o, sn_o, solver, k, s, s_o, o, estimate, chain, &
                              h_start, h_end, jo, ncol, w, p, sig_k, tangent, zeta, theta, jn, &
-                             e, dsig_dtheta, iterations, ok, rt)
+                             e, dsig_dtheta, turn, iterations, ok, rt)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: cp, sp   !< cos and sin of the plane's azimuth
     real(dp), intent(in) :: c_o, sn_o   !< cos and sin of its start angle (plane_frame)
@@ -253,6 +254,10 @@ contains
     real(dp), intent(in) :: w   !< its weight (area fraction x contact area)
     type(plane_law_3d_t), intent(out) :: p
     real(dp), intent(out) :: sig_k(3), zeta, theta, e, dsig_dtheta(3)
+    !> (estimate, ncol = 3, a plane that slides at the end) the turn of its friction direction
+    !> over the step (interlock_friction:direction_turn; from D14's start direction where it
+    !> was taken); else 0
+    real(dp), intent(out) :: turn
     real(dp), intent(inout) :: tangent(3, 3)
     type(plane_chain_t), intent(inout) :: jn
     integer, intent(out) :: iterations
@@ -438,6 +443,15 @@ contains
                       ksl, dtheta_sl, w, tangent)
     end if
 
+    turn = 0.0_dp
+    if (estimate .and. ncol > 2 .and. p%tauf_norm > 0.0_dp .and. p%slip_norm > 0.0_dp) then
+      if (mean_o) then
+        ! (n_o = tauf_o / |tauf_o|)
+        turn = unit_direction_turn(n_o, p%tauf / p%tauf_norm)
+      else
+        turn = direction_turn_of(o%tauf, p%tauf, p%tauf_norm)
+      end if
+    end if
     if (estimate .and. wears) then
       if (coupled) then
         e = wear_angle_error(mat, k, solver%scheme, theta, o%theta, zeta, o%zeta, p%wear_end, &

@@ -7,6 +7,7 @@
 !> the next size follows from the estimate's scaling (h^2); without it (a failed one-step
 !> solve) the size is quartered on failure and doubled on success.
 module interlock_substep_control
+  use, intrinsic :: iso_fortran_env, only: int64
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t
   use interlock_state, only: interlock_state_t
@@ -113,10 +114,13 @@ contains
     rejection_factor = max(0.1_dp, 0.9_dp * sqrt(tol / err))
   end function rejection_factor
 
-  !> The power of 2 at most h (h > 0; h itself where it is one).
+  !> The power of 2 at most h (h > 0 and normal; h itself where it is one): h with its
+  !> significand's fraction bits cleared (scale(1.0_dp, exponent(h) - 1) without libm's frexp
+  !> and ldexp).
   elemental real(dp) function power_of_2_below(h)
     real(dp), intent(in) :: h
-    power_of_2_below = scale(1.0_dp, exponent(h) - 1)
+    integer(int64), parameter :: fraction_bits = 2_int64**52 - 1_int64
+    power_of_2_below = transfer(iand(transfer(h, 0_int64), not(fraction_bits)), 1.0_dp)
   end function power_of_2_below
 
   !> The largest stiffness the law can show (penalty, or traction over the asperity depth).
