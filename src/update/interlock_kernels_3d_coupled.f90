@@ -128,9 +128,10 @@ contains
         if (drv > 0.0_dp .or. abs(tauf(1)) + abs(tauf(2)) > 0.0_dp) exit
         ! the root where the plane just loses contact, the last point on the open side: the
         ! closed side's last point
-        phase = 2
         rt%x = rt%lo
+        phase = 2
       else
+        ! (phase 2: the closed side's last point taken)
         exit
       end if
     end do
