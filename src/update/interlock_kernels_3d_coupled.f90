@@ -14,7 +14,8 @@
 !> its code; core_kernels3d checks it.
 module interlock_kernels_3d_coupled
   use interlock_kinds, only: dp, is_finite_value
-  use interlock_material, only: interlock_material_t, interlock_solver_t, max_planes
+  use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_implicit, &
+      max_planes
   use interlock_state, only: interlock_state_3d_t, state_3d_end_point
   use interlock_damage, only: damage_may_grow, damage_growth
   use interlock_friction, only: radial_return
@@ -82,12 +83,12 @@ contains
                 k_loc(3, 3), tauf_norm, slip_norm, a_w, g_slip, zeta, theta, thp, fp, drv, &
                 g_drv(3), dtheta_sl(3), ksl(3)
     integer :: phase, j
-    logical :: grows, wears, pinned
+    logical :: grows, wears, pinned, angle
 
     iterations = 0
     wears = mat%plane_wears(k)
     ! (the implicit weights: a_w = 1, no start weight)
-    call wear_weights(mat, solver%scheme, old%damage(k), old%tauf(k), c_o, sn_o, old%s(1), &
+    call wear_weights(mat, scheme_implicit, old%damage(k), old%tauf(k), c_o, sn_o, old%s(1), &
                       0.0_dp, a_w, g_slip)
     theta = old%theta(k)
     zeta = old%zeta(k)
@@ -135,9 +136,12 @@ contains
         exit
       end if
     end do
+    ! the angle's term, where the angle moves with s
+    angle = .false.
     if (wears) then
       ! A root on a jump of F where the plane loses contact stays there as s moves: the angle
-      ! follows the plane's contact, d theta / d s = -m / s_kt1; else d theta = theta' dG / F'.
+      ! follows the plane's contact, d theta / d s = -m / s_kt1; else d theta = theta' dG / F'
+      ! (none where dG = 0: a plane that sticks or is free; a NaN is kept).
       pinned = .false.
       if (phase > 0) then
         zeta = rt%x
@@ -147,21 +151,25 @@ contains
       if (pinned) then
         dtheta_sl = 0.0_dp
         dtheta_sl(1) = -1.0_dp / sl(2)
+        angle = .true.
       else
-        dtheta_sl = g_drv * (thp / fp)
+        angle = .not. abs(g_drv(1)) + abs(g_drv(2)) + abs(g_drv(3)) <= 0.0_dp
+        if (angle) dtheta_sl = g_drv * (thp / fp)
       end if
-      ! the angle's term: d sig_loc / d theta at fixed s = K_loc d sl / d theta + (-sigma_kt1,
-      ! sigma_kn, 0) (the frame's turn), d sl / d theta = (s_kt1, -s_kn, 0)
+    else
+      zeta = old%zeta(k) + drv
+    end if
+    if (angle) then
+      ! d sig_loc / d theta at fixed s = K_loc d sl / d theta + (-sigma_kt1, sigma_kn, 0) (the
+      ! frame's turn), d sl / d theta = (s_kt1, -s_kn, 0)
       ksl = k_loc(:, 1) * sl(2) - k_loc(:, 2) * sl(1)
       ksl(1) = ksl(1) - sig_loc(2)
       ksl(2) = ksl(2) + sig_loc(1)
       do j = 1, 3
         k_loc(:, j) = k_loc(:, j) + ksl * dtheta_sl(j)
       end do
-    else
-      zeta = old%zeta(k) + drv
     end if
-    call plane_share(cp, sp, c, sn, sig_loc, k_loc, .not. (grows .or. wears), gam, area, darea, &
+    call plane_share(cp, sp, c, sn, sig_loc, k_loc, .not. (grows .or. angle), gam, area, darea, &
                      sigma, tangent)
     call plane_energies(mat, k, old, sl, beta, dmg, sf, tauf, tauf_norm, slip_norm, sig_loc, &
                         gam * area, energy)
