@@ -5,7 +5,8 @@ order, followed by the UMAT itself, as ONE free-form Fortran file that compiles 
 
 Modules are found by reading `module` and `use` statements of the library's folders
 (LIBRARY_FOLDERS below: src/base, material, laws, update, api; .f90 and .f90.in files);
-the version module comes from its .in template with @PROJECT_VERSION@ substituted.
+the version module comes from its .in template with @PROJECT_VERSION@ substituted; a Fortran
+`include` line of a module (a file of its folder) is replaced by that file's text.
 Standard library only.
 
     python3 scripts/make_bundle.py [--source-dir DIR] [--version X.Y.Z] [--output FILE]
@@ -25,6 +26,7 @@ MODULE_RE = re.compile(r"^\s*module\s+(?!procedure\b|subroutine\b|function\b)(\w
 USE_RE = re.compile(r"^\s*use\s*(?:,\s*non_intrinsic\s*)?(?:::)?\s*(\w+)", re.IGNORECASE)
 INTRINSIC_USE_RE = re.compile(r"^\s*use\s*,\s*intrinsic", re.IGNORECASE)
 PLACEHOLDER_RE = re.compile(r"@[A-Za-z_][A-Za-z0-9_]*@")
+INCLUDE_RE = re.compile(r"""^\s*include\s*['"]([^'"]+)['"]\s*(!.*)?$""", re.IGNORECASE)
 # The library's layers (docs/architecture.md); the programs' I/O above them is not bundled.
 LIBRARY_FOLDERS = ("base", "material", "laws", "update", "api")
 
@@ -35,6 +37,22 @@ def project_version(source_dir):
     if not m:
         sys.exit("make_bundle: cannot find the project version in CMakeLists.txt; pass --version")
     return m.group(1)
+
+
+def expand_includes(path, text):
+    """text with each `include 'file'` line replaced by that file's text (its folder's)."""
+    lines = []
+    for line in text.splitlines():
+        m = INCLUDE_RE.match(line)
+        if not m:
+            lines.append(line)
+            continue
+        included = path.parent / m.group(1)
+        if not included.is_file():
+            sys.exit(f"make_bundle: {path} includes {m.group(1)}, not found in {path.parent}")
+        lines.append(f"! (included: {m.group(1)})")
+        lines.extend(expand_includes(included, included.read_text()).splitlines())
+    return "\n".join(lines) + "\n"
 
 
 def scan(path, text):
@@ -80,7 +98,7 @@ def main():
     library = [p for folder in LIBRARY_FOLDERS for p in sorted((src / folder).iterdir())
                if p.suffix == ".f90" or p.name.endswith(".f90.in")]
     for path in library + umat_modules:
-        text = path.read_text()
+        text = expand_includes(path, path.read_text())
         if path.suffix == ".in":
             text = text.replace("@PROJECT_VERSION@", version)
             left = PLACEHOLDER_RE.findall(text)

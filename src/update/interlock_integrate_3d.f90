@@ -9,7 +9,7 @@ module interlock_integrate_3d
   use, intrinsic :: iso_fortran_env, only: int64
   use interlock_kinds, only: dp, within_separation_bound
   use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_explicit, &
-      scheme_trapezoidal
+      scheme_implicit, scheme_trapezoidal
   use interlock_state, only: interlock_state_3d_t
   use interlock_status, only: interlock_info_t, status_ok
   use interlock_geometry, only: contact_area
@@ -18,6 +18,7 @@ module interlock_integrate_3d
   use interlock_integrate, only: interlock_update
   use interlock_general_path, only: general_update_3d
   use interlock_kernels_3d, only: explicit_step_3d
+  use interlock_kernels_3d_coupled, only: coupled_step_3d
   use interlock_substep_control, only: largest_increments, stiffness_scale
   implicit none
   private
@@ -38,6 +39,7 @@ contains
     real(dp), intent(out) :: sigma(3), tangent(3, 3)
     type(interlock_info_t), intent(inout) :: info
     real(dp) :: tangent_2d(2, 2)
+    integer :: iterations
     logical :: done
 
     if (mat%prepared .and. solver%substep_tol <= 0.0_dp .and. in_dip_planes(mat, s, old)) then
@@ -67,20 +69,26 @@ contains
       ! (a one-step solve that failed and was taken on sub-increments: the strike stiffness is
       ! then a chain; the general path computes it)
     end if
-    ! The explicit scheme's kernel (interlock_kernels_3d) where it applies; the general path
-    ! takes what it declines, and reports bad input. Its tangent stays within the general
-    ! path's stable bound on one step (interlock_substep_control:check_chain).
-    if (solver%scheme == scheme_explicit) then
-      if (mat%prepared .and. solver%substep_tol <= 0.0_dp .and. &
-          all(within_separation_bound(s))) then
+    ! The explicit scheme's kernel (interlock_kernels_3d) and the implicit one's
+    ! (interlock_kernels_3d_coupled) where they apply; the general path takes what they
+    ! decline, and reports bad input. Their tangent stays within the general path's stable
+    ! bound on one step (interlock_substep_control:check_chain).
+    if ((solver%scheme == scheme_explicit .or. solver%scheme == scheme_implicit) .and. &
+        mat%prepared .and. solver%substep_tol <= 0.0_dp .and. all(within_separation_bound(s))) then
+      if (solver%scheme == scheme_explicit) then
         call explicit_step_3d(mat, s, old, 1.0e6_dp * stiffness_scale(mat), new, sigma, &
                               tangent, done)
-        if (done) then
-          call one_step_report(info)
-          call largest_increments(mat%n_planes, old%interlock_state_t, new%interlock_state_t, &
-                                  info)
-          return
-        end if
+        iterations = 0
+      else
+        call coupled_step_3d(mat, solver, s, old, 1.0e6_dp * stiffness_scale(mat), new, sigma, &
+                             tangent, iterations, done)
+      end if
+      if (done) then
+        call one_step_report(info)
+        info%newton_iterations = iterations
+        call largest_increments(mat%n_planes, old%interlock_state_t, new%interlock_state_t, &
+                                info)
+        return
       end if
     end if
     call one_step_report(info)

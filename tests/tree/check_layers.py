@@ -3,7 +3,9 @@
 or of a lower layer (docs/architecture.md), a program never uses another program's modules,
 the general update path never uses the specialised kernels, and every source file under src/
 and umat/ is named by a CMakeLists.txt of its folder or of src/ (a file nobody builds is an
-error, not a silently missing feature). The tests mirror the layers (docs/tests.md): a Fortran
+error, not a silently missing feature); a Fortran include file (.inc) is built where a source
+file of its folder that is so named includes it, and the general path includes none of the
+kernels' (its code is the kernels' own). The tests mirror the layers (docs/tests.md): a Fortran
 test source under tests/<folder> of a layer uses no module above that layer (nor one of
 another folder of the same layer), and one directly in the folder that names its modules (not
 the library's public module `interlock`, which re-exports every layer below the API) lives in
@@ -66,13 +68,14 @@ TEST_SUFFIXES = (".pf", ".f90", ".F90", ".f")
 # Modules of the general update path, which the kernels' agreement test holds the kernels to:
 # they must not be built on the kernels.
 GENERAL_PATH = {"interlock_general_path", "interlock_step_3d", "interlock_plane_law_3d"}
-KERNEL_MODULES = {"interlock_kernels", "interlock_kernels_3d"}
+KERNEL_MODULES = {"interlock_kernels", "interlock_kernels_3d", "interlock_kernels_3d_coupled"}
 
 MODULE_RE = re.compile(r"^\s*module\s+(?!procedure\b|subroutine\b|function\b)(\w+)\s*(!.*)?$",
                        re.IGNORECASE)
 SUBMODULE_RE = re.compile(r"^\s*submodule\s*\(\s*(\w+)", re.IGNORECASE)
 USE_RE = re.compile(r"^\s*use\s*(,\s*non_intrinsic\s*)?(::)?\s*(\w+)", re.IGNORECASE)
 INTRINSIC_RE = re.compile(r"^\s*use\s*,\s*intrinsic", re.IGNORECASE)
+INCLUDE_RE = re.compile(r"""^\s*include\s*['"]([^'"]+)['"]""", re.IGNORECASE)
 
 
 def sources(root):
@@ -80,6 +83,11 @@ def sources(root):
         for path in sorted((root / top).rglob("*")):
             if path.is_file() and (path.suffix in (".f90", ".c") or path.name.endswith(".f90.in")):
                 yield path
+
+
+def include_files(root):
+    for top in ("src", "umat"):
+        yield from sorted(path for path in (root / top).rglob("*.inc") if path.is_file())
 
 
 def folder_of(root, path):
@@ -188,6 +196,7 @@ def main():
         if defined & GENERAL_PATH and used in KERNEL_MODULES:
             problems.append(f"{where}: the general update path uses the kernels ({used})")
     # Every source file is built: named in its folder's CMakeLists.txt or in src/'s.
+    built = set()
     for path in files:
         rel = path.relative_to(root)
         listed = False
@@ -201,6 +210,29 @@ def main():
             listed = True   # CalculiX's entry: bundled by scripts/build_calculix.sh
         if not listed:
             problems.append(f"{rel}: not named in any CMakeLists.txt (not built)")
+        else:
+            built.add(path)
+    # An include file is built where a built source of its folder includes it; the general
+    # path's sources include none that a kernel includes.
+    included_by = {}   # include file -> the sources that include it
+    for path in files:
+        if path.suffix == ".c":
+            continue
+        for line in path.read_text().splitlines():
+            match = INCLUDE_RE.match(line)
+            if match:
+                included_by.setdefault(path.parent / match.group(1), []).append(path)
+    for inc in include_files(root):
+        rel = inc.relative_to(root)
+        users = included_by.get(inc, [])
+        if not any(user in built for user in users):
+            problems.append(f"{rel}: included by no source named in a CMakeLists.txt (not built)")
+        defined = set()
+        for user in users:
+            defined |= {m.group(1).lower() for m in map(MODULE_RE.match,
+                                                        user.read_text().splitlines()) if m}
+        if defined & GENERAL_PATH and defined & KERNEL_MODULES:
+            problems.append(f"{rel}: included by the general update path and by a kernel")
     n_tests = check_tests(root, provider, problems)
     for line in problems:
         print(line)
