@@ -18,8 +18,8 @@ module interlock_step_3d
   use interlock_friction, only: direction_turn_of, unit_direction_turn
   use interlock_wear, only: worn_angle, worn_angle_slope, wear_root_t, wear_root_begin, &
       wear_root_update
-  use interlock_plane_law, only: plane_frame, wear_weights, start_yield, trapezoidal_weight, &
-      wear_angle_error, add_wear_error, wear_error_of
+  use interlock_plane_law, only: plane_frame, wear_weights, start_yield, start_weight, &
+      trapezoidal_end_weight, wear_angle_error, add_wear_error, wear_error_of
   use interlock_plane_law_3d, only: plane_start_3d_t, plane_law_3d_t, plane_law_3d_parts, &
       plane_traction_3d, start_direction, local_frame, contact_round_off, to_macro
   implicit none
@@ -288,17 +288,19 @@ contains
     ! weights have none)
     dip_o = 0.0_dp
     if (trapezoidal .or. estimate) dip_o = cp * s_o(2) + sp * s_o(3)
-    call wear_weights(mat, solver%scheme, o%dmg, o%tauf(1), c_o, sn_o, s_o(1), dip_o, a_w, &
-                      g_slip)
     mu_p_o = 0.0_dp
     g_trap = 0.0_dp
+    if (trapezoidal .or. estimate) then
+      mu_p_o = start_yield(mat, c_o, sn_o, s_o(1), dip_o)
+      g_trap = start_weight(o%dmg, mu_p_o)
+    end if
     if (trapezoidal) then
-      mu_p_o = start_yield(mat, c_o, sn_o, s_o(1), dip_o)
-      ! (wear_weights' start weight)
-      g_trap = g_slip
-    else if (estimate) then
-      mu_p_o = start_yield(mat, c_o, sn_o, s_o(1), dip_o)
-      g_trap = trapezoidal_weight(mat, o%dmg, c_o, sn_o, s_o(1), dip_o)
+      ! (wear_weights' trapezoidal weights, from the start yield above)
+      a_w = trapezoidal_end_weight
+      g_slip = g_trap
+    else
+      call wear_weights(mat, solver%scheme, o%dmg, o%tauf(1), c_o, sn_o, s_o(1), dip_o, a_w, &
+                        g_slip)
     end if
     ! D14's start direction of slip (the trapezoidal scheme; none in the plane (n, t1), where the
     ! direction cannot turn)
