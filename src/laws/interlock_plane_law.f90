@@ -19,9 +19,13 @@ module interlock_plane_law
   implicit none
   private
   public :: plane_response_t, plane_law, add_rotated, traction_angle_slope, plane_frame
-  public :: start_yield, trapezoidal_weight, wear_weights, wear_driver, coupled_wear
+  public :: start_yield, trapezoidal_weight, start_weight, trapezoidal_end_weight, wear_weights
+  public :: wear_driver, coupled_wear
   public :: wear_angle_error, add_wear_error, wear_error_of
   public :: normal_traction, tangential_traction
+
+  !> The trapezoidal scheme's weight a_end of the end work D |tau_f| |d sf| (D11, wear_weights)
+  real(dp), parameter :: trapezoidal_end_weight = 0.5_dp
 
   !> One plane over one step, in its own frame, from its start state (beta_o, D_o, sf_o) to the
   !> local separation (s_kn, s_kt). Derivatives are with respect to (s_kn, s_kt) at fixed start
@@ -165,7 +169,7 @@ contains
       a_end = 1.0_dp
       g_slip = 0.0_dp
     else
-      a_end = 0.5_dp
+      a_end = trapezoidal_end_weight
       g_slip = trapezoidal_weight(mat, d_o, c, sn, s_o_n, s_o_t)
     end if
   end subroutine wear_weights
@@ -174,8 +178,15 @@ contains
   elemental real(dp) function trapezoidal_weight(mat, d_o, c, sn, s_o_n, s_o_t) result(g)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: d_o, c, sn, s_o_n, s_o_t
-    g = 0.5_dp * d_o * start_yield(mat, c, sn, s_o_n, s_o_t)
+    g = start_weight(d_o, start_yield(mat, c, sn, s_o_n, s_o_t))
   end function trapezoidal_weight
+
+  !> The trapezoidal start weight D_o mu p_o / 2 of a start yield mu_p = mu p_o (start_yield)
+  !> that the caller has already.
+  elemental real(dp) function start_weight(d_o, mu_p) result(g)
+    real(dp), intent(in) :: d_o, mu_p
+    g = 0.5_dp * d_o * mu_p
+  end function start_weight
 
   !> The wear driver G = a_end D |tau_f| |d sf| + g_slip |d sf| of the plane's response p and
   !> its derivative with respect to (s_kn, s_kt) at fixed start state (d|tau_f| = sign(tau_f)

@@ -199,8 +199,11 @@ contains
     type(interlock_state_3d_t) :: st
     type(plane_chain_t) :: jc(max_planes, 2)
     real(dp) :: ds(3), s_old(3), s_end(3), alpha, h, a_end, err, chain_peak, tangent_trial(3, 3)
-    integer :: it, n_accepted, k, n, cur, trial
-    logical :: solved, stable, control, kept, give_up, allowed, whole, chained
+    !> the planes' frames of the start angles of the current sub-increment (slot fs) and of
+    !> the end angles of the trial (3 - fs): each state's computed once
+    real(dp) :: frames(2, max_planes, 2)
+    integer :: it, n_accepted, k, n, cur, trial, fs
+    logical :: solved, stable, control, kept, give_up, allowed, whole, chained, known
 
     control = tol >= 0.0_dp .and. tol < huge(1.0_dp)
     n = mat%n_planes
@@ -217,6 +220,8 @@ contains
     info%attempts = 0
     tangent = 0.0_dp
     chain_peak = 0.0_dp
+    known = .false.
+    fs = 1
     do while (alpha < 1.0_dp)
       call next_sub_increment(alpha, h, a_end)
       s_end = s_old + a_end * ds
@@ -243,14 +248,15 @@ contains
         select case (cur)
         case (0)
           call step_3d(mat, solver, s_end, old, new, tangent_trial, it, solved, .true., alpha, &
-                       a_end, jc(1:n, 2), jc(1:n, 1), .true., err, in_plane)
+                       a_end, jc(1:n, 2), jc(1:n, 1), .true., err, in_plane, frames, known, fs)
         case (1)
           call step_3d(mat, solver, s_end, new, st, tangent_trial, it, solved, .true., alpha, &
-                       a_end, jc(1:n, 1), jc(1:n, 2), .true., err, in_plane)
+                       a_end, jc(1:n, 1), jc(1:n, 2), .true., err, in_plane, frames, known, fs)
         case default
           call step_3d(mat, solver, s_end, st, new, tangent_trial, it, solved, .true., alpha, &
-                       a_end, jc(1:n, 2), jc(1:n, 1), .true., err, in_plane)
+                       a_end, jc(1:n, 2), jc(1:n, 1), .true., err, in_plane, frames, known, fs)
         end select
+        known = .true.
       end if
       info%newton_iterations = max(info%newton_iterations, it)
       stable = .true.
@@ -273,6 +279,7 @@ contains
         end if
         alpha = a_end
         n_accepted = n_accepted + 1
+        fs = 3 - fs
       end if
       call next_size(kept, control, err, tol, h)
     end do

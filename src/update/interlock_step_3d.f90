@@ -18,8 +18,8 @@ module interlock_step_3d
   use interlock_friction, only: direction_turn_of, unit_direction_turn
   use interlock_wear, only: worn_angle, worn_angle_slope, wear_root_t, wear_root_begin, &
       wear_root_update
-  use interlock_plane_law, only: plane_frame, wear_weights, start_yield, trapezoidal_weight, &
-      wear_angle_error, add_wear_error, wear_error_of
+  use interlock_plane_law, only: plane_frame, wear_weights, start_yield, start_weight, &
+      trapezoidal_end_weight, wear_angle_error, add_wear_error, wear_error_of
   use interlock_plane_law_3d, only: plane_start_3d_t, plane_law_3d_t, plane_law_3d_parts, &
       plane_traction_3d, start_direction, local_frame, contact_round_off, to_macro
   implicit none
@@ -56,7 +56,7 @@ contains
   !> (F' there comes with the start angle's evaluation; on small steps it usually meets the
   !> tolerance at once), as the specialised kernels' does.
   pure subroutine step_3d(mat, solver, s, old, new, tangent, iterations, ok, chain, h_start, &
-                          h_end, jo, jn, estimate, err, in_plane)
+                          h_end, jo, jn, estimate, err, in_plane, frames, known, slot)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     real(dp), intent(in) :: s(3), h_start, h_end
@@ -69,14 +69,21 @@ contains
     type(plane_chain_t), intent(in) :: jo(:)
     type(plane_chain_t), intent(inout) :: jn(:)
     logical, intent(in), optional :: in_plane
+    !> (all three or none; with `chain`) the planes' frames (cos, sin) of the start angles in
+    !> frames(:, :, slot), read where `known`, else written, and, where ok, of the end angles
+    !> in frames(:, :, 3 - slot): the next sub-increment's start frames, not computed again
+    !> (the planes evaluated alone: the first where identical flat planes share one history)
+    real(dp), intent(inout), optional :: frames(2, max_planes, 2)
+    logical, intent(in), optional :: known
+    integer, intent(in), optional :: slot
     type(plane_law_3d_t) :: p
     type(plane_start_3d_t) :: o
     type(wear_root_t) :: rt
     real(dp) :: area, darea, gam, w, sig(3), sig_k(3), s_o(3), zeta, &
-                theta, e, dsig_dtheta(3), turn, err_angle, err_traction, c_o(max_planes), &
-                sn_o(max_planes), diss_damage, diss_friction, stored
+                theta, e, dsig_dtheta(3), turn, err_angle, err_traction, fo(2, max_planes), &
+                c_n, sn_n, diss_damage, diss_friction, stored
     integer :: k, n_eval, it, ncol
-    logical :: shared
+    logical :: shared, carried
 
     ok = .true.
     iterations = 0
@@ -98,9 +105,25 @@ contains
     area = 1.0_dp
     darea = 0.0_dp
     if (mat%use_depth) call contact_area(s(1), mat%inv_h_n, area, darea)
+    ! Identical flat planes share one history: computed once, copied (SPEC section 7).
+    shared = mat%flat .and. mat%azimuths_zero
+    n_eval = merge(1, mat%n_planes, shared)
+    carried = present(frames)
+    if (carried) then
+      ! (the start frames as below, or the caller's)
+      if (known) then
+        fo(:, 1:n_eval) = frames(:, 1:n_eval, slot)
+      else
+        do k = 1, n_eval
+          call plane_frame(mat, k, old%theta(k), fo(1, k), fo(2, k))
+        end do
+        frames(:, 1:n_eval, slot) = fo(:, 1:n_eval)
+      end if
+    end if
 
     if (area <= 0.0_dp) then
       ! Separated (decision D7): nothing transmitted, no bond survives, nothing slides.
+      if (carried) frames(:, 1:n_eval, 3 - slot) = fo(:, 1:n_eval)
       do k = 1, mat%n_planes
         new%beta(k) = old%beta(k)
         new%damage(k) = old%damage(k)
@@ -125,24 +148,27 @@ contains
         end if
       end do
     else
-      ! Identical flat planes share one history: computed once, copied (SPEC section 7).
-      shared = mat%flat .and. mat%azimuths_zero
-      n_eval = merge(1, mat%n_planes, shared)
       ! The start angles' frames first (the stored ones unless worn): libm's sincos sets and
       ! restores the rounding mode, which waits for the floating-point work before it, so that
       ! the planes' laws after it overlap (the same values).
-      do k = 1, n_eval
-        call plane_frame(mat, k, old%theta(k), c_o(k), sn_o(k))
-      end do
+      if (.not. carried) then
+        do k = 1, n_eval
+          call plane_frame(mat, k, old%theta(k), fo(1, k), fo(2, k))
+        end do
+      end if
       do k = 1, n_eval
         o = plane_of(old, k)
         gam = merge(1.0_dp, mat%gamma_hat(k), shared)
         w = gam * area
-        call plane_step(mat, mat%cos_phi(k), mat%sin_phi(k), c_o(k), sn_o(k), solver, k, s, &
+        call plane_step(mat, mat%cos_phi(k), mat%sin_phi(k), fo(1, k), fo(2, k), solver, k, s, &
                         s_o, o, estimate, chain, h_start, h_end, jo(min(k, size(jo))), ncol, &
                         w, p, sig_k, tangent, zeta, theta, jn(min(k, size(jn))), e, &
-                        dsig_dtheta, turn, it, ok, rt)
+                        dsig_dtheta, turn, it, ok, rt, c_n, sn_n)
         if (.not. ok) return
+        if (carried) then
+          frames(1, k, 3 - slot) = c_n
+          frames(2, k, 3 - slot) = sn_n
+        end if
         iterations = max(iterations, it)
         if (estimate) then
           call add_wear_error(e, w, [dsig_dtheta(1), max(abs(dsig_dtheta(2)), &
@@ -240,7 +266,7 @@ contains
   !> dsig_dtheta = d sig_k / d theta at fixed s.
   pure subroutine plane_step(mat, cp, sp, c_o, sn_o, solver, k, s, s_o, o, estimate, chain, &
                              h_start, h_end, jo, ncol, w, p, sig_k, tangent, zeta, theta, jn, &
-                             e, dsig_dtheta, turn, iterations, ok, rt)
+                             e, dsig_dtheta, turn, iterations, ok, rt, c_n, sn_n)
     type(interlock_material_t), intent(in) :: mat
     real(dp), intent(in) :: cp, sp   !< cos and sin of the plane's azimuth
     real(dp), intent(in) :: c_o, sn_o   !< cos and sin of its start angle (plane_frame)
@@ -266,6 +292,9 @@ contains
     !> repeated on every plane of every scheme (wear_root_begin sets it where an iteration
     !> starts; nothing else reads it)
     type(wear_root_t), intent(inout) :: rt
+    !> the frame (cos, sin) of the end angle `theta` (the explicit scheme's worn angle's: with
+    !> `chain` before the increment's end alone, where a next sub-increment starts there)
+    real(dp), intent(out) :: c_n, sn_n
     real(dp) :: c, sn, dip_o, mu_p_o, a_w, g_slip, g_trap, drv, g_drv(3), thp, fp, &
                 ksl(3), dtheta_sl(3), k_k(3, 3), tie, n_o(2)
     logical :: coupled, wears, trapezoidal, drivers, flat, terms, pinned, mean_o, angle
@@ -288,17 +317,19 @@ contains
     ! weights have none)
     dip_o = 0.0_dp
     if (trapezoidal .or. estimate) dip_o = cp * s_o(2) + sp * s_o(3)
-    call wear_weights(mat, solver%scheme, o%dmg, o%tauf(1), c_o, sn_o, s_o(1), dip_o, a_w, &
-                      g_slip)
     mu_p_o = 0.0_dp
     g_trap = 0.0_dp
+    if (trapezoidal .or. estimate) then
+      mu_p_o = start_yield(mat, c_o, sn_o, s_o(1), dip_o)
+      g_trap = start_weight(o%dmg, mu_p_o)
+    end if
     if (trapezoidal) then
-      mu_p_o = start_yield(mat, c_o, sn_o, s_o(1), dip_o)
-      ! (wear_weights' start weight)
-      g_trap = g_slip
-    else if (estimate) then
-      mu_p_o = start_yield(mat, c_o, sn_o, s_o(1), dip_o)
-      g_trap = trapezoidal_weight(mat, o%dmg, c_o, sn_o, s_o(1), dip_o)
+      ! (wear_weights' trapezoidal weights, from the start yield above)
+      a_w = trapezoidal_end_weight
+      g_slip = g_trap
+    else
+      call wear_weights(mat, solver%scheme, o%dmg, o%tauf(1), c_o, sn_o, s_o(1), dip_o, a_w, &
+                        g_slip)
     end if
     ! D14's start direction of slip (the trapezoidal scheme; none in the plane (n, t1), where the
     ! direction cannot turn)
@@ -365,6 +396,9 @@ contains
     ! where the open side wears less, F jumps from < 0 to > 0 there), stays there as s moves:
     ! the angle follows the plane's contact, s_kn(theta, s) = 0, so that d theta / d s = -m /
     ! s_kt1 (d s_kn / d theta = s_kt1), not the wear equation's slope.
+    ! (the frame of the last point evaluated, the root's)
+    c_n = c
+    sn_n = sn
     pinned = .false.
     if (phase > 0) then
       if (rt%at_jump) pinned = abs(p%sl(2)) > 0.0_dp .and. abs(thp) > 0.0_dp .and. &
@@ -380,6 +414,7 @@ contains
         if (zeta > o%zeta) then
           call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), zeta, theta, &
                           thp)
+          if (chain .and. h_end < 1.0_dp) call plane_frame(mat, k, theta, c_n, sn_n)
         else if (chain) then
           ! (the slope for the chain alone)
           thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), o%theta)
