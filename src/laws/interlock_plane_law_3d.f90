@@ -260,16 +260,11 @@ contains
                                     u, cos_psi, sin_psi, p%dmg, p%g_dmg, grows, drivers, p%tauf, &
                                     p%g_tauf, p%sf, dsf, slip_norm, p%wear_start, p%wear_end, &
                                     p%g_wear_start, p%g_wear_end)
-          if (chain) then
-            do i = 1, 2
-              p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
-            end do
-          end if
           p%slip_dip = abs(dsf(1))
-          x = slip_norm * abs(n_new(1))
-          atau = p%dmg * abs(p%tauf(1))
           if (chain) then
             ! d / d phi_o: n_new turns with n_o (phi_nn), the slip dsf = (tau_tr - tau_f) / K_t
+            x = slip_norm * abs(n_new(1))
+            atau = p%dmg * abs(p%tauf(1))
             p%mean = .true.
             phi_nn(1) = -n_new(2) * phi_turn
             phi_nn(2) = n_new(1) * phi_turn
@@ -340,11 +335,6 @@ contains
           call mean_direction_tie(mat%kt, mat%inv_kt, tr, n_o, n_new, g_mu, p%dmg, slip_norm, &
                                   drivers, p%g_tauf, p%wear_start, p%wear_end, p%g_slip_dip, &
                                   p%g_wear_start, p%g_wear_end)
-          if (chain) then
-            do i = 1, 2
-              p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
-            end do
-          end if
           atau = 0.0_dp
           if (chain) then
             ! (the slide's derivatives with mu p = 0: tau_f and the slip do not turn with n_o)
@@ -368,6 +358,12 @@ contains
           closed_at_zero = .true.
         end if
       end if
+    end if
+    ! (D14's slide, or its tie: sf = s_kt - tau_f / K_t)
+    if (chain .and. mean_direction) then
+      do i = 1, 2
+        p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
+      end do
     end if
     if (.not. closed_at_zero) then
       atau = abs(p%tauf(1))

@@ -32,6 +32,9 @@ module interlock_kernels_3d
   !> A trial friction traction whose components reach this is left to the general path (its
   !> norm is scaled there against overflow of the squares)
   real(dp), parameter :: trial_bound = 1.0e150_dp
+  !> The plane law's trapezoidal wear terms and D14 (interlock_kernel_planes_3d.inc) are not
+  !> compiled into this kernel
+  logical, parameter :: trapezoidal_terms = .false.
   !> The scheme of this kernel's planes (scheme_plane's wear weights)
   type(interlock_solver_t), parameter :: explicit_solver = interlock_solver_t(scheme=scheme_explicit)
 

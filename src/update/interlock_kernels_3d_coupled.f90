@@ -33,6 +33,9 @@ module interlock_kernels_3d_coupled
   !> A trial friction traction whose components reach this is left to the general path (its
   !> norm is scaled there against overflow of the squares)
   real(dp), parameter :: trial_bound = 1.0e150_dp
+  !> The plane law's trapezoidal wear terms and D14 (interlock_kernel_planes_3d.inc) are not
+  !> compiled into this kernel
+  logical, parameter :: trapezoidal_terms = .false.
 
 contains
 
@@ -69,7 +72,7 @@ contains
     type(interlock_state_3d_t), intent(inout) :: new
     integer, intent(out) :: iterations
     logical, intent(out) :: ok
-    call coupled_plane(mat, solver, .false., k, cp, sp, c_o, sn_o, s, old, gam, area, darea, &
+    call coupled_plane(mat, solver, k, cp, sp, c_o, sn_o, s, old, gam, area, darea, &
                        sigma, tangent, energy, new, iterations, ok)
   end subroutine scheme_plane
 
