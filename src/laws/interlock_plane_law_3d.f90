@@ -377,26 +377,32 @@ contains
 
     ! The wear drivers in the dip direction.
     p%wfric_dip = p%dmg * atau * p%slip_dip
-    if (trapezoidal_terms .and. .not. mean_direction) p%wear_end = p%wfric_dip
-    if (drivers .and. .not. mean_direction) then
-      if (grows) then
-        p%g_wfric_dip = (p%g_dmg * atau + p%dmg * g_atau) * p%slip_dip + &
-                        (p%dmg * atau) * p%g_slip_dip
-      else
-        ! (g_dmg = 0)
-        p%g_wfric_dip = (p%dmg * g_atau) * p%slip_dip + (p%dmg * atau) * p%g_slip_dip
-      end if
-    end if
     if (trapezoidal_terms .and. .not. mean_direction) then
       if (in_plane) then
         ! (in the plane (n, t1) the slip is along the dip: share 1, d share 0)
         p%wear_start = p%slip_dip
-        if (drivers) p%g_wear_start = p%g_slip_dip
       else
         call straight_wear_start(p%slip_dip, slip_norm, p%g_slip_dip, g_slip_norm, drivers, &
                                  p%wear_start, p%g_wear_start)
       end if
-      if (drivers) p%g_wear_end = p%g_wfric_dip
+      p%wear_end = p%wfric_dip
+    end if
+    if (drivers) then
+      if (.not. mean_direction) then
+        if (grows) then
+          p%g_wfric_dip = (p%g_dmg * atau + p%dmg * g_atau) * p%slip_dip + &
+                          (p%dmg * atau) * p%g_slip_dip
+        else
+          ! (g_dmg = 0)
+          p%g_wfric_dip = (p%dmg * g_atau) * p%slip_dip + (p%dmg * atau) * p%g_slip_dip
+        end if
+      end if
+      if (trapezoidal_terms .and. in_plane) then
+        p%g_wear_start = p%g_slip_dip
+        p%g_wear_end = p%g_wfric_dip
+      else if (trapezoidal_terms .and. .not. mean_direction) then
+        p%g_wear_end = p%g_wfric_dip
+      end if
     end if
 
     p%pos = pos
