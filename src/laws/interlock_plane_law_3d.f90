@@ -16,13 +16,14 @@ module interlock_plane_law_3d
   use interlock_kinds, only: dp
   use interlock_material, only: interlock_material_t
   use interlock_damage, only: damage_growth, damage_may_grow
-  use interlock_friction, only: radial_return
+  use interlock_friction, only: radial_return, vector_norm, norm_gradient, sign_of, &
+      slides_at_start, start_direction, mean_direction_return, mean_direction_slide, &
+      mean_direction_tie, straight_wear_start
   use interlock_plane_law, only: normal_traction, tangential_traction
   implicit none
   private
   public :: plane_start_3d_t, plane_law_3d_t, plane_law_3d, plane_law_3d_parts, &
-            plane_traction_3d, slides_at_start, start_direction, local_frame, contact_round_off, &
-            to_macro
+            plane_traction_3d, slides_at_start, local_frame, contact_round_off, to_macro
 
   !> One plane's state at the start of a step (SPEC section 9: D, beta, sf(2), zeta, theta,
   !> tauf(2); vectors in the plane's (e, q) frame).
@@ -155,9 +156,8 @@ contains
     logical, intent(in) :: mean_o, drivers, chain, traction, trapezoidal_terms, in_plane
     type(plane_law_3d_t), intent(out) :: p
     real(dp) :: pos, dpos, tn, tn2, gd_n, gd_t, mu_p, g_mu(3), tr(2), trn, nv(2), g_nv(3, 2), &
-                n_new(2), g_psi(3), nt(2), dsf(2), g_dsf(3, 2), slip_norm, &
-                g_slip_norm(3), atau, g_atau(3), share, g_share(3), x, g_x(3), phi_turn, phi_nn(2), &
-                phi_slip_norm, phi_x, u(2), cos_psi, sin_psi, un, ut, sg
+                n_new(2), g_psi(3), dsf(2), slip_norm, g_slip_norm(3), atau, g_atau(3), x, &
+                phi_turn, phi_nn(2), phi_slip_norm, phi_x, u(2), cos_psi, sin_psi
     integer :: i
     logical :: closed_at_zero, mean_direction, grows, open
 
@@ -249,53 +249,22 @@ contains
         g_slip_norm = 0.0_dp
       else
         if (mean_o .and. .not. in_plane) &
-          call mean_direction_return(mat, n_o, tr, mu_p, g_mu(1), chain, drivers, mean_direction, &
-                                     n_new, g_psi, phi_turn, u, cos_psi, sin_psi)
+          call mean_direction_return(mat%kt, n_o, tr, mu_p, g_mu(1), chain, drivers, &
+                                     mean_direction, n_new, g_psi, phi_turn, u, cos_psi, sin_psi)
         ! |tau_f| = mu p sliding, in either direction rule
         p%tauf_norm = mu_p
         if (mean_direction) then
           ! D14: the slip increment along the mean of the start and end directions, |tau_f| =
-          ! mu p along n_new; the slip of the step is what the trial traction exceeds it by.
-          ! (d n_new(i) = nt(i) d psi, nt = 2 n_new turned by +90 deg; mu p has an s_kn entry
-          ! alone)
-          nt(1) = -2.0_dp * n_new(2)
-          nt(2) = 2.0_dp * n_new(1)
-          do i = 1, 2
-            p%tauf(i) = mu_p * n_new(i)
-            p%g_tauf(1, i) = n_new(i) * g_mu(1) + mu_p * (nt(i) * g_psi(1))
-            p%g_tauf(2, i) = mu_p * (nt(i) * g_psi(2))
-            p%g_tauf(3, i) = mu_p * (nt(i) * g_psi(3))
-            dsf(i) = (tr(i) - p%tauf(i)) * mat%inv_kt
-            p%sf(i) = sl(1 + i) - p%tauf(i) * mat%inv_kt
-            if (chain) p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
-          end do
-          slip_norm = vector_norm(dsf)
+          ! mu p along n_new, and the trapezoidal wear terms (interlock_friction)
+          call mean_direction_slide(mu_p, g_mu(1), mat%inv_kt, sl(2:3), tr, n_o, n_new, g_psi, &
+                                    u, cos_psi, sin_psi, p%dmg, p%g_dmg, grows, drivers, p%tauf, &
+                                    p%g_tauf, p%sf, dsf, slip_norm, p%wear_start, p%wear_end, &
+                                    p%g_wear_start, p%g_wear_end)
           p%slip_dip = abs(dsf(1))
-          ! the flow is along the friction traction: the wear rate D mu p n_1^2 |d sf| / dt
-          ! at the start and at the end of the step, for the trapezoidal rule
-          p%wear_start = slip_norm * (n_o(1) * n_o(1))
-          x = slip_norm * abs(n_new(1))
-          atau = p%dmg * abs(p%tauf(1))
-          p%wear_end = atau * x
-          if (drivers) then
-            ! d|d sf| = u . d dsf along the slip's direction, the mean direction u, d dsf = d s_kt
-            ! - d tau_f / K_t: u . d tau_f = (u . n_new) d(mu p) + mu p (u . nt) d psi, u . n_new
-            ! = cos psi, u . nt = -2 sin psi
-            un = cos_psi * mat%inv_kt
-            ut = (2.0_dp * mu_p * sin_psi) * mat%inv_kt
-            g_slip_norm(1) = -(un * g_mu(1) - ut * g_psi(1))
-            g_slip_norm(2) = u(1) + ut * g_psi(2)
-            g_slip_norm(3) = u(2) + ut * g_psi(3)
-            p%g_wear_start = g_slip_norm * (n_o(1) * n_o(1))
-            ! (tau_f,1 = mu p n_new,1: the sign of n_new,1)
-            sg = sign_of(n_new(1))
-            g_x = g_slip_norm * abs(n_new(1)) + (slip_norm * sg * nt(1)) * g_psi
-            g_atau = (p%dmg * sg) * p%g_tauf(:, 1)
-            if (grows) g_atau = p%g_dmg * abs(p%tauf(1)) + g_atau
-            p%g_wear_end = g_atau * x + atau * g_x
-          end if
           if (chain) then
             ! d / d phi_o: n_new turns with n_o (phi_nn), the slip dsf = (tau_tr - tau_f) / K_t
+            x = slip_norm * abs(n_new(1))
+            atau = p%dmg * abs(p%tauf(1))
             p%mean = .true.
             phi_nn(1) = -n_new(2) * phi_turn
             phi_nn(2) = n_new(1) * phi_turn
@@ -358,35 +327,20 @@ contains
         tr(2) = mat%kt * (sl(3) - o%sf(2))
         trn = vector_norm(tr)
         if (trn > 0.0_dp .and. mean_o .and. .not. in_plane) &
-          call mean_direction_return(mat, n_o, tr, mu_p, g_mu(1), .false., .false., &
+          call mean_direction_return(mat%kt, n_o, tr, mu_p, g_mu(1), .false., .false., &
                                      mean_direction, n_new, g_psi, phi_turn, u, cos_psi, sin_psi)
         if (mean_direction) then
           ! and D14's direction where the plane slid at the start (the trapezoidal scheme):
           ! the slip (tau_tr - mu p n_new) / K_t, its values the free plane's
-          do i = 1, 2
-            p%g_tauf(:, i) = n_new(i) * g_mu
-            if (chain) p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
-          end do
+          call mean_direction_tie(mat%kt, mat%inv_kt, tr, n_o, n_new, g_mu, p%dmg, slip_norm, &
+                                  drivers, p%g_tauf, p%wear_start, p%wear_end, p%g_slip_dip, &
+                                  p%g_wear_start, p%g_wear_end)
           atau = 0.0_dp
           if (chain) then
             ! (the slide's derivatives with mu p = 0: tau_f and the slip do not turn with n_o)
             p%mean = .true.
             p%phi_wear_start = -2.0_dp * slip_norm * n_o(1) * n_o(2)
             p%dmg_wear_end = 0.0_dp
-          end if
-          p%wear_start = slip_norm * (n_o(1) * n_o(1))
-          p%wear_end = 0.0_dp
-          if (drivers) then
-            do i = 1, 2
-              dsf(i) = tr(i) * mat%inv_kt
-              g_dsf(:, i) = (0.0_dp - p%g_tauf(:, i)) * mat%inv_kt
-              g_dsf(1 + i, i) = (mat%kt - p%g_tauf(1 + i, i)) * mat%inv_kt
-            end do
-            g_slip_norm = norm_gradient(dsf, vector_norm(dsf), g_dsf)
-            p%g_slip_dip = sign_of(dsf(1)) * g_dsf(:, 1)
-            g_atau = abs(n_new(1)) * g_mu
-            p%g_wear_start = g_slip_norm * (n_o(1) * n_o(1))
-            p%g_wear_end = p%dmg * g_atau * (slip_norm * abs(n_new(1)))
           end if
           closed_at_zero = .true.
         else if (trn > 0.0_dp) then
@@ -405,6 +359,12 @@ contains
         end if
       end if
     end if
+    ! (D14's slide, or its tie: sf = s_kt - tau_f / K_t)
+    if (chain .and. mean_direction) then
+      do i = 1, 2
+        p%g_sf(:, i) = e_t(:, i) - p%g_tauf(:, i) * mat%inv_kt
+      end do
+    end if
     if (.not. closed_at_zero) then
       atau = abs(p%tauf(1))
       if (drivers) g_atau = sign_of(p%tauf(1)) * p%g_tauf(:, 1)
@@ -417,11 +377,14 @@ contains
 
     ! The wear drivers in the dip direction.
     p%wfric_dip = p%dmg * atau * p%slip_dip
-    ! (in the plane (n, t1) the slip is along the dip: share 1, d share 0)
-    share = 1.0_dp
     if (trapezoidal_terms .and. .not. mean_direction) then
-      if (slip_norm > 0.0_dp .and. .not. in_plane) share = p%slip_dip / slip_norm
-      p%wear_start = p%slip_dip * share
+      if (in_plane) then
+        ! (in the plane (n, t1) the slip is along the dip: share 1, d share 0)
+        p%wear_start = p%slip_dip
+      else
+        call straight_wear_start(p%slip_dip, slip_norm, p%g_slip_dip, g_slip_norm, drivers, &
+                                 p%wear_start, p%g_wear_start)
+      end if
       p%wear_end = p%wfric_dip
     end if
     if (drivers) then
@@ -438,9 +401,6 @@ contains
         p%g_wear_start = p%g_slip_dip
         p%g_wear_end = p%g_wfric_dip
       else if (trapezoidal_terms .and. .not. mean_direction) then
-        g_share = 0.0_dp
-        if (slip_norm > 0.0_dp) g_share = (p%g_slip_dip - share * g_slip_norm) / slip_norm
-        p%g_wear_start = p%g_slip_dip * share + p%slip_dip * g_share
         p%g_wear_end = p%g_wfric_dip
       end if
     end if
@@ -498,133 +458,5 @@ contains
            p%dmg * (p%tauf(1) * p%sf(1) + p%tauf(2) * p%sf(2))
     p%psi = 0.5_dp * work
   end subroutine plane_traction_3d
-
-  !> D14's slip direction of a plane that slides over the whole step (SPEC decision D14): with
-  !> the start direction n_o = tauf_o / |tauf_o| and the trial traction tau_tr, the slip
-  !> increment along the mean direction (n_o + n_new) / |n_o + n_new| and tau_f = mu p n_new
-  !> make tau_tr - mu p n_new parallel to that mean, which is then the direction of
-  !> v = tau_tr + mu p n_o; n_new is n_o turned by twice v's angle psi from n_o. In n_o's
-  !> frame, v = (a, b) with a = tau_tr . n_o + mu p, b = n_o x tau_tr: n_new = ((a^2 - b^2)
-  !> n_o + 2 a b n_o') / (a^2 + b^2), n_o' = n_o turned by +90 deg; closed form, no iteration
-  !> (with b = 0, as in every 2D step, n_new = n_o to the bit). Its derivative: d n_new = 2
-  !> d psi n_new', d psi = (a db - b da) / (a^2 + b^2), through tau_tr (K_t d s_kt) and mu p.
-  !> Applies (`ok`) where the plane slides at the start (the caller's, start_direction) and
-  !> the turn 2 psi is at most 90 deg (a >= |b|); else radial return (a reversal turns by 180
-  !> deg). The caller has |tau_tr| > mu p (sliding at the end).
-  pure subroutine mean_direction_return(mat, n_o, tr, mu_p, g_mu1, chain, drivers, ok, n_new, &
-                                        g_psi, phi_turn, u, cos_psi, sin_psi)
-    type(interlock_material_t), intent(in) :: mat
-    real(dp), intent(in) :: n_o(2)   !< the start direction (start_direction)
-    real(dp), intent(in) :: tr(2), mu_p
-    real(dp), intent(in) :: g_mu1   !< d(mu p) / d s_kn (its only entry)
-    logical, intent(in) :: chain   !< phi_turn is wanted
-    logical, intent(in) :: drivers   !< u, cos_psi and sin_psi are wanted
-    logical, intent(out) :: ok
-    !> n_new; d psi / d sl in g_psi (d n_new = 2 d psi n_new'); with `chain` the turn of
-    !> n_new's angle per turn of n_o's, d (phi_o + 2 psi) / d phi_o
-    real(dp), intent(out) :: n_new(2), g_psi(3), phi_turn
-    !> the mean direction u = v / |v| (the slip's) and (cos, sin)(psi) of its angle from n_o
-    real(dp), intent(out) :: u(2), cos_psi, sin_psi
-    real(dp) :: a, b, a2, b2, v2, m, scale_ab, inv_norm, inv_v2, va(2)
-    ok = .false.
-    a = tr(1) * n_o(1) + tr(2) * n_o(2) + mu_p
-    b = n_o(1) * tr(2) - n_o(2) * tr(1)
-    if (.not. (a > 0.0_dp .and. a >= abs(b))) return
-    ok = .true.
-    ! n_new depends on the direction of (a, b) only: scaled where the squares would overflow
-    ! (a trial traction from a huge admissible slip, as vector_norm)
-    m = max(abs(a), abs(b))
-    scale_ab = 1.0_dp
-    if (m >= 1.0e150_dp) then
-      a = a / m
-      b = b / m
-      scale_ab = m
-    end if
-    a2 = a * a
-    b2 = b * b
-    v2 = a2 + b2
-    n_new(1) = ((a2 - b2) * n_o(1) - (2.0_dp * a * b) * n_o(2)) / v2
-    n_new(2) = ((a2 - b2) * n_o(2) + (2.0_dp * a * b) * n_o(1)) / v2
-    ! da = d(mu p) + K_t n_o . d s_kt, db = K_t n_o x d s_kt (no s_kn entry), so that d psi =
-    ! (a db - b da) / |v|^2 = (K_t (-v_2, v_1) . d s_kt - b d(mu p)) / |v|^2 with v = a n_o +
-    ! b n_o' in the frame (e, q) (va; the slip's direction u = v / |v|)
-    va(1) = a * n_o(1) - b * n_o(2)
-    va(2) = a * n_o(2) + b * n_o(1)
-    inv_v2 = 1.0_dp / (v2 * scale_ab)
-    g_psi(1) = (0.0_dp - b * g_mu1) * inv_v2
-    g_psi(2) = (0.0_dp - va(2)) * (mat%kt * inv_v2)
-    g_psi(3) = va(1) * (mat%kt * inv_v2)
-    if (drivers) then
-      inv_norm = 1.0_dp / sqrt(v2)
-      cos_psi = a * inv_norm
-      sin_psi = b * inv_norm
-      u(1) = va(1) * inv_norm
-      u(2) = va(2) * inv_norm
-    end if
-    ! turning n_o by d phi_o: da = b d phi_o, db = -(a - mu p) d phi_o, so n_new's angle
-    ! phi_o + 2 psi turns by (2 a mu p / (a^2 + b^2) - 1) d phi_o
-    phi_turn = 0.0_dp
-    if (chain) phi_turn = 2.0_dp * a * (mu_p / scale_ab) / v2 - 1.0_dp
-  end subroutine mean_direction_return
-
-  !> D14's start: where a plane slides at the start of a step (slides_at_start with its start
-  !> friction traction tauf_o and the start state's mu p_o, interlock_plane_law's start_yield
-  !> with the start separation's dip component), `mean_o` and the start direction of slip n_o =
-  !> tauf_o / |tauf_o|; else not mean_o (radial return) and n_o = 0. A property of the start
-  !> state: taken once per step, not at each evaluation of a wear equation's iteration.
-  pure subroutine start_direction(tauf_o, mu_p_o, mean_o, n_o)
-    real(dp), intent(in) :: tauf_o(2), mu_p_o
-    logical, intent(out) :: mean_o
-    real(dp), intent(out) :: n_o(2)
-    real(dp) :: t_norm
-    mean_o = .false.
-    n_o = 0.0_dp
-    if (.not. mu_p_o > 0.0_dp) return
-    t_norm = vector_norm(tauf_o)
-    if (.not. slides_at_start(t_norm, mu_p_o)) return
-    mean_o = .true.
-    n_o(1) = tauf_o(1) / t_norm
-    n_o(2) = tauf_o(2) / t_norm
-  end subroutine start_direction
-
-  !> A plane slides at the start of a step: its friction traction's magnitude |tauf_o| is
-  !> mu p_o > 0, to a relative 1e-10 (the round-off between the stored friction traction and the
-  !> start pressure recomputed from the start separation at the start angle).
-  elemental logical function slides_at_start(tauf_o_norm, mu_p_o)
-    real(dp), intent(in) :: tauf_o_norm, mu_p_o
-    real(dp), parameter :: sliding_tol = 1.0e-10_dp
-    slides_at_start = mu_p_o > 0.0_dp .and. tauf_o_norm >= (1.0_dp - sliding_tol) * mu_p_o
-  end function slides_at_start
-
-  !> |a| of a tangential 2-vector. Its squares are taken as they are while they stay far from
-  !> overflow, else scaled by the larger component: an admissible state (a frictional slip of
-  !> 1e150 mm) times a stiff interface's K_t gives a trial traction whose square is beyond the
-  !> largest number.
-  pure real(dp) function vector_norm(a) result(r)
-    real(dp), intent(in) :: a(2)
-    real(dp) :: b(2), m
-    m = max(abs(a(1)), abs(a(2)))
-    if (m < 1.0e150_dp) then
-      r = sqrt(a(1) * a(1) + a(2) * a(2))
-    else
-      b(1) = a(1) / m
-      b(2) = a(2) / m
-      r = m * sqrt(b(1) * b(1) + b(2) * b(2))
-    end if
-  end function vector_norm
-
-  !> d|a| = (a / |a|) . da for the gradients g_a(:, i) = d a(i); 0 at a = 0 (a kink).
-  pure function norm_gradient(a, a_norm, g_a) result(g)
-    real(dp), intent(in) :: a(2), a_norm, g_a(3, 2)
-    real(dp) :: g(3)
-    g = 0.0_dp
-    if (a_norm > 0.0_dp) g = (a(1) / a_norm) * g_a(:, 1) + (a(2) / a_norm) * g_a(:, 2)
-  end function norm_gradient
-
-  !> The slope of |x|: -1 below 0, else +1 (the right side at 0).
-  elemental real(dp) function sign_of(x)
-    real(dp), intent(in) :: x
-    sign_of = merge(-1.0_dp, 1.0_dp, x < 0.0_dp)
-  end function sign_of
 
 end module interlock_plane_law_3d

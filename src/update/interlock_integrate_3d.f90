@@ -19,6 +19,7 @@ module interlock_integrate_3d
   use interlock_general_path, only: general_update_3d
   use interlock_kernels_3d, only: explicit_step_3d
   use interlock_kernels_3d_coupled, only: coupled_step_3d
+  use interlock_kernels_3d_trapezoidal, only: trapezoidal_step_3d
   use interlock_substep_control, only: largest_increments, stiffness_scale
   implicit none
   private
@@ -69,19 +70,24 @@ contains
       ! (a one-step solve that failed and was taken on sub-increments: the strike stiffness is
       ! then a chain; the general path computes it)
     end if
-    ! The explicit scheme's kernel (interlock_kernels_3d) and the implicit one's
-    ! (interlock_kernels_3d_coupled) where they apply; the general path takes what they
-    ! decline, and reports bad input. Their tangent stays within the general path's stable
-    ! bound on one step (interlock_substep_control:check_chain).
-    if ((solver%scheme == scheme_explicit .or. solver%scheme == scheme_implicit) .and. &
+    ! The explicit scheme's kernel (interlock_kernels_3d), the implicit one's
+    ! (interlock_kernels_3d_coupled) and the trapezoidal one's (interlock_kernels_3d_trapezoidal)
+    ! where they apply; the general path takes what they decline, and reports bad input. Their
+    ! tangent stays within the general path's stable bound on one step
+    ! (interlock_substep_control:check_chain).
+    if ((solver%scheme == scheme_explicit .or. solver%scheme == scheme_implicit .or. &
+         solver%scheme == scheme_trapezoidal) .and. &
         mat%prepared .and. solver%substep_tol <= 0.0_dp .and. all(within_separation_bound(s))) then
       if (solver%scheme == scheme_explicit) then
         call explicit_step_3d(mat, s, old, 1.0e6_dp * stiffness_scale(mat), new, sigma, &
                               tangent, done)
         iterations = 0
-      else
+      else if (solver%scheme == scheme_implicit) then
         call coupled_step_3d(mat, solver, s, old, 1.0e6_dp * stiffness_scale(mat), new, sigma, &
                              tangent, iterations, done)
+      else
+        call trapezoidal_step_3d(mat, solver, s, old, 1.0e6_dp * stiffness_scale(mat), new, &
+                                 sigma, tangent, iterations, done)
       end if
       if (done) then
         call one_step_report(info)

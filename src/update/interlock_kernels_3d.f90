@@ -19,7 +19,8 @@ module interlock_kernels_3d
       max_planes
   use interlock_state, only: interlock_state_3d_t, state_3d_end_point
   use interlock_damage, only: damage_may_grow, damage_growth
-  use interlock_friction, only: radial_return
+  use interlock_friction, only: radial_return, vector_norm, norm_gradient, &
+      mean_direction_return, mean_direction_slide, mean_direction_tie, straight_wear_start
   use interlock_geometry, only: contact_area
   use interlock_wear, only: worn_angle
   use interlock_plane_law, only: plane_frame, wear_weights, normal_traction, tangential_traction
@@ -31,6 +32,9 @@ module interlock_kernels_3d
   !> A trial friction traction whose components reach this is left to the general path (its
   !> norm is scaled there against overflow of the squares)
   real(dp), parameter :: trial_bound = 1.0e150_dp
+  !> The plane law's trapezoidal wear terms and D14 (interlock_kernel_planes_3d.inc) are not
+  !> compiled into this kernel
+  logical, parameter :: trapezoidal_terms = .false.
   !> The scheme of this kernel's planes (scheme_plane's wear weights)
   type(interlock_solver_t), parameter :: explicit_solver = interlock_solver_t(scheme=scheme_explicit)
 
@@ -70,13 +74,15 @@ contains
     integer, intent(out) :: iterations
     logical, intent(out) :: ok
     real(dp) :: sl(3), tie, beta, dmg, sf(2), tauf(2), slip_dip, g_wfric(3), sig_loc(3), &
-                k_loc(3, 3), tauf_norm, slip_norm, a_w, g_slip, zeta, theta, slope
+                k_loc(3, 3), tauf_norm, slip_norm, a_w, g_slip, zeta, theta, slope, wear(2), &
+                g_wear(3, 2)
     logical :: grows
 
     iterations = 0
-    call plane_at_angle(mat, k, cp, sp, c, sn, s, old, .false., .true., gam, area, darea, sigma, &
-                        tangent, energy, sl, tie, beta, dmg, sf, tauf, slip_dip, g_wfric, &
-                        sig_loc, k_loc, tauf_norm, slip_norm, grows, ok)
+    call plane_at_angle(mat, k, cp, sp, c, sn, s, old, .false., .true., .false., .false., &
+                        [0.0_dp, 0.0_dp], gam, area, darea, sigma, tangent, energy, sl, tie, &
+                        beta, dmg, sf, tauf, slip_dip, g_wfric, wear, g_wear, sig_loc, k_loc, &
+                        tauf_norm, slip_norm, grows, ok)
     if (.not. ok) return
 
     ! Explicit wear (eq. 25): the frictional work driven by the start state's friction traction,

@@ -18,11 +18,13 @@ module interlock_kernels_3d_coupled
       max_planes
   use interlock_state, only: interlock_state_3d_t, state_3d_end_point
   use interlock_damage, only: damage_may_grow, damage_growth
-  use interlock_friction, only: radial_return
+  use interlock_friction, only: radial_return, vector_norm, norm_gradient, start_direction, &
+      mean_direction_return, mean_direction_slide, mean_direction_tie, straight_wear_start
   use interlock_geometry, only: contact_area
   use interlock_wear, only: worn_angle, worn_angle_slope, wear_root_t, wear_root_begin, &
       wear_root_update
-  use interlock_plane_law, only: plane_frame, wear_weights, normal_traction, tangential_traction
+  use interlock_plane_law, only: plane_frame, wear_weights, start_yield, start_weight, &
+      trapezoidal_end_weight, normal_traction, tangential_traction
   use interlock_kinematics, only: to_local, to_global
   implicit none
   private
@@ -31,6 +33,9 @@ module interlock_kernels_3d_coupled
   !> A trial friction traction whose components reach this is left to the general path (its
   !> norm is scaled there against overflow of the squares)
   real(dp), parameter :: trial_bound = 1.0e150_dp
+  !> The plane law's trapezoidal wear terms and D14 (interlock_kernel_planes_3d.inc) are not
+  !> compiled into this kernel
+  logical, parameter :: trapezoidal_terms = .false.
 
 contains
 
@@ -54,19 +59,8 @@ contains
     call step_of_planes(mat, solver, s, old, limit, new, sigma, tangent, iterations, done)
   end subroutine coupled_step_3d
 
-  !> Plane k over the step to s (azimuth frame cp, sp; start angle's frame c_o, sn_o), area
-  !> fraction gam, contact area `area` (slope darea): a wearing plane's wear equation F(zeta)
-  !> = zeta - zeta_o - G(theta(zeta)), G = D |tau_f,1| |d sf_1|, from Newton's point at zeta_o
-  !> (F' there from the start angle's evaluation) by the iteration's points; where the root is
-  !> at the kink where the plane just loses contact and the last point is on the open side,
-  !> once more at the closed side's last point (the traction's derivative and the angle's from
-  !> the same side). One evaluation site of the law (plane_at_angle, with its traction, so
-  !> that the last point's is the root's), so that it is inlined once. Adds its weighted
-  !> traction, tangent (K_loc with the angle's term d sig_loc / d theta (x) d theta / d sl,
-  !> d theta / d sl = theta' dG / d sl / F' at the root; pinned at the contact kink, d theta /
-  !> d s = -m / s_kt1) and energies, stores its end state (a plane that does not wear: zeta_o
-  !> + G at its angle) in `new`; `iterations`: the wear equation's. `ok` false: declined
-  !> (plane_at_angle, or no root).
+  !> Plane k over the step to s in the implicit scheme (coupled_plane: its wear equation solved
+  !> and differentiated at the root); `ok` false: declined.
   pure subroutine scheme_plane(mat, solver, k, cp, sp, c_o, sn_o, s, old, gam, area, darea, &
                                sigma, tangent, energy, new, iterations, ok)
     type(interlock_material_t), intent(in) :: mat
@@ -78,104 +72,11 @@ contains
     type(interlock_state_3d_t), intent(inout) :: new
     integer, intent(out) :: iterations
     logical, intent(out) :: ok
-    type(wear_root_t) :: rt
-    real(dp) :: c, sn, sl(3), tie, beta, dmg, sf(2), tauf(2), slip_dip, g_wfric(3), sig_loc(3), &
-                k_loc(3, 3), tauf_norm, slip_norm, a_w, g_slip, zeta, theta, thp, fp, drv, &
-                g_drv(3), dtheta_sl(3), ksl(3)
-    integer :: phase, j
-    logical :: grows, wears, pinned, angle
-
-    iterations = 0
-    wears = mat%plane_wears(k)
-    ! (the implicit weights: a_w = 1, no start weight)
-    call wear_weights(mat, scheme_implicit, old%damage(k), old%tauf(k), c_o, sn_o, old%s(1), &
-                      0.0_dp, a_w, g_slip)
-    theta = old%theta(k)
-    zeta = old%zeta(k)
-    c = c_o
-    sn = sn_o
-    thp = 0.0_dp
-    fp = 1.0_dp
-    g_wfric = 0.0_dp
-    phase = 0
-    do
-      if (phase > 0) then
-        call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, &
-                        thp)
-        call plane_frame(mat, k, theta, c, sn)
-      end if
-      call plane_at_angle(mat, k, cp, sp, c, sn, s, old, wears, .false., gam, area, darea, &
-                          sigma, tangent, energy, sl, tie, beta, dmg, sf, tauf, slip_dip, &
-                          g_wfric, sig_loc, k_loc, tauf_norm, slip_norm, grows, ok)
-      if (.not. ok) return
-      drv = a_w * (dmg * abs(tauf(1)) * slip_dip) + g_slip * slip_dip
-      if (.not. wears) exit
-      if (phase == 0) thp = worn_angle_slope(mat%thetaf_eff(k), mat%inv_zeta0(k), old%theta(k))
-      g_drv = a_w * g_wfric
-      ! F' = 1 - theta' dG / d theta, dG / d theta = g_drv . d sl / d theta
-      fp = 1.0_dp - thp * (g_drv(1) * sl(2) - g_drv(2) * sl(1))
-      if (phase == 0) then
-        ! (no work: the root is zeta_o, the start angle)
-        if (.not. drv > 0.0_dp) exit
-        call wear_root_begin(rt, old%zeta(k), drv, fp)
-        phase = 1
-      else if (phase == 1) then
-        call wear_root_update(rt, rt%x - old%zeta(k) - drv, fp, solver%newton_tol, &
-                              solver%newton_max_iterations)
-        if (.not. rt%done) cycle
-        iterations = rt%iterations
-        ok = rt%ok
-        if (.not. ok) return
-        if (drv > 0.0_dp .or. abs(tauf(1)) + abs(tauf(2)) > 0.0_dp) exit
-        ! the root where the plane just loses contact, the last point on the open side: the
-        ! closed side's last point
-        rt%x = rt%lo
-        phase = 2
-      else
-        ! (phase 2: the closed side's last point taken)
-        exit
-      end if
-    end do
-    ! the angle's term, where the angle moves with s
-    angle = .false.
-    if (wears) then
-      ! A root on a jump of F where the plane loses contact stays there as s moves: the angle
-      ! follows the plane's contact, d theta / d s = -m / s_kt1; else d theta = theta' dG / F'
-      ! (none where dG = 0: a plane that sticks or is free; a NaN is kept).
-      pinned = .false.
-      if (phase > 0) then
-        zeta = rt%x
-        if (rt%at_jump) pinned = abs(sl(2)) > 0.0_dp .and. abs(thp) > 0.0_dp .and. &
-                                 .not. abs(sl(1)) > tie
-      end if
-      if (pinned) then
-        dtheta_sl = 0.0_dp
-        dtheta_sl(1) = -1.0_dp / sl(2)
-        angle = .true.
-      else
-        angle = .not. abs(g_drv(1)) + abs(g_drv(2)) + abs(g_drv(3)) <= 0.0_dp
-        if (angle) dtheta_sl = g_drv * (thp / fp)
-      end if
-    else
-      zeta = old%zeta(k) + drv
-    end if
-    if (angle) then
-      ! d sig_loc / d theta at fixed s = K_loc d sl / d theta + (-sigma_kt1, sigma_kn, 0) (the
-      ! frame's turn), d sl / d theta = (s_kt1, -s_kn, 0)
-      ksl = k_loc(:, 1) * sl(2) - k_loc(:, 2) * sl(1)
-      ksl(1) = ksl(1) - sig_loc(2)
-      ksl(2) = ksl(2) + sig_loc(1)
-      do j = 1, 3
-        k_loc(:, j) = k_loc(:, j) + ksl * dtheta_sl(j)
-      end do
-    end if
-    call plane_share(cp, sp, c, sn, sig_loc, k_loc, .not. (grows .or. angle), gam, area, darea, &
-                     sigma, tangent)
-    call plane_energies(mat, k, old, sl, beta, dmg, sf, tauf, tauf_norm, slip_norm, sig_loc, &
-                        gam * area, energy)
-    call store_plane(k, beta, dmg, sf, zeta, theta, tauf, new)
+    call coupled_plane(mat, solver, k, cp, sp, c_o, sn_o, s, old, gam, area, darea, &
+                       sigma, tangent, energy, new, iterations, ok)
   end subroutine scheme_plane
 
   include 'interlock_kernel_planes_3d.inc'
+  include 'interlock_kernel_coupled_3d.inc'
 
 end module interlock_kernels_3d_coupled

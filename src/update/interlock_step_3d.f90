@@ -15,13 +15,13 @@ module interlock_step_3d
       scheme_trapezoidal, max_planes
   use interlock_state, only: interlock_state_3d_t, state_3d_end_point
   use interlock_geometry, only: contact_area
-  use interlock_friction, only: direction_turn_of, unit_direction_turn
+  use interlock_friction, only: direction_turn_of, unit_direction_turn, start_direction
   use interlock_wear, only: worn_angle, worn_angle_slope, wear_root_t, wear_root_begin, &
       wear_root_update
   use interlock_plane_law, only: plane_frame, wear_weights, start_yield, start_weight, &
       trapezoidal_end_weight, wear_angle_error, add_wear_error, wear_error_of
   use interlock_plane_law_3d, only: plane_start_3d_t, plane_law_3d_t, plane_law_3d_parts, &
-      plane_traction_3d, start_direction, local_frame, contact_round_off, to_macro
+      plane_traction_3d, local_frame, contact_round_off, to_macro
   implicit none
   private
   public :: plane_chain_t, step_3d, chain_bounded
