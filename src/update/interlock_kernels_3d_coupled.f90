@@ -18,15 +18,16 @@ module interlock_kernels_3d_coupled
       max_planes
   use interlock_state, only: interlock_state_3d_t, state_3d_end_point
   use interlock_damage, only: damage_may_grow, damage_growth
-  use interlock_friction, only: radial_return
+  use interlock_friction, only: radial_return, direction_turn_of
   use interlock_geometry, only: contact_area
   use interlock_wear, only: worn_angle, worn_angle_slope, wear_root_t, wear_root_begin, &
       wear_root_update
-  use interlock_plane_law, only: plane_frame, wear_weights, normal_traction, tangential_traction
+  use interlock_plane_law, only: plane_frame, wear_weights, normal_traction, tangential_traction, &
+      wear_angle_error, add_wear_error, wear_error_of, start_yield, start_weight
   use interlock_kinematics, only: to_local, to_global
   implicit none
   private
-  public :: coupled_step_3d
+  public :: coupled_step_3d, coupled_step_3d_estimate
 
   !> A trial friction traction whose components reach this is left to the general path (its
   !> norm is scaled there against overflow of the squares)
@@ -51,8 +52,27 @@ contains
     real(dp), intent(out) :: sigma(3), tangent(3, 3)
     integer, intent(out) :: iterations
     logical, intent(out) :: done
-    call step_of_planes(mat, solver, s, old, limit, new, sigma, tangent, iterations, done)
+    real(dp) :: err
+    call step_of_planes(mat, solver, s, old, limit, .false., new, sigma, tangent, iterations, &
+                        done, err)
   end subroutine coupled_step_3d
+
+  !> coupled_step_3d with the step's embedded error estimate err (the general path's of the
+  !> whole increment as one step, interlock_step_3d), for error-controlled substepping: the
+  !> increment is kept as one step where err is within the tolerance.
+  pure subroutine coupled_step_3d_estimate(mat, solver, s, old, limit, new, sigma, tangent, &
+                                           iterations, done, err)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    real(dp), intent(in) :: s(3), limit
+    type(interlock_state_3d_t), intent(in) :: old
+    type(interlock_state_3d_t), intent(inout) :: new
+    real(dp), intent(out) :: sigma(3), tangent(3, 3), err
+    integer, intent(out) :: iterations
+    logical, intent(out) :: done
+    call step_of_planes(mat, solver, s, old, limit, .true., new, sigma, tangent, iterations, &
+                        done, err)
+  end subroutine coupled_step_3d_estimate
 
   !> Plane k over the step to s (azimuth frame cp, sp; start angle's frame c_o, sn_o), area
   !> fraction gam, contact area `area` (slope darea): a wearing plane's wear equation F(zeta)
@@ -66,22 +86,26 @@ contains
   !> d theta / d sl = theta' dG / d sl / F' at the root; pinned at the contact kink, d theta /
   !> d s = -m / s_kt1) and energies, stores its end state (a plane that does not wear: zeta_o
   !> + G at its angle) in `new`; `iterations`: the wear equation's. `ok` false: declined
-  !> (plane_at_angle, or no root).
+  !> (plane_at_angle, or no root). With `estimate` its share of the step's error estimate is
+  !> added to err_angle and err_traction (the coupled schemes' angle error,
+  !> interlock_plane_law:wear_angle_error, at the root).
   pure subroutine scheme_plane(mat, solver, k, cp, sp, c_o, sn_o, s, old, gam, area, darea, &
-                               sigma, tangent, energy, new, iterations, ok)
+                               estimate, sigma, tangent, energy, err_angle, err_traction, new, &
+                               iterations, ok)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     integer, intent(in) :: k
     real(dp), intent(in) :: cp, sp, c_o, sn_o, s(3), gam, area, darea
     type(interlock_state_3d_t), intent(in) :: old
-    real(dp), intent(inout) :: sigma(3), tangent(3, 3), energy(3)
+    logical, intent(in) :: estimate
+    real(dp), intent(inout) :: sigma(3), tangent(3, 3), energy(3), err_angle, err_traction
     type(interlock_state_3d_t), intent(inout) :: new
     integer, intent(out) :: iterations
     logical, intent(out) :: ok
     type(wear_root_t) :: rt
     real(dp) :: c, sn, sl(3), tie, beta, dmg, sf(2), tauf(2), slip_dip, g_wfric(3), sig_loc(3), &
                 k_loc(3, 3), tauf_norm, slip_norm, a_w, g_slip, zeta, theta, thp, fp, drv, &
-                g_drv(3), dtheta_sl(3), ksl(3)
+                g_drv(3), dtheta_sl(3), ksl(3), e
     integer :: phase, j
     logical :: grows, wears, pinned, angle
 
@@ -159,12 +183,10 @@ contains
     else
       zeta = old%zeta(k) + drv
     end if
+    ! (d sig_loc / d theta at fixed s: the angle's term and the estimate's, at K_loc without
+    ! the angle's term)
+    if (angle .or. estimate) ksl = traction_angle_slope(sl, sig_loc, k_loc)
     if (angle) then
-      ! d sig_loc / d theta at fixed s = K_loc d sl / d theta + (-sigma_kt1, sigma_kn, 0) (the
-      ! frame's turn), d sl / d theta = (s_kt1, -s_kn, 0)
-      ksl = k_loc(:, 1) * sl(2) - k_loc(:, 2) * sl(1)
-      ksl(1) = ksl(1) - sig_loc(2)
-      ksl(2) = ksl(2) + sig_loc(1)
       do j = 1, 3
         k_loc(:, j) = k_loc(:, j) + ksl * dtheta_sl(j)
       end do
@@ -173,8 +195,40 @@ contains
                      sigma, tangent)
     call plane_energies(mat, k, old, sl, beta, dmg, sf, tauf, tauf_norm, slip_norm, sig_loc, &
                         gam * area, energy)
+    if (estimate) then
+      e = 0.0_dp
+      if (wears) e = coupled_angle_error(mat, k, cp, sp, c_o, sn_o, old, theta, zeta, dmg, &
+                                         tauf, slip_dip, slip_norm, sf)
+      call add_plane_error(e, gam * area, cp, sp, c, sn, ksl, dmg, tauf_norm, &
+                           plane_turn(k, old, tauf, tauf_norm, slip_norm), err_angle, &
+                           err_traction)
+    end if
     call store_plane(k, beta, dmg, sf, zeta, theta, tauf, new)
   end subroutine scheme_plane
+
+  !> The implicit scheme's angle error of plane k's wear over the step (interlock_plane_law:
+  !> wear_angle_error; azimuth frame cp, sp, start angle's frame c_o, sn_o): the work that
+  !> wears D |tau_f,1| |d sf_1| and the slip |d sf_1| weighted by the dip share of the slip's
+  !> direction (|d sf_1| / |d sf|) at the end angle theta, zeta, against the trapezoidal start
+  !> weight D_o mu p_o / 2 of the start state (its yield at the start separation).
+  pure real(dp) function coupled_angle_error(mat, k, cp, sp, c_o, sn_o, old, theta, zeta, dmg, &
+                                             tauf, slip_dip, slip_norm, sf) result(e)
+    type(interlock_material_t), intent(in) :: mat
+    integer, intent(in) :: k
+    real(dp), intent(in) :: cp, sp, c_o, sn_o, theta, zeta, dmg, tauf(2), slip_dip, &
+                            slip_norm, sf(2)
+    type(interlock_state_3d_t), intent(in) :: old
+    real(dp) :: slip, g_trap, share
+    ! (|d sf|: the radial return's slip, or the free plane's |sf - sf_o|)
+    slip = slip_norm
+    if (.not. slip > 0.0_dp) slip = norm2([sf(1) - old%sf(k), sf(2) - old%sf_strike(k)])
+    share = 1.0_dp
+    if (slip > 0.0_dp) share = slip_dip / slip
+    g_trap = start_weight(old%damage(k), start_yield(mat, c_o, sn_o, old%s(1), &
+                                                     cp * old%s(2) + sp * old%s_t2))
+    e = wear_angle_error(mat, k, scheme_implicit, theta, old%theta(k), zeta, old%zeta(k), &
+                         dmg * abs(tauf(1)) * slip_dip, slip_dip * share, 0.0_dp, g_trap)
+  end function coupled_angle_error
 
   include 'interlock_kernel_planes_3d.inc'
 
