@@ -26,8 +26,12 @@ module interlock_general_path
 contains
 
   !> The general three-dimensional update (interlock_update_3d's contract) for any material,
-  !> solver and history. `info` comes reset.
-  pure subroutine general_update_3d(mat, solver, s, old, new, sigma, tangent, info)
+  !> solver and history. `info` comes reset. `h_first` (with substep_tol > 0; absent: the whole
+  !> increment first): the caller has tried the whole increment as one step (a one-step kernel
+  !> with the general path's error estimate) and found the estimate above substep_tol; the
+  !> sub-increments start at this fraction (interlock_substep_control:size_after_whole), and
+  !> that trial counts as the first attempt.
+  pure subroutine general_update_3d(mat, solver, s, old, new, sigma, tangent, info, h_first)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     real(dp), intent(in) :: s(3)
@@ -35,6 +39,7 @@ contains
     type(interlock_state_3d_t), intent(inout) :: new
     real(dp), intent(out) :: sigma(3), tangent(3, 3)
     type(interlock_info_t), intent(inout) :: info
+    real(dp), intent(in), optional :: h_first
 
     if (.not. mat%prepared) then
       call fail(old, new, sigma, tangent, info, status_bad_input, &
@@ -56,8 +61,13 @@ contains
       return
     end if
 
-    call integrate_increment(mat, solver, s, old, new, tangent, info, solver%substep_tol, &
-                             1.0_dp, .false.)
+    if (present(h_first)) then
+      call substep(mat, solver, s, old, new, tangent, info, solver%substep_tol, h_first, &
+                   .false., 1)
+    else
+      call integrate_increment(mat, solver, s, old, new, tangent, info, solver%substep_tol, &
+                               1.0_dp, .false.)
+    end if
     if (info%status /= status_ok) then
       call fail(old, new, sigma, tangent, info, info%status, info%message)
       return
@@ -88,12 +98,13 @@ contains
     type(interlock_info_t), intent(inout) :: info
     logical, intent(in) :: in_plane
     if (tol > 0.0_dp) then
-      call substep(mat, solver, s, old, new, tangent, info, tol, h_first, in_plane)
+      call substep(mat, solver, s, old, new, tangent, info, tol, h_first, in_plane, 0)
     else
       call single_step(mat, solver, s, old, new, tangent, info)
       if (info%status == status_local_failure) then
         info%status = status_ok
-        call substep(mat, solver, s, old, new, tangent, info, huge(1.0_dp), 0.5_dp, in_plane)
+        call substep(mat, solver, s, old, new, tangent, info, huge(1.0_dp), 0.5_dp, in_plane, &
+                     0)
       end if
     end if
   end subroutine integrate_increment
@@ -186,8 +197,9 @@ contains
   !> and a local one (the first trial reads `old` and writes `new`: a whole increment kept as
   !> one trial is not copied, the others once at most); on failure `new` is partly written
   !> (the callers report the failure and keep `old`); the planes beyond n_planes are not
-  !> written; nothing is allocated.
-  pure subroutine substep(mat, solver, s, old, new, tangent, info, tol, h_first, in_plane)
+  !> written; nothing is allocated. `tried`: the trials of the increment its caller has taken
+  !> (counted in info%attempts, against max_substeps).
+  pure subroutine substep(mat, solver, s, old, new, tangent, info, tol, h_first, in_plane, tried)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     real(dp), intent(in) :: s(3), tol, h_first
@@ -196,6 +208,7 @@ contains
     real(dp), intent(out) :: tangent(3, 3)
     type(interlock_info_t), intent(inout) :: info
     logical, intent(in) :: in_plane
+    integer, intent(in) :: tried
     type(interlock_state_3d_t) :: st
     type(plane_chain_t) :: jc(max_planes, 2)
     real(dp) :: ds(3), s_old(3), s_end(3), alpha, h, a_end, err, chain_peak, tangent_trial(3, 3)
@@ -217,7 +230,7 @@ contains
     alpha = 0.0_dp
     h = h_first
     n_accepted = 0
-    info%attempts = 0
+    info%attempts = tried
     tangent = 0.0_dp
     chain_peak = 0.0_dp
     known = .false.

@@ -20,14 +20,16 @@ module interlock_kernels_3d
   use interlock_state, only: interlock_state_3d_t, state_3d_end_point
   use interlock_damage, only: damage_may_grow, damage_growth
   use interlock_friction, only: radial_return, vector_norm, norm_gradient, &
-      mean_direction_return, mean_direction_slide, mean_direction_tie, straight_wear_start
+      mean_direction_return, mean_direction_slide, mean_direction_tie, straight_wear_start, &
+      direction_turn_of
   use interlock_geometry, only: contact_area
   use interlock_wear, only: worn_angle
-  use interlock_plane_law, only: plane_frame, wear_weights, normal_traction, tangential_traction
+  use interlock_plane_law, only: plane_frame, wear_weights, normal_traction, tangential_traction, &
+      wear_angle_error, add_wear_error, wear_error_of
   use interlock_kinematics, only: to_local, to_global
   implicit none
   private
-  public :: explicit_step_3d
+  public :: explicit_step_3d, explicit_step_3d_estimate
 
   !> A trial friction traction whose components reach this is left to the general path (its
   !> norm is scaled there against overflow of the squares)
@@ -54,36 +56,64 @@ contains
     real(dp), intent(out) :: sigma(3), tangent(3, 3)
     logical, intent(out) :: done
     integer :: iterations
-    call step_of_planes(mat, explicit_solver, s, old, limit, new, sigma, tangent, iterations, &
-                        done)
+    real(dp) :: err
+    call step_of_planes(mat, explicit_solver, s, old, limit, .false., new, sigma, tangent, &
+                        iterations, done, err)
   end subroutine explicit_step_3d
+
+  !> explicit_step_3d with the step's embedded error estimate err (the general path's of the
+  !> whole increment as one step, interlock_step_3d), for error-controlled substepping: the
+  !> increment is kept as one step where err is within the tolerance.
+  pure subroutine explicit_step_3d_estimate(mat, s, old, limit, new, sigma, tangent, done, err)
+    type(interlock_material_t), intent(in) :: mat
+    real(dp), intent(in) :: s(3), limit
+    type(interlock_state_3d_t), intent(in) :: old
+    type(interlock_state_3d_t), intent(inout) :: new
+    real(dp), intent(out) :: sigma(3), tangent(3, 3), err
+    logical, intent(out) :: done
+    integer :: iterations
+    call step_of_planes(mat, explicit_solver, s, old, limit, .true., new, sigma, tangent, &
+                        iterations, done, err)
+  end subroutine explicit_step_3d_estimate
 
   !> Plane k at its frozen start angle (frame c, sn; azimuth frame cp, sp) over the step to s,
   !> area fraction gam, contact area `area` (slope darea): its traction, tangent and energies
   !> added (plane_at_angle), its end state stored in `new`, with the wear of eq. 25 after the
-  !> step. `ok` false: declined. No iterations.
-  pure subroutine scheme_plane(mat, solver, k, cp, sp, c, sn, s, old, gam, area, darea, sigma, &
-                               tangent, energy, new, iterations, ok)
+  !> step; with `estimate` its share of the step's error estimate added to err_angle and
+  !> err_traction (the explicit scheme's angle error, interlock_plane_law:wear_angle_error, at
+  !> the start angle's traction). `ok` false: declined. No iterations.
+  pure subroutine scheme_plane(mat, solver, k, cp, sp, c, sn, s, old, gam, area, darea, &
+                               estimate, sigma, tangent, energy, err_angle, err_traction, new, &
+                               iterations, ok)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     integer, intent(in) :: k
     real(dp), intent(in) :: cp, sp, c, sn, s(3), gam, area, darea
     type(interlock_state_3d_t), intent(in) :: old
-    real(dp), intent(inout) :: sigma(3), tangent(3, 3), energy(3)
+    logical, intent(in) :: estimate
+    real(dp), intent(inout) :: sigma(3), tangent(3, 3), energy(3), err_angle, err_traction
     type(interlock_state_3d_t), intent(inout) :: new
     integer, intent(out) :: iterations
     logical, intent(out) :: ok
     real(dp) :: sl(3), tie, beta, dmg, sf(2), tauf(2), slip_dip, g_wfric(3), sig_loc(3), &
-                k_loc(3, 3), tauf_norm, slip_norm, a_w, g_slip, zeta, theta, slope, wear(2), &
+                k_loc(3, 3), tauf_norm, slip_norm, a_w, g_slip, zeta, theta, slope, e, wear(2), &
                 g_wear(3, 2)
     logical :: grows
 
     iterations = 0
-    call plane_at_angle(mat, k, cp, sp, c, sn, s, old, .false., .true., .false., .false., &
-                        [0.0_dp, 0.0_dp], gam, area, darea, sigma, tangent, energy, sl, tie, &
-                        beta, dmg, sf, tauf, slip_dip, g_wfric, wear, g_wear, sig_loc, k_loc, &
-                        tauf_norm, slip_norm, grows, ok)
+    ! (with the estimate the plane's traction and K_loc come back, for d sig / d theta, and its
+    ! share is added here)
+    call plane_at_angle(mat, k, cp, sp, c, sn, s, old, .false., .not. estimate, .false., &
+                        .false., [0.0_dp, 0.0_dp], gam, area, darea, sigma, tangent, energy, sl, &
+                        tie, beta, dmg, sf, tauf, slip_dip, g_wfric, wear, g_wear, sig_loc, &
+                        k_loc, tauf_norm, slip_norm, grows, ok)
     if (.not. ok) return
+    if (estimate) then
+      call plane_share(cp, sp, c, sn, sig_loc, k_loc, .not. grows, gam, area, darea, sigma, &
+                       tangent)
+      call plane_energies(mat, k, old, sl, beta, dmg, sf, tauf, tauf_norm, slip_norm, sig_loc, &
+                          gam * area, energy)
+    end if
 
     ! Explicit wear (eq. 25): the frictional work driven by the start state's friction traction,
     ! the angle for the next step (eq. 22) on a plane that wears.
@@ -93,6 +123,16 @@ contains
     theta = old%theta(k)
     if (mat%plane_wears(k) .and. zeta > old%zeta(k)) &
       call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), zeta, theta, slope)
+    if (estimate) then
+      e = 0.0_dp
+      if (mat%plane_wears(k)) e = wear_angle_error(mat, k, scheme_explicit, theta, &
+                                                   old%theta(k), zeta, old%zeta(k), &
+                                                   dmg * abs(tauf(1)) * slip_dip, slip_dip, &
+                                                   g_slip, 0.0_dp)
+      call add_plane_error(e, gam * area, cp, sp, c, sn, traction_angle_slope(sl, sig_loc, &
+                           k_loc), dmg, tauf_norm, plane_turn(k, old, tauf, tauf_norm, &
+                           slip_norm), err_angle, err_traction)
+    end if
     call store_plane(k, beta, dmg, sf, zeta, theta, tauf, new)
   end subroutine scheme_plane
 

@@ -18,20 +18,22 @@
 module interlock_kernels_3d_trapezoidal
   use interlock_kinds, only: dp, is_finite_value
   use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_implicit, &
-      max_planes
+      scheme_trapezoidal, max_planes
   use interlock_state, only: interlock_state_3d_t, state_3d_end_point
   use interlock_damage, only: damage_may_grow, damage_growth
   use interlock_friction, only: radial_return, vector_norm, norm_gradient, start_direction, &
-      mean_direction_return, mean_direction_slide, mean_direction_tie, straight_wear_start
+      mean_direction_return, mean_direction_slide, mean_direction_tie, straight_wear_start, &
+      direction_turn_of, unit_direction_turn
   use interlock_geometry, only: contact_area
   use interlock_wear, only: worn_angle, worn_angle_slope, wear_root_t, wear_root_begin, &
       wear_root_update
   use interlock_plane_law, only: plane_frame, wear_weights, start_yield, start_weight, &
-      trapezoidal_end_weight, normal_traction, tangential_traction
+      trapezoidal_end_weight, normal_traction, tangential_traction, wear_angle_error, &
+      add_wear_error, wear_error_of
   use interlock_kinematics, only: to_local, to_global
   implicit none
   private
-  public :: trapezoidal_step_3d
+  public :: trapezoidal_step_3d, trapezoidal_step_3d_estimate
 
   !> A trial friction traction whose components reach this is left to the general path (its
   !> norm is scaled there against overflow of the squares)
@@ -59,24 +61,45 @@ contains
     real(dp), intent(out) :: sigma(3), tangent(3, 3)
     integer, intent(out) :: iterations
     logical, intent(out) :: done
-    call step_of_planes(mat, solver, s, old, limit, new, sigma, tangent, iterations, done)
+    real(dp) :: err
+    call step_of_planes(mat, solver, s, old, limit, .false., new, sigma, tangent, iterations, &
+                        done, err)
   end subroutine trapezoidal_step_3d
 
+  !> trapezoidal_step_3d with the step's embedded error estimate err (the general path's of the
+  !> whole increment as one step, interlock_step_3d), for error-controlled substepping: the
+  !> increment is kept as one step where err is within the tolerance.
+  pure subroutine trapezoidal_step_3d_estimate(mat, solver, s, old, limit, new, sigma, tangent, &
+                                               iterations, done, err)
+    type(interlock_material_t), intent(in) :: mat
+    type(interlock_solver_t), intent(in) :: solver
+    real(dp), intent(in) :: s(3), limit
+    type(interlock_state_3d_t), intent(in) :: old
+    type(interlock_state_3d_t), intent(inout) :: new
+    real(dp), intent(out) :: sigma(3), tangent(3, 3), err
+    integer, intent(out) :: iterations
+    logical, intent(out) :: done
+    call step_of_planes(mat, solver, s, old, limit, .true., new, sigma, tangent, iterations, &
+                        done, err)
+  end subroutine trapezoidal_step_3d_estimate
+
   !> Plane k over the step to s in the trapezoidal scheme (coupled_plane with its wear terms and
-  !> D14); `ok` false: declined.
+  !> D14; with `estimate` its share of the step's error estimate); `ok` false: declined.
   pure subroutine scheme_plane(mat, solver, k, cp, sp, c_o, sn_o, s, old, gam, area, darea, &
-                               sigma, tangent, energy, new, iterations, ok)
+                               estimate, sigma, tangent, energy, err_angle, err_traction, new, &
+                               iterations, ok)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     integer, intent(in) :: k
     real(dp), intent(in) :: cp, sp, c_o, sn_o, s(3), gam, area, darea
     type(interlock_state_3d_t), intent(in) :: old
-    real(dp), intent(inout) :: sigma(3), tangent(3, 3), energy(3)
+    logical, intent(in) :: estimate
+    real(dp), intent(inout) :: sigma(3), tangent(3, 3), energy(3), err_angle, err_traction
     type(interlock_state_3d_t), intent(inout) :: new
     integer, intent(out) :: iterations
     logical, intent(out) :: ok
-    call coupled_plane(mat, solver, k, cp, sp, c_o, sn_o, s, old, gam, area, darea, &
-                       sigma, tangent, energy, new, iterations, ok)
+    call coupled_plane(mat, solver, k, cp, sp, c_o, sn_o, s, old, gam, area, darea, estimate, &
+                       sigma, tangent, energy, err_angle, err_traction, new, iterations, ok)
   end subroutine scheme_plane
 
   include 'interlock_kernel_planes_3d.inc'
