@@ -83,25 +83,6 @@ contains
                         done, err)
   end subroutine trapezoidal_step_3d_estimate
 
-  !> Plane k over the step to s in the trapezoidal scheme (coupled_plane with its wear terms and
-  !> D14; with `estimate` its share of the step's error estimate); `ok` false: declined.
-  pure subroutine scheme_plane(mat, solver, k, cp, sp, c_o, sn_o, s, old, gam, area, darea, &
-                               estimate, sigma, tangent, energy, err_angle, err_traction, new, &
-                               iterations, ok)
-    type(interlock_material_t), intent(in) :: mat
-    type(interlock_solver_t), intent(in) :: solver
-    integer, intent(in) :: k
-    real(dp), intent(in) :: cp, sp, c_o, sn_o, s(3), gam, area, darea
-    type(interlock_state_3d_t), intent(in) :: old
-    logical, intent(in) :: estimate
-    real(dp), intent(inout) :: sigma(3), tangent(3, 3), energy(3), err_angle, err_traction
-    type(interlock_state_3d_t), intent(inout) :: new
-    integer, intent(out) :: iterations
-    logical, intent(out) :: ok
-    call coupled_plane(mat, solver, k, cp, sp, c_o, sn_o, s, old, gam, area, darea, estimate, &
-                       sigma, tangent, energy, err_angle, err_traction, new, iterations, ok)
-  end subroutine scheme_plane
-
   include 'interlock_kernel_planes_3d.inc'
   include 'interlock_kernel_coupled_3d.inc'
 
