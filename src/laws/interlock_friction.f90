@@ -303,7 +303,13 @@ contains
       dsf(i) = (tr(i) - tauf(i)) * inv_kt
       sf(i) = st(i) - tauf(i) * inv_kt
     end do
-    slip_norm = vector_norm(dsf)
+    if (drivers) then
+      ! (tau_tr - tau_f is along the slip's direction u: its magnitude is the projection on u,
+      ! without a square root)
+      slip_norm = abs(dsf(1) * u(1) + dsf(2) * u(2))
+    else
+      slip_norm = vector_norm(dsf)
+    end if
     wear_start = slip_norm * (n_o(1) * n_o(1))
     x = slip_norm * abs(n_new(1))
     atau = dmg * abs(tauf(1))

@@ -19,7 +19,6 @@ module interlock_plane_law
   implicit none
   private
   public :: plane_response_t, plane_law, add_rotated, traction_angle_slope, plane_frame
-  public :: worn_frame
   public :: start_yield, trapezoidal_weight, start_weight, trapezoidal_end_weight, wear_weights
   public :: wear_driver, coupled_wear
   public :: wear_angle_error, add_wear_error, wear_error_of
@@ -272,45 +271,6 @@ contains
       sn = sin(theta)
     end if
   end subroutine plane_frame
-
-  !> The worn angle theta of plane k at the frictional work zeta (eq. 22), its slope thp = d
-  !> theta / d zeta and its frame (c, sn), from the angle theta_o at zeta_o and its frame (c_o,
-  !> sn_o): theta - theta_f = (theta_o - theta_f) exp(-(zeta - zeta_o) / zeta_0). The iterates
-  !> of a step's wear equation move the angle by little from the start angle's, so that the
-  !> start frame is turned by d = theta - theta_o (the series of exp(x) - 1, cos d and sin d,
-  !> to round-off while |x| and |d| are at most 2^-8: their first omitted terms are below
-  !> 1e-18 of the result) instead of taking libm's exp and sincos of the angle at each
-  !> iterate; a larger change takes them (worn_angle, plane_frame).
-  pure subroutine worn_frame(mat, k, zeta_o, theta_o, c_o, sn_o, zeta, theta, thp, c, sn)
-    type(interlock_material_t), intent(in) :: mat
-    integer, intent(in) :: k
-    real(dp), intent(in) :: zeta_o, theta_o, c_o, sn_o, zeta
-    real(dp), intent(out) :: theta, thp, c, sn
-    real(dp), parameter :: series_bound = 2.0_dp**(-8)
-    real(dp) :: x, em1, d, d2, cm1, sd
-    logical :: near
-    x = -(zeta - zeta_o) * mat%inv_zeta0(k)
-    near = abs(x) <= series_bound
-    if (near) then
-      em1 = x * (1.0_dp + x * (1.0_dp / 2 + x * (1.0_dp / 6 + x * (1.0_dp / 24 + &
-            x * (1.0_dp / 120 + x * (1.0_dp / 720))))))
-      d = (theta_o - mat%thetaf_eff(k)) * em1
-      near = abs(d) <= series_bound
-    end if
-    if (near) then
-      theta = theta_o + d
-      thp = -(theta - mat%thetaf_eff(k)) * mat%inv_zeta0(k)
-      d2 = d * d
-      ! cos d - 1 and sin d
-      cm1 = -d2 * (1.0_dp / 2 - d2 * (1.0_dp / 24 - d2 * (1.0_dp / 720)))
-      sd = d * (1.0_dp - d2 * (1.0_dp / 6 - d2 * (1.0_dp / 120)))
-      c = c_o + (c_o * cm1 - sn_o * sd)
-      sn = sn_o + (sn_o * cm1 + c_o * sd)
-    else
-      call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), zeta, theta, thp)
-      call plane_frame(mat, k, theta, c, sn)
-    end if
-  end subroutine worn_frame
 
   !> The wear equation of a wearing plane k in a scheme that couples its angle to the end of
   !> the step (implicit, trapezoidal): F(zeta) = zeta - zeta_o - G(theta(zeta)) = 0 with the

@@ -22,9 +22,9 @@ module interlock_kernels_3d_coupled
       mean_direction_return, mean_direction_slide, mean_direction_tie, straight_wear_start, &
       direction_turn_of, unit_direction_turn
   use interlock_geometry, only: contact_area
-  use interlock_wear, only: worn_angle_slope, wear_root_t, wear_root_begin, &
+  use interlock_wear, only: worn_angle, worn_angle_slope, wear_root_t, wear_root_begin, &
       wear_root_update
-  use interlock_plane_law, only: plane_frame, worn_frame, wear_weights, start_yield, start_weight, &
+  use interlock_plane_law, only: plane_frame, wear_weights, start_yield, start_weight, &
       trapezoidal_end_weight, normal_traction, tangential_traction, wear_angle_error, &
       add_wear_error, wear_error_of
   use interlock_kinematics, only: to_local, to_global

@@ -18,7 +18,7 @@ module interlock_step_3d
   use interlock_friction, only: direction_turn_of, unit_direction_turn, start_direction
   use interlock_wear, only: worn_angle, worn_angle_slope, wear_root_t, wear_root_begin, &
       wear_root_update
-  use interlock_plane_law, only: plane_frame, worn_frame, wear_weights, start_yield, start_weight, &
+  use interlock_plane_law, only: plane_frame, wear_weights, start_yield, start_weight, &
       trapezoidal_end_weight, wear_angle_error, add_wear_error, wear_error_of
   use interlock_plane_law_3d, only: plane_start_3d_t, plane_law_3d_t, plane_law_3d_parts, &
       plane_traction_3d, local_frame, contact_round_off, to_macro
@@ -355,15 +355,9 @@ contains
     phase = 0
     do
       if (phase > 0) then
-        ! (the 3D kernels' frame of an iterate, turned from the start angle's; the 2D
-        ! kernels' from libm, interlock_plane_law:coupled_wear)
-        if (ncol > 2) then
-          call worn_frame(mat, k, o%zeta, o%theta, c_o, sn_o, rt%x, theta, thp, c, sn)
-        else
-          call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, &
-                          thp)
-          call plane_frame(mat, k, theta, c, sn)
-        end if
+        call worn_angle(mat%theta_init(k), mat%thetaf_eff(k), mat%inv_zeta0(k), rt%x, theta, &
+                        thp)
+        call plane_frame(mat, k, theta, c, sn)
         flat = flat_frame(cp, sp, c, sn)
       end if
       call evaluate(mat, cp, sp, s, o, mean_o, n_o, a_w, g_slip, trapezoidal, terms, drivers, &
