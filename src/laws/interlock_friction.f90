@@ -228,15 +228,14 @@ contains
     real(dp), intent(in) :: tauf_o(2), mu_p_o
     logical, intent(out) :: mean_o
     real(dp), intent(out) :: n_o(2)
-    real(dp) :: t_norm
-    mean_o = .false.
-    n_o = 0.0_dp
-    if (.not. mu_p_o > 0.0_dp) return
+    real(dp) :: t_norm, d
+    ! (without branches: planes that slide at the start and others alternate; the divisor 1
+    ! where the direction is not taken)
     t_norm = vector_norm(tauf_o)
-    if (.not. slides_at_start(t_norm, mu_p_o)) return
-    mean_o = .true.
-    n_o(1) = tauf_o(1) / t_norm
-    n_o(2) = tauf_o(2) / t_norm
+    mean_o = slides_at_start(t_norm, mu_p_o)
+    d = merge(t_norm, 1.0_dp, mean_o)
+    n_o(1) = merge(tauf_o(1) / d, 0.0_dp, mean_o)
+    n_o(2) = merge(tauf_o(2) / d, 0.0_dp, mean_o)
   end subroutine start_direction
 
   !> A plane slides at the start of a step: its friction traction's magnitude |tauf_o| is
@@ -304,7 +303,13 @@ contains
       dsf(i) = (tr(i) - tauf(i)) * inv_kt
       sf(i) = st(i) - tauf(i) * inv_kt
     end do
-    slip_norm = vector_norm(dsf)
+    if (drivers) then
+      ! (tau_tr - tau_f is along the slip's direction u: its magnitude is the projection on u,
+      ! without a square root)
+      slip_norm = abs(dsf(1) * u(1) + dsf(2) * u(2))
+    else
+      slip_norm = vector_norm(dsf)
+    end if
     wear_start = slip_norm * (n_o(1) * n_o(1))
     x = slip_norm * abs(n_new(1))
     atau = dmg * abs(tauf(1))
