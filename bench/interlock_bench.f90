@@ -22,7 +22,7 @@ program interlock_bench
       interlock_update_3d, interlock_azimuthal_ria, interlock_material_prepare, deg_to_rad
   use interlock_bench_bilinear, only: bilinear_t, bilinear_state_t, bilinear_setup, bilinear_update
   use interlock_bench_scenes, only: scene_t, make_scene, run_scene, slip_at, n_effect_sets, &
-      effect_set_names, make_effect_set, make_histories
+      effect_set_names, make_effect_set, make_histories, median
   use interlock_bench_umat, only: umat_props, time_umat, time_umat_floor, time_umat_3d
   use interlock_bench_precision_3d, only: precision_study_3d, precision_run_3d
   implicit none
@@ -961,29 +961,6 @@ contains
     end do
     dev = max(dsig / msig, dtan / mtan)
   end function baseline_deviation
-
-  pure real(dp) function median(x)
-    real(dp), intent(in) :: x(:)
-    real(dp) :: y(size(x)), t
-    integer :: i, j, n
-    n = size(x)
-    y = x
-    do i = 2, n            ! insertion sort: n is small
-      t = y(i)
-      j = i - 1
-      do while (j >= 1)
-        if (.not. y(j) > t) exit
-        y(j + 1) = y(j)
-        j = j - 1
-      end do
-      y(j + 1) = t
-    end do
-    if (mod(n, 2) == 1) then
-      median = y((n + 1) / 2)
-    else
-      median = 0.5_dp * (y(n / 2) + y(n / 2 + 1))
-    end if
-  end function median
 
   ! ------------------------------------------------------------------------------------------
   ! 2. Work-precision

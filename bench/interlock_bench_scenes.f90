@@ -10,7 +10,7 @@ module interlock_bench_scenes
       scheme_implicit
   implicit none
   private
-  public :: scene_t, make_scene, run_scene, slip_at
+  public :: scene_t, make_scene, run_scene, slip_at, median
   public :: n_effect_sets, effect_set_names, make_effect_set, make_histories
 
   integer, parameter :: max_knots = 8
@@ -319,5 +319,29 @@ contains
                     0.1_dp * t + 0.4_dp * t * sin(two_pi * 4.0_dp * t)]
     end do
   end subroutine make_histories
+
+  !> The median of x (the mean of the two middle values for an even size).
+  pure real(dp) function median(x)
+    real(dp), intent(in) :: x(:)
+    real(dp) :: y(size(x)), t
+    integer :: i, j, n
+    n = size(x)
+    y = x
+    do i = 2, n            ! insertion sort: n is small
+      t = y(i)
+      j = i - 1
+      do while (j >= 1)
+        if (.not. y(j) > t) exit
+        y(j + 1) = y(j)
+        j = j - 1
+      end do
+      y(j + 1) = t
+    end do
+    if (mod(n, 2) == 1) then
+      median = y((n + 1) / 2)
+    else
+      median = 0.5_dp * (y(n / 2) + y(n / 2 + 1))
+    end if
+  end function median
 
 end module interlock_bench_scenes

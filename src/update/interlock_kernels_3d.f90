@@ -27,13 +27,11 @@ module interlock_kernels_3d
   use interlock_plane_law, only: plane_frame, wear_weights, normal_traction, tangential_traction, &
       wear_angle_error, add_wear_error, wear_error_of
   use interlock_kinematics, only: to_local, to_global
+  use interlock_plane_trial_3d, only: plane_trial_t, trial_bound
   implicit none
   private
   public :: explicit_step_3d, explicit_step_3d_estimate
 
-  !> A trial friction traction whose components reach this is left to the general path (its
-  !> norm is scaled there against overflow of the squares)
-  real(dp), parameter :: trial_bound = 1.0e150_dp
   !> The plane law's trapezoidal wear terms and D14 (interlock_kernel_planes_3d.inc) are not
   !> compiled into this kernel
   logical, parameter :: trapezoidal_terms = .false.
@@ -76,26 +74,27 @@ contains
                         iterations, done, err)
   end subroutine explicit_step_3d_estimate
 
-  !> Plane k at its frozen start angle (frame c, sn; azimuth frame cp, sp) over the step to s,
-  !> area fraction gam, contact area `area` (slope darea): its traction, tangent and energies
-  !> added (plane_at_angle), its end state stored in `new`, with the wear of eq. 25 after the
-  !> step; with `estimate` its share of the step's error estimate added to err_angle and
-  !> err_traction (the explicit scheme's angle error, interlock_plane_law:wear_angle_error, at
-  !> the start angle's traction). `ok` false: declined. No iterations.
-  pure subroutine scheme_plane(mat, solver, k, cp, sp, c, sn, s, old, gam, area, darea, &
+  !> Plane k at its frozen start angle (frame c, sn; azimuth frame cp, sp) over the step to its
+  !> trial t (plane_trial), area fraction gam, contact area `area` (slope darea): its traction,
+  !> tangent and energies added (plane_at_angle), its end state stored in `new`, with the wear
+  !> of eq. 25 after the step; with `estimate` its share of the step's error estimate added to
+  !> err_angle and err_traction (the explicit scheme's angle error,
+  !> interlock_plane_law:wear_angle_error, at the start angle's traction). `ok` false: declined. No iterations.
+  pure subroutine scheme_plane(mat, solver, k, cp, sp, c, sn, t, old, gam, area, darea, &
                                estimate, sigma, tangent, energy, err_angle, err_traction, new, &
                                iterations, ok)
     type(interlock_material_t), intent(in) :: mat
     type(interlock_solver_t), intent(in) :: solver
     integer, intent(in) :: k
-    real(dp), intent(in) :: cp, sp, c, sn, s(3), gam, area, darea
+    real(dp), intent(in) :: cp, sp, c, sn, gam, area, darea
+    type(plane_trial_t), intent(in) :: t
     type(interlock_state_3d_t), intent(in) :: old
     logical, intent(in) :: estimate
     real(dp), intent(inout) :: sigma(3), tangent(3, 3), energy(3), err_angle, err_traction
     type(interlock_state_3d_t), intent(inout) :: new
     integer, intent(out) :: iterations
     logical, intent(out) :: ok
-    real(dp) :: sl(3), tie, beta, dmg, sf(2), tauf(2), slip_dip, g_wfric(3), sig_loc(3), &
+    real(dp) :: beta, dmg, sf(2), tauf(2), slip_dip, g_wfric(3), sig_loc(3), &
                 k_loc(3, 3), tauf_norm, slip_norm, a_w, g_slip, zeta, theta, slope, e, wear(2), &
                 g_wear(3, 2)
     logical :: grows
@@ -103,15 +102,15 @@ contains
     iterations = 0
     ! (with the estimate the plane's traction and K_loc come back, for d sig / d theta, and its
     ! share is added here)
-    call plane_at_angle(mat, k, cp, sp, c, sn, s, old, .false., .not. estimate, .false., &
-                        .false., [0.0_dp, 0.0_dp], gam, area, darea, sigma, tangent, energy, sl, &
-                        tie, beta, dmg, sf, tauf, slip_dip, g_wfric, wear, g_wear, sig_loc, &
-                        k_loc, tauf_norm, slip_norm, grows, ok)
+    call plane_at_angle(mat, k, cp, sp, c, sn, t, old, .false., .not. estimate, .false., &
+                        .false., [0.0_dp, 0.0_dp], gam, area, darea, sigma, tangent, energy, &
+                        beta, dmg, sf, tauf, slip_dip, g_wfric, wear, g_wear, sig_loc, k_loc, &
+                        tauf_norm, slip_norm, grows, ok)
     if (.not. ok) return
     if (estimate) then
       call plane_share(cp, sp, c, sn, sig_loc, k_loc, .not. grows, gam, area, darea, sigma, &
                        tangent)
-      call plane_energies(mat, k, old, sl, beta, dmg, sf, tauf, tauf_norm, slip_norm, sig_loc, &
+      call plane_energies(mat, k, old, t%sl, beta, dmg, sf, tauf, tauf_norm, slip_norm, sig_loc, &
                           gam * area, energy)
     end if
 
@@ -129,7 +128,7 @@ contains
                                                    old%theta(k), zeta, old%zeta(k), &
                                                    dmg * abs(tauf(1)) * slip_dip, slip_dip, &
                                                    g_slip, 0.0_dp)
-      call add_plane_error(e, gam * area, cp, sp, c, sn, traction_angle_slope(sl, sig_loc, &
+      call add_plane_error(e, gam * area, cp, sp, c, sn, traction_angle_slope(t%sl, sig_loc, &
                            k_loc), dmg, tauf_norm, plane_turn(k, old, tauf, tauf_norm, &
                            slip_norm), err_angle, err_traction)
     end if

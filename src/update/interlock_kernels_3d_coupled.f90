@@ -28,13 +28,11 @@ module interlock_kernels_3d_coupled
       trapezoidal_end_weight, normal_traction, tangential_traction, wear_angle_error, &
       add_wear_error, wear_error_of
   use interlock_kinematics, only: to_local, to_global
+  use interlock_plane_trial_3d, only: plane_trial_t, trial_bound
   implicit none
   private
   public :: coupled_step_3d, coupled_step_3d_estimate
 
-  !> A trial friction traction whose components reach this is left to the general path (its
-  !> norm is scaled there against overflow of the squares)
-  real(dp), parameter :: trial_bound = 1.0e150_dp
   !> The plane law's trapezoidal wear terms and D14 (interlock_kernel_planes_3d.inc) are not
   !> compiled into this kernel
   logical, parameter :: trapezoidal_terms = .false.
