@@ -365,9 +365,16 @@ contains
     real(dp) :: a, factor
     call reach_weights(err, target, lo, hi, a, factor, extrapolated)
     t = huge(1.0_dp)
-    if (lo < 0) return
-    t = factor * exp(log(cpu(lo)) + a * log(cpu(hi) / cpu(lo)))
+    if (lo >= 0) t = cost_from_levels(cpu, lo, hi, a, factor)
   end function cost_to_reach
+
+  !> The CPU time to reach a target from the levels' times cpu and reach_weights' lo, hi, a and
+  !> factor: factor cpu(lo)^(1 - a) cpu(hi)^a.
+  pure real(dp) function cost_from_levels(cpu, lo, hi, a, factor) result(t)
+    real(dp), intent(in) :: cpu(0:), a, factor
+    integer, intent(in) :: lo, hi
+    t = factor * exp(log(cpu(lo)) + a * log(cpu(hi) / cpu(lo)))
+  end function cost_from_levels
 
   !> How cost_to_reach forms the CPU time to reach `target` from the levels' times: t = factor
   !> cpu(lo)^(1 - a) cpu(hi)^a (lo < 0: not reached).
@@ -419,11 +426,13 @@ contains
     real(dp), intent(in) :: err_1(0:), cpu_1(0:), tol_1, err_2(0:), cpu_2(0:), tol_2, target
     real(dp), intent(out) :: ratio(3)
     logical, intent(out) :: ok
-    integer :: lo(2), hi(2), r, n_seg, i, j, which
-    real(dp) :: a(2), factor(2), cpu(0:ubound(err_1, 1), 2), ratios(paired_repetitions)
+    integer :: lo(2), hi(2), scheme(2), r, n_seg, i, j, w
+    real(dp) :: a(2), factor(2), tol(2), cpu(0:ubound(err_1, 1), 2), ratios(paired_repetitions)
     real(dp), allocatable :: q(:, :)
     logical :: extrapolated, run_ok
     ok = .true.
+    scheme = [scheme_1, scheme_2]
+    tol = [tol_1, tol_2]
     ratio = 0.0_dp
     call reach_weights(err_1, target, lo(1), hi(1), a(1), factor(1), extrapolated)
     call reach_weights(err_2, target, lo(2), hi(2), a(2), factor(2), extrapolated)
@@ -433,22 +442,16 @@ contains
     n_seg = merge(1, 4, is == 1)
     do r = 1, paired_repetitions
       do i = 1, 2
-        which = merge(i, 3 - i, mod(r, 2) == 1)
-        do j = lo(which), hi(which)
+        w = merge(i, 3 - i, mod(r, 2) == 1)
+        do j = lo(w), hi(w)
           allocate (q(3, 0:n_seg * base_steps * 2**j))
-          if (which == 1) then
-            call timed(is, scheme_1, tol_1, base_steps * 2**j, q, run_ok, cpu(j, 1))
-          else
-            call timed(is, scheme_2, tol_2, base_steps * 2**j, q, run_ok, cpu(j, 2))
-          end if
+          call timed(is, scheme(w), tol(w), base_steps * 2**j, q, run_ok, cpu(j, w))
           ok = ok .and. run_ok
           deallocate (q)
         end do
       end do
-      ratios(r) = (factor(1) * exp(log(cpu(lo(1), 1)) + a(1) * log(cpu(hi(1), 1) / &
-                                                                    cpu(lo(1), 1)))) / &
-                  (factor(2) * exp(log(cpu(lo(2), 2)) + a(2) * log(cpu(hi(2), 2) / &
-                                                                    cpu(lo(2), 2))))
+      ratios(r) = cost_from_levels(cpu(:, 1), lo(1), hi(1), a(1), factor(1)) / &
+                  cost_from_levels(cpu(:, 2), lo(2), hi(2), a(2), factor(2))
     end do
     ratio = [minval(ratios), median(ratios), maxval(ratios)]
   end subroutine paired_ratio
