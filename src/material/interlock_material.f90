@@ -97,6 +97,9 @@ module interlock_material
     !> frames cost no libm call per update), and every plane's azimuth 0
     real(dp) :: cos_phi(max_planes), sin_phi(max_planes)
     logical  :: azimuths_zero
+    !> plane k + 1 has plane k's azimuth (false for the last plane): the 3D kernels sum a run of
+    !> planes that share an azimuth in its frame and turn the sum once
+    logical  :: same_azimuth_as_next(max_planes)
     !> Inverses for the kernels (a multiplication instead of a division on the hot path), and
     !> c/(2 eta) with c = K_n s_0n^2: decohesion energy per unit growth of beta.
     real(dp) :: inv_s0n, inv_s0t, inv_eta, inv_kt
@@ -399,6 +402,8 @@ contains
     mat%cos_phi(1:3) = 1.0_dp
     mat%sin_phi(1:3) = 0.0_dp
     mat%azimuths_zero = .true.
+    mat%same_azimuth_as_next = .false.
+    mat%same_azimuth_as_next(1:2) = .true.
     mat%use_wear = mat%plane_wears(1) .or. mat%plane_wears(3)
     call derive_kernel(mat, equal(mat%theta_init(1), 0.0_dp))
   end subroutine interlock_paper_material_derive
@@ -475,12 +480,16 @@ contains
     mat%azimuths_zero = .true.
     mat%cos_phi = 1.0_dp
     mat%sin_phi = 0.0_dp
+    mat%same_azimuth_as_next = .false.
     do k = 1, mat%n_planes
       if (mat%phi(k) < 0.0_dp .or. mat%phi(k) > 0.0_dp) then
         mat%cos_phi(k) = cos(mat%phi(k))
         mat%sin_phi(k) = sin(mat%phi(k))
         mat%azimuths_zero = .false.
       end if
+    end do
+    do k = 1, mat%n_planes - 1
+      mat%same_azimuth_as_next(k) = equal(mat%phi(k + 1), mat%phi(k))
     end do
   end subroutine derive_azimuths
 

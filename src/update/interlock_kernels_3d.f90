@@ -1,8 +1,9 @@
 !> The specialised one-step update of a three-dimensional interface in the explicit scheme
 !> (SPEC section 9), the fast path of interlock_update_3d: every plane's angle frozen at its
 !> stored value within the step, the wear of eq. 25 after it, and the exact 3x3 tangent at
-!> the fixed angles (R^T K_loc R of each plane times its weight, and the contact area's
-!> d A_g / d s_N term). Each plane's law is taken with its values and its 3x3 local tangent
+!> the fixed angles (R^T K_loc R of each plane times its weight, R = B A the turns by the
+!> plane's angle and its azimuth: a run of planes that share an azimuth summed in its frame and
+!> turned by A once; and the contact area's d A_g / d s_N term). Each plane's law is taken with its values and its 3x3 local tangent
 !> only, in scalars, from the mechanisms' procedures (interlock_damage, interlock_friction's
 !> radial return, eq. 6 of interlock_plane_law, interlock_wear, interlock_geometry): none of
 !> the general path's derivatives of the start state, wear drivers or D14 terms. A plane whose
@@ -75,8 +76,9 @@ contains
   end subroutine explicit_step_3d_estimate
 
   !> Plane k at its frozen start angle (frame c, sn; azimuth frame cp, sp) over the step to its
-  !> trial t (plane_trial), area fraction gam, contact area `area` (slope darea): its traction,
-  !> tangent and energies added (plane_at_angle), its end state stored in `new`, with the wear
+  !> trial t (plane_trial), area fraction gam, contact area `area` (slope darea): its traction
+  !> and tangent added to sigma and tangent in its azimuth's frame (plane_share), its energies
+  !> added (plane_at_angle), its end state stored in `new`, with the wear
   !> of eq. 25 after the step; with `estimate` its share of the step's error estimate added to
   !> err_angle and err_traction (the explicit scheme's angle error,
   !> interlock_plane_law:wear_angle_error, at the start angle's traction). `ok` false: declined. No iterations.
@@ -102,14 +104,13 @@ contains
     iterations = 0
     ! (with the estimate the plane's traction and K_loc come back, for d sig / d theta, and its
     ! share is added here)
-    call plane_at_angle(mat, k, cp, sp, c, sn, t, old, .false., .not. estimate, .false., &
+    call plane_at_angle(mat, k, c, sn, t, old, .false., .not. estimate, .false., &
                         .false., [0.0_dp, 0.0_dp], gam, area, darea, sigma, tangent, energy, &
                         beta, dmg, sf, tauf, slip_dip, g_wfric, wear, g_wear, sig_loc, k_loc, &
                         tauf_norm, slip_norm, grows, ok)
     if (.not. ok) return
     if (estimate) then
-      call plane_share(cp, sp, c, sn, sig_loc, k_loc, .not. grows, gam, area, darea, sigma, &
-                       tangent)
+      call plane_share(c, sn, sig_loc, k_loc, .not. grows, gam, area, darea, sigma, tangent)
       call plane_energies(mat, k, old, t%sl, beta, dmg, sf, tauf, tauf_norm, slip_norm, sig_loc, &
                           gam * area, energy)
     end if
