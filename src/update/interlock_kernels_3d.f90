@@ -1,19 +1,19 @@
-!> The specialised one-step update of a three-dimensional interface in the explicit scheme
-!> (SPEC section 9), the fast path of interlock_update_3d: every plane's angle frozen at its
-!> stored value within the step, the wear of eq. 25 after it, and the exact 3x3 tangent at
-!> the fixed angles (R^T K_loc R of each plane times its weight, R = B A the turns by the
-!> plane's angle and its azimuth: a run of planes that share an azimuth summed in its frame and
-!> turned by A once; and the contact area's d A_g / d s_N term). Each plane's law is taken with its values and its 3x3 local tangent
-!> only, in scalars, from the mechanisms' procedures (interlock_damage, interlock_friction's
-!> radial return, eq. 6 of interlock_plane_law, interlock_wear, interlock_geometry): none of
-!> the general path's derivatives of the start state, wear drivers or D14 terms. A plane whose
-!> s_kn is within the round-off of its rotation is at the tie s_kn = 0 and closed for every
-!> derivative (SPEC D13), as in the general path: a path in a plane's surface (the paper's RIA
-!> slid along a ridge) stays there. It declines (done false: the caller takes the general
-!> path, interlock_general_path, unchanged) what it does not handle at that cost: a separated
-!> RIA (D7), a trial friction traction near overflow, a tangent beyond the stable bound,
-!> anything not finite. It agrees with the general path to round-off and shares none of its
-!> code; core_kernels3d checks it.
+!> The specialised one-step update of a three-dimensional interface in the explicit scheme (SPEC
+!> section 9), the fast path of interlock_update_3d: every plane's angle frozen at its stored
+!> value within the step, the wear of eq. 25 after it, and the exact 3x3 tangent at the fixed
+!> angles (R^T K_loc R of each plane times its weight, R = B A the turns by the plane's angle and
+!> its azimuth: a run of planes that share an azimuth summed in its frame and turned by A once;
+!> and the contact area's d A_g / d s_N term). Each plane's law is taken with its values and its
+!> 3x3 local tangent only, in scalars, from the mechanisms' procedures (interlock_damage,
+!> interlock_friction's radial return, eq. 6 of interlock_plane_law, interlock_wear,
+!> interlock_geometry): none of the general path's derivatives of the start state, wear drivers or
+!> D14 terms. A plane whose s_kn is within the round-off of its rotation is at the tie s_kn = 0
+!> and closed for every derivative (SPEC D13), as in the general path: a path in a plane's surface
+!> (the paper's RIA slid along a ridge) stays there. It declines (done false: the caller takes the
+!> general path, interlock_general_path, unchanged) what it does not handle at that cost: a
+!> separated RIA (D7), a trial friction traction near overflow, a tangent beyond the stable bound,
+!> anything not finite. It agrees with the general path to round-off and shares none of its code;
+!> core_kernels3d checks it.
 module interlock_kernels_3d
   use interlock_kinds, only: dp, is_finite_value
   use interlock_material, only: interlock_material_t, interlock_solver_t, scheme_explicit, &
