@@ -78,10 +78,10 @@ contains
   !> Plane k at its frozen start angle (frame c, sn; azimuth frame cp, sp) over the step to its
   !> trial t (plane_trial), area fraction gam, contact area `area` (slope darea): its traction
   !> and tangent added to sigma and tangent in its azimuth's frame (plane_share), its energies
-  !> added (plane_at_angle), its end state stored in `new`, with the wear
-  !> of eq. 25 after the step; with `estimate` its share of the step's error estimate added to
-  !> err_angle and err_traction (the explicit scheme's angle error,
-  !> interlock_plane_law:wear_angle_error, at the start angle's traction). `ok` false: declined. No iterations.
+  !> added (plane_at_angle), its end state stored in `new`, with the wear of eq. 25 after the
+  !> step; with `estimate` its share of the step's error estimate added to err_angle and
+  !> err_traction (the explicit scheme's angle error, interlock_plane_law:wear_angle_error, at
+  !> the start angle's traction). `ok` false: declined. No iterations.
   pure subroutine scheme_plane(mat, solver, k, cp, sp, c, sn, t, old, gam, area, darea, &
                                estimate, sigma, tangent, energy, err_angle, err_traction, new, &
                                iterations, ok)
